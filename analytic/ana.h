@@ -1,0 +1,73 @@
+/*
+ * ana.h - closed-form uniaxial bar with decohesion (Schreyer, Sulsky, Zhou 2002,
+ * sec. 3.2, eqs. 28-37; MODEL.md sec. 5).  The independent oracle for every MPM result.
+ *
+ * A bar of length L, height H, unit depth, loaded in uniaxial stress sigma = P / H,
+ * with one failure plane at angle alpha to the x-axis.  Model 1 (associated) and
+ * Model 2 (opening only, eq. 37), any q > 0.
+ */
+#ifndef DELAM_ANA_H
+#define DELAM_ANA_H
+
+enum { ANA_OK = 0, ANA_EINVAL = 1, ANA_EFAIL = 2 };
+
+typedef struct {
+  double alpha_deg; /* laminate angle from the x-axis, (0, 90] deg            */
+  double snf;       /* normal traction at failure initiation (> 0)           */
+  double stf;       /* shear traction at failure initiation (> 0)            */
+  double U0;        /* energy dissipated per unit area at separation (> 0)   */
+  double s0;        /* reference traction; ubar0 = U0 / s0 (> 0)              */
+  double q;         /* softening exponent, sbar = lambda^q (> 0)             */
+  double E;         /* Young's modulus (uniaxial stress) (> 0)               */
+  double nu;        /* Poisson's ratio (kept for the record; uniaxial)       */
+  double L;         /* bar length (> 0)                                      */
+  double H;         /* bar height (> 0)                                      */
+  int model;        /* 1: associated, 2: opening only                        */
+} ana_params;
+
+typedef struct {
+  ana_params p;
+  double r0;          /* peak stress (eq. 30)                                  */
+  double mec[2];      /* decohesion at separation, n-t components (eq. 30)     */
+  double upx_sep;     /* x-component of the opening at separation              */
+  double g;           /* dimensionless snapback parameter (eq. 35 / eq. 37)    */
+  double Pmax;        /* peak load r0 H                                        */
+  double k_elastic;   /* E H / L                                               */
+  double k_soft_peak; /* softening slope dP/ddelta just after the peak (eq. 36)*/
+  double delta_peak;  /* r0 L / E                                              */
+  double delta_sep;   /* end displacement at separation = upx_sep              */
+  int snapback;       /* 1 if the softening slope turns positive somewhere     */
+  double sstar_turn;  /* sigma* where dP/ddelta changes sign (snapback), else -1 */
+  double area;        /* failure area H / sin(alpha)                           */
+  double UD, UU, UF;  /* energies per unit failure area at separation (eq. 25) */
+  double W_sep;       /* external work to separation, UF * area                */
+  double D_sep;       /* dissipation at separation, UD * area                  */
+} ana_bar;
+
+/* Fills *bar from *p; ANA_EINVAL (and a message in err, if given) on bad input. */
+int ana_bar_init(const ana_params *p, ana_bar *bar, char *err, int errlen);
+
+/* Default parameters: the Fig. 6 case (alpha 90, snf 1, stf 10, U0 0.375, s0 1,
+ * q 1, E 1024, nu 0.25, L 192, H 32, model 1). */
+void ana_params_default(ana_params *p);
+
+/* Point on the softening branch parametrised by sigma* = sigma / r0 in [0, 1]:
+ * end displacement and load (eq. 34). */
+void ana_bar_softening_point(const ana_bar *bar, double sstar, double *delta, double *P);
+
+/* Slope dP/ddelta on the softening branch at sigma* (eq. 36); +inf where vertical. */
+double ana_bar_softening_slope(const ana_bar *bar, double sstar);
+
+/* Load-deflection curve: elastic branch 0..delta_peak, then the softening branch
+ * sampled in sigma* (single-valued in that parameter), then P = 0 to delta_end.
+ * Writes up to n points into delta[], P[]; returns the number written. */
+int ana_bar_curve(const ana_bar *bar, double delta_end, int n, double *delta, double *P);
+
+/* Load at end displacement delta on the first branch that reaches it (for error
+ * norms; on a snapback the branch is the one met first along sigma*). */
+double ana_bar_load_at(const ana_bar *bar, double delta);
+
+/* External work to end displacement delta_end (quadrature of the curve, GSL). */
+double ana_bar_work(const ana_bar *bar, double delta_end);
+
+#endif
