@@ -102,7 +102,7 @@ static void print_help(FILE *f)
     else if (i == O_CURVE)
       snprintf(def, sizeof def, "default none");
     else if (i == O_DEND)
-      snprintf(def, sizeof def, "default 1.5 max(delta_peak, delta_sep)");
+      snprintf(def, sizeof def, "default 1.5 x the largest delta of the curve");
     fprintf(f, "  %-16s %s\n", lhs, s->help);
     if (s->kind != OPT_FLAG)
       fprintf(f, "  %-16s   %s; allowed %s\n", "", def, s->allowed);
@@ -301,8 +301,17 @@ int ver_cmd_analytic(int argc, char **argv)
     fprintf(stderr, PROG ": %s\n", err);
     return 2;
   }
-  if (delta_end < 0.0)
-    delta_end = 1.5 * fmax(bar.delta_peak, bar.delta_sep);
+  if (delta_end < 0.0) {
+    /* past the farthest point of the curve, so that it ends separated: on a
+     * q > 1 snapback that is the turning point, beyond both peak and separation */
+    delta_end = fmax(bar.delta_peak, bar.delta_sep);
+    if (bar.sstar_turn > 0.0 && bar.sstar_turn < 1.0) {
+      double dt, Pt;
+      ana_bar_softening_point(&bar, bar.sstar_turn, &dt, &Pt);
+      delta_end = fmax(delta_end, dt);
+    }
+    delta_end *= 1.5;
+  }
 
   if (json) {
     cJSON *o = to_json(&bar);
