@@ -1,0 +1,173 @@
+/*
+ * mpm.h - the public contract of the kernel: an explicit 2-D material point method
+ * (Schreyer, Sulsky and Zhou 2002, sec. 2, eqs. 2-7) with the decohesion
+ * constitutive update of secs. 3-4 (eqs. 19-26, 39-58).  Plane stress, small
+ * strain, unit thickness, dimensionless units.
+ *
+ * Concepts, one struct each: mpm_scene (the plain description of a run),
+ * mpm_material (elastic and decohesion constants), mpm_dstate (one particle's
+ * constitutive state, for the pure update), mpm_particles (structure of arrays),
+ * mpm_grid (nodal arrays), mpm_sim (all of it plus boundary conditions and energies).
+ */
+#ifndef DELAM_MPM_H
+#define DELAM_MPM_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+typedef enum {
+  MPM_OK = 0,
+  MPM_EINVAL,     /* bad input a user can cause                          */
+  MPM_ENOMEM,     /* allocation failed                                   */
+  MPM_ENOTFINITE, /* a NaN or infinity appeared in the state              */
+  MPM_EDOMAIN,    /* a particle left the grid                            */
+  MPM_EIO,        /* a file could not be written                         */
+  MPM_EINTR       /* stopped by a signal                                 */
+} mpm_status;
+
+const char *mpm_strerror(mpm_status s);
+
+enum { MPM_LE_CELL = 0, MPM_LE_PARTICLE = 1 };        /* choice of Le (MODEL.md open point) */
+enum { MPM_DCOH_NONE = 0, MPM_DCOH_MODEL1 = 1, MPM_DCOH_MODEL2 = 2 };
+
+/* ---- scene: everything a run needs, as plain numbers (filled by verify/scene.c) ---- */
+typedef struct {
+  double L, H;           /* bar length and height; the bar is [0,L] x [0,H]           */
+  double E, nu, rho;     /* Young's modulus, Poisson's ratio, density                  */
+  int model;             /* MPM_DCOH_*                                                 */
+  double alpha_deg;      /* laminate angle from the x-axis, deg                        */
+  double snf, stf;       /* failure tractions in opening and in shear                  */
+  double U0, s0, q;      /* dissipation per area at separation, reference traction, softening exponent */
+  double sep_threshold;  /* lambda above which the separation algorithm is used (paper 0.98) */
+  int le_mode;           /* MPM_LE_CELL or MPM_LE_PARTICLE                             */
+  double imp_factor;     /* snf multiplier at the imperfection particle (paper 0.9); 1 = none */
+  double imp_x, imp_y;   /* the imperfection sits at the particle nearest this point   */
+  double h;              /* grid spacing                                               */
+  int ppc;               /* particles per cell, a perfect square (1, 4, 9, ...)        */
+  int pad;               /* empty cells around the bar (right, top, bottom; left adds the travel) */
+  double dt;             /* time step                                                  */
+  double speed;          /* grip speed (pulls the left end in -x)                      */
+  double end_delta;      /* the run never goes past this end displacement              */
+  double stop_margin;    /* stop this far in delta past detected separation (<= 0: never early) */
+  double sep_load_frac;  /* separation detected when |P| < this fraction of the peak   */
+} mpm_scene;
+
+/* Checks a scene for physical sense; MPM_EINVAL and a message naming the key. */
+mpm_status mpm_scene_check(const mpm_scene *sc, char *err, size_t errlen);
+/* Critical time step h / c, c = sqrt(E1 / rho) (plane-stress bar wave speed). */
+double mpm_scene_dt_crit(const mpm_scene *sc);
+
+/* ---- material ---- */
+typedef struct {
+  double E, nu, rho;     /* elastic constants                                          */
+  double E1, E2, G;      /* plane stress: E/(1-nu^2), nu E/(1-nu^2), E/(2(1+nu))       */
+  int model;             /* MPM_DCOH_*                                                 */
+  double nx, ny, tx, ty; /* failure-plane normal n = (sin a, -cos a), tangent t = (cos a, sin a) */
+  double snf, stf;       /* failure tractions (eq. 23)                                 */
+  double U0, s0, q;      /* eq. 19-20                                                  */
+  double ubar0;          /* U0 / s0                                                    */
+  double Le;             /* effective length V_e / A_d (eq. 41), fixed for the run     */
+  double sep_threshold;  /* eqs. 56-58 take over when lambda would pass this           */
+} mpm_material;
+
+void mpm_material_init(mpm_material *m, const mpm_scene *sc, double snf, double Le);
+
+/* ---- the pure constitutive update (secs. 4.1-4.3) ---- */
+typedef struct {
+  double sxx, syy, sxy;  /* Cauchy stress                                              */
+  double lam;            /* decohesion parameter lambda (monotone; 1 at separation, may pass 1 after) */
+  double upn, upt;       /* displacement jump across the failure plane, n and t components */
+  int sep;               /* 1 once separated: no traction across the plane             */
+} mpm_dstate;
+
+/* How a step went, for tests and counters. */
+enum { MPM_DPATH_ELASTIC = 0, MPM_DPATH_SOFTEN = 1, MPM_DPATH_SEPARATE = 2, MPM_DPATH_OPEN = 3 };
+
+typedef struct {
+  int path;              /* MPM_DPATH_*                                                */
+  int iters;             /* root-solver iterations (0 on an elastic step)              */
+  int bracketed;         /* 1 if the bracketed (GSL Brent) solve was needed            */
+  double w;              /* traction work per unit failure area in this step, int s . d up */
+} mpm_dinfo;
+
+typedef struct mpm_dwork mpm_dwork;   /* scratch for the bracketed solve (GSL)          */
+mpm_dwork *mpm_dwork_alloc(void);
+void mpm_dwork_free(mpm_dwork *w);
+
+/* Strain increment de = (dexx, deyy, dexy), tensor shear.  Pure: output depends only
+ * on the arguments; w is scratch.  MPM_ENOTFINITE if the result is not finite. */
+mpm_status mpm_dcoh_update(const mpm_material *m, const mpm_dstate *in, const double de[3],
+                           mpm_dstate *out, mpm_dinfo *info, mpm_dwork *w);
+
+/* Decohesion function F = se - (1 - lambda^q) (eq. 23) at a stress state. */
+double mpm_dcoh_F(const mpm_material *m, double sxx, double syy, double sxy, double lam);
+
+/* ---- particles: structure of arrays ---- */
+typedef struct {
+  size_t n;                /* number of particles                                      */
+  double *x, *y;           /* position                                                 */
+  double *x0, *y0;         /* reference position (for displacements)                   */
+  double *vx, *vy;         /* velocity                                                 */
+  double *m, *V;           /* mass (constant) and volume (V = m / rho, small strain)   */
+  double *sxx, *syy, *sxy; /* stress                                                   */
+  double *lam;             /* decohesion parameter                                     */
+  double *upn, *upt;       /* displacement jump, n and t components                    */
+  double *wcoh;            /* traction work on the failure plane so far (energy)       */
+  uint8_t *mat;            /* index into the material table                            */
+  uint8_t *sep;            /* 1 once separated                                         */
+} mpm_particles;
+
+mpm_particles *mpm_particles_alloc(size_t n);
+void mpm_particles_free(mpm_particles *p);
+
+/* ---- grid: a regular lattice of (nx+1) x (ny+1) nodes, origin (ox, oy), spacing h ---- */
+typedef struct {
+  int ncx, ncy;            /* cells in x and y                                         */
+  int nnx, nny;            /* nodes in x and y (ncx+1, ncy+1)                          */
+  double ox, oy, h;        /* origin and spacing                                       */
+  double *m;               /* nodal mass                                               */
+  double *px, *py;         /* momentum, then Lagrangian velocity v^L after the update  */
+  double *fx, *fy;         /* internal force, then v^L - v after the update            */
+} mpm_grid;
+
+mpm_grid *mpm_grid_alloc(int ncx, int ncy, double ox, double oy, double h);
+void mpm_grid_free(mpm_grid *g);
+
+/* ---- energies (sec. 3 eq. 25 for the surface terms) ---- */
+typedef struct {
+  double W_ext;  /* work of the reactions at the constrained nodes                    */
+  double KE;     /* kinetic energy of the particles                                   */
+  double SE;     /* elastic strain energy                                             */
+  double W_coh;  /* work of the traction on the decohesion surfaces, int s . d up dA   */
+  double D;      /* dissipation, U0 min(lambda, 1) per unit failure area (eq. 10)      */
+} mpm_energy;
+
+/* ---- the simulation ---- */
+typedef struct {
+  mpm_scene sc;            /* copy of the scene                                        */
+  mpm_material mat[2];     /* 0: bar, 1: the imperfection particle                     */
+  mpm_particles *p;
+  mpm_grid *g;
+  mpm_dwork *dw;
+  int *grip;   int ngrip;  /* nodes where v^L_x = -speed (left end)                     */
+  int *fixx;   int nfixx;  /* nodes where v^L_x = 0 (right end)                         */
+  int fixy;                /* the one node where v^L_y = 0 as well                      */
+  double t;                /* time                                                     */
+  long step;               /* steps taken                                              */
+  double P_grip, P_fixed;  /* loads (tension positive) of the last step                 */
+  double W_ext;            /* accumulated external work                                */
+  long n_soften, n_separate, n_bracketed; /* counters of constitutive paths           */
+  int imp_index;           /* the imperfection particle                                */
+} mpm_sim;
+
+mpm_status mpm_sim_alloc(const mpm_scene *sc, mpm_sim **out, char *err, size_t errlen);
+void mpm_sim_free(mpm_sim *s);
+/* One explicit step (eqs. 2-7, USL).  On failure, err names the step, particle and field. */
+mpm_status mpm_sim_step(mpm_sim *s, char *err, size_t errlen);
+double mpm_sim_delta(const mpm_sim *s);
+void mpm_sim_energy(const mpm_sim *s, mpm_energy *e);
+
+/* Total momentum (for conservation tests). */
+void mpm_particles_momentum(const mpm_particles *p, double *px, double *py);
+
+#endif

@@ -1,0 +1,309 @@
+/*
+ * mpm_decohesion.c - the decohesion constitutive update at one particle
+ * (Schreyer, Sulsky and Zhou 2002, secs. 3-4; MODEL.md secs. 3-4).
+ *
+ *   effective traction  se = sqrt(<sn>^2/snf^2 + st^2/stf^2)          eq. 23
+ *   decohesion function F  = se - (1 - lambda^q)                        eq. 23
+ *   flow (Model 1)      m* = (s0/se)(<sn>/snf^2 n + st/stf^2 t)         eqs. 19, 24, 42
+ *   flow (Model 2)      (m* . n) n                                       eq. 26
+ *   weak compatibility  de_d = (d ud / Le) sym(n (x) m)                  eqs. 39-41
+ *   first-order step    d lambda = -c / 2b                               eqs. 46, 49
+ *   separation          eqs. 56-58
+ *
+ * The work is done in the n-t frame of the failure plane, where plane-stress
+ * elasticity keeps its form (isotropy):  s_nn = E1 e_nn + E2 e_tt, s_tt = E2 e_nn + E1 e_tt,
+ * s_nt = 2G e_nt.
+ *
+ * Decisions (MODEL.md "Open points"; see README):
+ *  - <sn> (Macaulay bracket) in se and m*: normal compression neither starts nor
+ *    drives decohesion.  The paper writes sn; its scenes are all in tension, where
+ *    the two agree.
+ *  - The consistency condition is solved to |F| < MPM_DCOH_FTOL with the flow
+ *    direction frozen at the trial state.  The first iterate is the paper's
+ *    first-order step (eq. 46); Newton then continues.  Where eq. 46 cannot start
+ *    (q < 1 at lambda = 0, where lambda^(q-1) is infinite, or 2b >= 0) the root is
+ *    bracketed by doubling and refined with GSL's Brent solver.  No root in
+ *    (0, 1 - lambda] means traction reversal (no solution): separation.
+ *  - Eq. 58: d ud_t = 2 Le de_nt (tensor shear strain; the compatible value).
+ *  - After separation lambda keeps growing with |d ud| / ubar0 (paper); the
+ *    dissipation counts min(lambda, 1) (mpm_sim_energy).
+ *  - A separated particle in normal compression first closes its opening
+ *    (d ud_n >= -ud_n), then carries the compression; shear is always released.
+ */
+#include <assert.h>
+#include <math.h>
+#include <stdlib.h>
+
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_roots.h>
+
+#include "mpm.h"
+
+#define MPM_DCOH_FTOL 1e-12  /* |F| after a softening step               */
+#define MPM_DCOH_MAXIT 60
+
+struct mpm_dwork {
+  gsl_root_fsolver *brent;
+};
+
+mpm_dwork *mpm_dwork_alloc(void)
+{
+  mpm_dwork *w = malloc(sizeof *w);
+  if (!w)
+    return NULL;
+  w->brent = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
+  if (!w->brent) {
+    free(w);
+    return NULL;
+  }
+  return w;
+}
+
+void mpm_dwork_free(mpm_dwork *w)
+{
+  if (!w)
+    return;
+  gsl_root_fsolver_free(w->brent);
+  free(w);
+}
+
+void mpm_material_init(mpm_material *m, const mpm_scene *sc, double snf, double Le)
+{
+  const double a = sc->alpha_deg * (3.14159265358979323846 / 180.0);
+  m->E = sc->E;
+  m->nu = sc->nu;
+  m->rho = sc->rho;
+  m->E1 = sc->E / (1.0 - sc->nu * sc->nu);
+  m->E2 = sc->nu * m->E1;
+  m->G = sc->E / (2.0 * (1.0 + sc->nu));
+  m->model = sc->model;
+  m->nx = sin(a);
+  m->ny = -cos(a);
+  m->tx = cos(a);
+  m->ty = sin(a);
+  m->snf = snf;
+  m->stf = sc->stf;
+  m->U0 = sc->U0;
+  m->s0 = sc->s0;
+  m->q = sc->q;
+  m->ubar0 = sc->U0 / sc->s0;
+  m->Le = Le;
+  m->sep_threshold = sc->sep_threshold;
+}
+
+/* Stress in the n-t frame: (s_nn, s_tt, s_nt). */
+typedef struct {
+  double nn, tt, nt;
+} nt_stress;
+
+static nt_stress to_nt(const mpm_material *m, double sxx, double syy, double sxy)
+{
+  nt_stress s;
+  s.nn = sxx * m->nx * m->nx + syy * m->ny * m->ny + 2.0 * sxy * m->nx * m->ny;
+  s.tt = sxx * m->tx * m->tx + syy * m->ty * m->ty + 2.0 * sxy * m->tx * m->ty;
+  s.nt = sxx * m->nx * m->tx + syy * m->ny * m->ty + sxy * (m->nx * m->ty + m->ny * m->tx);
+  return s;
+}
+
+static void from_nt(const mpm_material *m, nt_stress s, mpm_dstate *out)
+{
+  out->sxx = s.nn * m->nx * m->nx + s.tt * m->tx * m->tx + 2.0 * s.nt * m->nx * m->tx;
+  out->syy = s.nn * m->ny * m->ny + s.tt * m->ty * m->ty + 2.0 * s.nt * m->ny * m->ty;
+  out->sxy = s.nn * m->nx * m->ny + s.tt * m->tx * m->ty + s.nt * (m->nx * m->ty + m->ny * m->tx);
+}
+
+/* Effective traction, eq. 23, with the Macaulay bracket on sn. */
+static double eff_traction(const mpm_material *m, double sn, double st)
+{
+  const double a = sn > 0.0 ? sn / m->snf : 0.0;
+  const double b = st / m->stf;
+  return sqrt(a * a + b * b);
+}
+
+double mpm_dcoh_F(const mpm_material *m, double sxx, double syy, double sxy, double lam)
+{
+  const nt_stress s = to_nt(m, sxx, syy, sxy);
+  return eff_traction(m, s.nn, s.nt) - (1.0 - pow(lam, m->q));
+}
+
+/* The consistency function along the frozen flow direction:
+ * phi(dl) = se(s_tr - dl s_m) - 1 + (lam + dl)^q, with s_m the traction per unit dl. */
+typedef struct {
+  const mpm_material *m;
+  double sn, st;     /* trial traction        */
+  double smn, smt;   /* traction per unit dl  */
+  double lam;
+} phi_ctx;
+
+static double phi(double dl, void *vp)
+{
+  const phi_ctx *c = vp;
+  return eff_traction(c->m, c->sn - dl * c->smn, c->st - dl * c->smt) - 1.0 +
+         pow(c->lam + dl, c->m->q);
+}
+
+/* d phi / d dl, for Newton (se is smooth away from sn = 0 and se = 0). */
+static double dphi(double dl, const phi_ctx *c)
+{
+  const double sn = c->sn - dl * c->smn, st = c->st - dl * c->smt;
+  const double se = eff_traction(c->m, sn, st);
+  const double gn = sn > 0.0 ? sn / (c->m->snf * c->m->snf) : 0.0;
+  const double gt = st / (c->m->stf * c->m->stf);
+  const double lq = c->lam + dl;
+  const double dpow = lq > 0.0 ? c->m->q * pow(lq, c->m->q - 1.0) : (c->m->q < 1.0 ? INFINITY : (c->m->q == 1.0 ? 1.0 : 0.0));
+  return -(gn * c->smn + gt * c->smt) / se + dpow;
+}
+
+/* Root of phi in (0, dlmax]: 0 and *dl on success, -1 when none exists
+ * (traction reversal at the element level, or full decohesion within the step). */
+static int solve_dl(const phi_ctx *c, double dlmax, double guess, mpm_dwork *w, mpm_dinfo *info,
+                    double *dl_out)
+{
+  /* Newton from the paper's first-order step (eq. 46).  For q >= 1 phi is convex in
+   * dl, so from dl = 0 with phi'(0) < 0 the iterates rise monotonically to the first root. */
+  if (guess > 0.0 && c->m->q >= 1.0) {
+    double dl = guess;
+    for (int k = 0; k < MPM_DCOH_MAXIT && dl > 0.0 && dl <= dlmax; k++) {
+      info->iters++;
+      const double f = phi(dl, (void *)c);
+      if (fabs(f) < MPM_DCOH_FTOL) {
+        *dl_out = dl;
+        return 0;
+      }
+      const double d = dphi(dl, c);
+      if (!(d < 0.0))
+        break; /* past the minimum of phi: let the bracket decide */
+      dl -= f / d;
+    }
+  }
+  /* Bracket by doubling from a small step, then refine with GSL's Brent solver. */
+  info->bracketed = 1;
+  double lo = 0.0, hi = guess > 0.0 ? fmin(guess, dlmax) : 1e-9 * dlmax;
+  double fhi = phi(hi, (void *)c);
+  while (fhi > 0.0) {
+    if (hi >= dlmax)
+      return -1;
+    lo = hi;
+    hi = fmin(2.0 * hi, dlmax);
+    fhi = phi(hi, (void *)c);
+    info->iters++;
+  }
+  if (fhi == 0.0) {
+    *dl_out = hi;
+    return 0;
+  }
+  gsl_function F = {phi, (void *)c};
+  if (gsl_root_fsolver_set(w->brent, &F, lo, hi) != GSL_SUCCESS)
+    return -1;
+  double r = hi;
+  for (int k = 0; k < 200; k++) {
+    info->iters++;
+    if (gsl_root_fsolver_iterate(w->brent) != GSL_SUCCESS)
+      break;
+    r = gsl_root_fsolver_root(w->brent);
+    if (fabs(phi(r, (void *)c)) < MPM_DCOH_FTOL ||
+        gsl_root_test_interval(gsl_root_fsolver_x_lower(w->brent),
+                               gsl_root_fsolver_x_upper(w->brent), 0.0, 1e-15) == GSL_SUCCESS)
+      break;
+  }
+  *dl_out = r;
+  return 0;
+}
+
+/* Separation (eqs. 56-58), and every later step of a separated particle: release the
+ * traction of the trial stress by a decohesion strain in the n-t frame.  In normal
+ * compression the opening closes first (never below zero) and compression is carried. */
+static void separate(const mpm_material *m, nt_stress tr, double upn, nt_stress *s,
+                     double *dun, double *dut)
+{
+  double de_nn = tr.nn / m->E1;                      /* eq. 57 */
+  if (tr.nn < 0.0 && m->Le * de_nn < -upn)
+    de_nn = -upn / m->Le;                            /* contact: close no further than shut */
+  const double de_nt = tr.nt / (2.0 * m->G);         /* eq. 57 */
+  s->nn = tr.nn - m->E1 * de_nn;
+  s->tt = tr.tt - m->E2 * de_nn;                     /* eq. 57 */
+  s->nt = 0.0;
+  *dun = m->Le * de_nn;                              /* eq. 58 */
+  *dut = 2.0 * m->Le * de_nt;                        /* eq. 58, tensor shear: 2 Le de_nt */
+}
+
+mpm_status mpm_dcoh_update(const mpm_material *m, const mpm_dstate *in, const double de[3],
+                           mpm_dstate *out, mpm_dinfo *info, mpm_dwork *w)
+{
+  assert(m && in && de && out && info);
+  info->path = MPM_DPATH_ELASTIC;
+  info->iters = 0;
+  info->bracketed = 0;
+  info->w = 0.0;
+  *out = *in;
+
+  /* Elastic trial (eq. 7 increment through plane-stress C). */
+  out->sxx = in->sxx + m->E1 * de[0] + m->E2 * de[1];
+  out->syy = in->syy + m->E2 * de[0] + m->E1 * de[1];
+  out->sxy = in->sxy + 2.0 * m->G * de[2];
+  if (m->model == MPM_DCOH_NONE)
+    goto done;
+
+  const nt_stress s_in = to_nt(m, in->sxx, in->syy, in->sxy);
+  const nt_stress tr = to_nt(m, out->sxx, out->syy, out->sxy);
+  double dun = 0.0, dut = 0.0;
+  nt_stress s = tr;
+
+  if (in->sep) {
+    separate(m, tr, in->upn, &s, &dun, &dut);
+    info->path = MPM_DPATH_OPEN;
+  } else {
+    const double se = eff_traction(m, tr.nn, tr.nt);
+    const double c = se - (1.0 - pow(in->lam, m->q));             /* eq. 23 */
+    if (c <= 0.0)
+      goto done;
+    /* Flow direction at the trial state (eqs. 24, 26). */
+    const double gn = tr.nn > 0.0 ? tr.nn / (m->snf * m->snf) : 0.0;
+    const double gt = tr.nt / (m->stf * m->stf);
+    const double mn = m->s0 / se * gn;
+    const double mt = m->model == MPM_DCOH_MODEL2 ? 0.0 : m->s0 / se * gt;
+    /* Traction (and s_tt) per unit dlambda: C : (ubar0/Le) sym(n (x) m), eqs. 39-41. */
+    const double k = m->ubar0 / m->Le;
+    phi_ctx ctx = {m, tr.nn, tr.nt, m->E1 * k * mn, m->G * k * mt, in->lam};
+    const double smtt = m->E2 * k * mn;
+    /* 2b of eq. 49; first-order step of eq. 46 where it exists. */
+    const double mstar_sm = (m->s0 / se) * (gn * ctx.smn + gt * ctx.smt);
+    double dpow;
+    if (in->lam > 0.0)
+      dpow = m->q * pow(in->lam, m->q - 1.0);
+    else
+      dpow = m->q < 1.0 ? INFINITY : (m->q == 1.0 ? 1.0 : 0.0);
+    const double two_b = -mstar_sm / m->s0 + dpow;
+    const double guess = (two_b < 0.0 && isfinite(two_b)) ? -c / two_b : 0.0;
+    const double dlmax = 1.0 - in->lam;
+    double dl = 0.0;
+    const int ok = dlmax > 0.0 ? solve_dl(&ctx, dlmax, guess, w, info, &dl) : -1;
+    if (ok == 0 && in->lam + dl <= m->sep_threshold) {
+      s.nn = tr.nn - dl * ctx.smn;
+      s.nt = tr.nt - dl * ctx.smt;
+      s.tt = tr.tt - dl * smtt;
+      dun = dl * m->ubar0 * mn;
+      dut = dl * m->ubar0 * mt;
+      out->lam = in->lam + dl;
+      info->path = MPM_DPATH_SOFTEN;
+    } else {
+      /* Separation imminent (lambda past the threshold) or no solution. */
+      separate(m, tr, in->upn, &s, &dun, &dut);
+      out->sep = 1;
+      info->path = MPM_DPATH_SEPARATE;
+    }
+  }
+  if (info->path != MPM_DPATH_SOFTEN)
+    out->lam = in->lam + sqrt(dun * dun + dut * dut) / m->ubar0; /* d lambda = |d ud| / ubar0 */
+  out->upn = in->upn + dun;
+  out->upt = in->upt + dut;
+  /* Traction work, trapezoidal in the step: int s . d ud. */
+  info->w = 0.5 * ((s_in.nn + s.nn) * dun + (s_in.nt + s.nt) * dut);
+  from_nt(m, s, out);
+
+done:
+  if (!isfinite(out->sxx) || !isfinite(out->syy) || !isfinite(out->sxy) || !isfinite(out->lam) ||
+      !isfinite(out->upn) || !isfinite(out->upt))
+    return MPM_ENOTFINITE;
+  return MPM_OK;
+}

@@ -1,0 +1,373 @@
+/*
+ * run.c - the time loop of one scene and its outputs.
+ *
+ * Stop rule: a run answers its question once the bar has separated.  Separation is
+ * detected when, after the peak, the load averaged over the bar's longest natural
+ * period (4 L / c, so that ringing after a sudden release averages out) falls below
+ * run.sep_load times the peak; delta_sep is the centre of that window; the run goes on for run.stop_margin more end
+ * displacement (so the opening grows past ubar0 and the dissipation settles), and
+ * past the last requested snapshot, and never beyond run.end_delta.
+ *
+ * Loads are written as averages over each output interval (impulse / time), which is
+ * what a load cell reads; the instantaneous reaction rings at the grid's frequencies.
+ *
+ * Every file is written under a temporary name and renamed when complete;
+ * summary.json, written last, says complete: true only for a finished run.
+ */
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <time.h>
+#include <unistd.h>
+
+#include <cjson/cJSON.h>
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+#include "run.h"
+
+static double now_wall(void)
+{
+  struct timespec ts;
+  clock_gettime(CLOCK_MONOTONIC, &ts);
+  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+static double now_cpu(void)
+{
+  struct timespec ts;
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+static int mkdir_p(const char *dir)
+{
+  char buf[1024];
+  snprintf(buf, sizeof buf, "%s", dir);
+  for (char *p = buf + 1; *p; p++)
+    if (*p == '/') {
+      *p = '\0';
+      if (mkdir(buf, 0777) != 0 && errno != EEXIST)
+        return -1;
+      *p = '/';
+    }
+  return (mkdir(buf, 0777) != 0 && errno != EEXIST) ? -1 : 0;
+}
+
+/* Opens dir/name.tmp for writing; commit_file renames it into place. */
+static FILE *open_tmp(const char *dir, const char *name, char *tmp, size_t len)
+{
+  snprintf(tmp, len, "%s/%s.tmp", dir, name);
+  return fopen(tmp, "w");
+}
+
+static int commit_file(FILE *f, const char *tmp)
+{
+  const int bad = ferror(f);
+  if (fclose(f) != 0 || bad) {
+    remove(tmp);
+    return -1;
+  }
+  char fin[1100];
+  snprintf(fin, sizeof fin, "%s", tmp);
+  fin[strlen(fin) - 4] = '\0';
+  return rename(tmp, fin);
+}
+
+static int write_snapshot(const mpm_sim *s, const char *dir, const char *stem)
+{
+  const mpm_particles *p = s->p;
+  char tmp[1100], name[128];
+  snprintf(name, sizeof name, "%s.csv", stem);
+  FILE *f = open_tmp(dir, name, tmp, sizeof tmp);
+  if (!f)
+    return -1;
+  fprintf(f, "x0,y0,x,y,ux,uy,lambda,sxx,syy,sxy,upn,upt,sep,wcoh\n");
+  for (size_t k = 0; k < p->n; k++)
+    fprintf(f, "%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%d,%.9g\n", p->x0[k], p->y0[k],
+            p->x[k], p->y[k], p->x[k] - p->x0[k], p->y[k] - p->y0[k], p->lam[k], p->sxx[k], p->syy[k],
+            p->sxy[k], p->upn[k], p->upt[k], p->sep[k], p->wcoh[k]);
+  if (commit_file(f, tmp))
+    return -1;
+  /* Legacy VTK polydata, one vertex per particle, for ParaView. */
+  snprintf(name, sizeof name, "%s.vtk", stem);
+  if (!(f = open_tmp(dir, name, tmp, sizeof tmp)))
+    return -1;
+  fprintf(f, "# vtk DataFile Version 3.0\ndelam particles %s t=%g\nASCII\nDATASET POLYDATA\nPOINTS %zu double\n",
+          stem, s->t, p->n);
+  for (size_t k = 0; k < p->n; k++)
+    fprintf(f, "%.9g %.9g 0\n", p->x[k], p->y[k]);
+  fprintf(f, "VERTICES %zu %zu\n", p->n, 2 * p->n);
+  for (size_t k = 0; k < p->n; k++)
+    fprintf(f, "1 %zu\n", k);
+  fprintf(f, "POINT_DATA %zu\nVECTORS displacement double\n", p->n);
+  for (size_t k = 0; k < p->n; k++)
+    fprintf(f, "%.9g %.9g 0\n", p->x[k] - p->x0[k], p->y[k] - p->y0[k]);
+  const char *fields[] = {"lambda", "sxx", "syy", "sxy"};
+  const double *arrs[] = {p->lam, p->sxx, p->syy, p->sxy};
+  for (int q = 0; q < 4; q++) {
+    fprintf(f, "SCALARS %s double 1\nLOOKUP_TABLE default\n", fields[q]);
+    for (size_t k = 0; k < p->n; k++)
+      fprintf(f, "%.9g\n", arrs[q][k]);
+  }
+  return commit_file(f, tmp);
+}
+
+typedef struct {
+  double t, delta, Pg, Pf;
+  mpm_energy e;
+} row;
+
+static int write_rows(const row *r, long n, const char *dir)
+{
+  char tmp[1100];
+  FILE *f = open_tmp(dir, "load.csv", tmp, sizeof tmp);
+  if (!f)
+    return -1;
+  fprintf(f, "t,delta,P_grip,P_fixed\n");
+  for (long i = 0; i < n; i++)
+    fprintf(f, "%.9g,%.9g,%.9g,%.9g\n", r[i].t, r[i].delta, r[i].Pg, r[i].Pf);
+  if (commit_file(f, tmp))
+    return -1;
+  if (!(f = open_tmp(dir, "energy.csv", tmp, sizeof tmp)))
+    return -1;
+  fprintf(f, "t,W_ext,KE,SE,W_coh,D\n");
+  for (long i = 0; i < n; i++)
+    fprintf(f, "%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", r[i].t, r[i].e.W_ext, r[i].e.KE, r[i].e.SE, r[i].e.W_coh,
+            r[i].e.D);
+  return commit_file(f, tmp);
+}
+
+static int write_summary(const ver_scene *vs, const ver_summary *u, const char *dir, const char *errmsg)
+{
+  cJSON *o = cJSON_CreateObject();
+  char id[128];
+  ver_scene_case_id(vs, id, sizeof id);
+  cJSON_AddStringToObject(o, "case", id);
+  cJSON_AddStringToObject(o, "scene", vs->name);
+  cJSON_AddStringToObject(o, "scene_file", vs->path);
+  cJSON_AddNumberToObject(o, "h", vs->sc.h);
+  cJSON_AddNumberToObject(o, "ppc", vs->sc.ppc);
+  cJSON_AddNumberToObject(o, "dt", vs->sc.dt);
+  cJSON_AddStringToObject(o, "Le", vs->sc.le_mode == MPM_LE_PARTICLE ? "particle" : "cell");
+  cJSON_AddNumberToObject(o, "separation_threshold", vs->sc.sep_threshold);
+  cJSON_AddBoolToObject(o, "complete", u->complete);
+  if (errmsg && errmsg[0])
+    cJSON_AddStringToObject(o, "error", errmsg);
+  cJSON_AddNumberToObject(o, "peak_P", u->peak_P);
+  cJSON_AddNumberToObject(o, "delta_peak", u->delta_peak);
+  cJSON_AddNumberToObject(o, "delta_sep", u->delta_sep);
+  cJSON_AddNumberToObject(o, "k_elastic", u->k_elastic);
+  cJSON_AddNumberToObject(o, "D_final", u->D_final);
+  cJSON_AddNumberToObject(o, "W_ext_final", u->W_ext_final);
+  cJSON_AddNumberToObject(o, "W_coh_final", u->W_coh_final);
+  cJSON_AddNumberToObject(o, "KE_final", u->KE_final);
+  cJSON_AddNumberToObject(o, "SE_final", u->SE_final);
+  cJSON_AddNumberToObject(o, "energy_residual", u->energy_residual);
+  cJSON_AddNumberToObject(o, "delta_end", u->delta_end);
+  cJSON_AddNumberToObject(o, "steps", (double)u->steps);
+  cJSON_AddNumberToObject(o, "particles", (double)u->particles);
+  cJSON_AddNumberToObject(o, "n_soften", (double)u->n_soften);
+  cJSON_AddNumberToObject(o, "n_separate", (double)u->n_separate);
+  cJSON_AddNumberToObject(o, "n_bracketed", (double)u->n_bracketed);
+  cJSON_AddNumberToObject(o, "wall_s", u->wall_s);
+  cJSON_AddNumberToObject(o, "cpu_s", u->cpu_s);
+  cJSON_AddNumberToObject(o, "updates_per_s", u->updates_per_s);
+  char *txt = cJSON_Print(o);
+  cJSON_Delete(o);
+  if (!txt)
+    return -1;
+  char tmp[1100];
+  FILE *f = open_tmp(dir, "summary.json", tmp, sizeof tmp);
+  if (!f) {
+    free(txt);
+    return -1;
+  }
+  fputs(txt, f);
+  fputc('\n', f);
+  free(txt);
+  return commit_file(f, tmp);
+}
+
+/* Least-squares slope through the origin-free line of (delta, P) rows with P below
+ * frac * peak, taken before the peak. */
+static double fit_elastic(const row *r, long n, double peak, double delta_peak)
+{
+  double sx = 0, sy = 0, sxx = 0, sxy = 0;
+  long m = 0;
+  for (long i = 0; i < n && r[i].delta < delta_peak; i++) {
+    if (r[i].Pg > 0.6 * peak || r[i].Pg < 0.1 * peak)
+      continue;
+    sx += r[i].delta;
+    sy += r[i].Pg;
+    sxx += r[i].delta * r[i].delta;
+    sxy += r[i].delta * r[i].Pg;
+    m++;
+  }
+  if (m < 3)
+    return NAN;
+  return (m * sxy - sx * sy) / (m * sxx - sx * sx);
+}
+
+int ver_run(const ver_scene *vs, const ver_run_opts *o, ver_summary *u, char *err, size_t errlen)
+{
+  memset(u, 0, sizeof *u);
+  u->delta_sep = -1;
+  const mpm_scene *sc = &vs->sc;
+  if (o->write_files) {
+    if (mkdir_p(o->outdir) != 0) {
+      snprintf(err, errlen, "%s: cannot create directory: %s", o->outdir, strerror(errno));
+      return 2;
+    }
+    /* An old summary must not vouch for the new, unfinished run. */
+    char old[1100];
+    snprintf(old, sizeof old, "%s/summary.json", o->outdir);
+    remove(old);
+  }
+#ifdef _OPENMP
+  if (o->threads > 0)
+    omp_set_num_threads(o->threads);
+#endif
+  mpm_sim *s;
+  char kerr[512];
+  mpm_status st = mpm_sim_alloc(sc, &s, kerr, sizeof kerr);
+  if (st != MPM_OK) {
+    snprintf(err, errlen, "%s: %s", vs->path, kerr);
+    return st == MPM_EINVAL ? 2 : 1;
+  }
+  const double vdt = sc->speed * sc->dt;
+  const long nmax = (long)ceil(sc->end_delta / vdt - 1e-9);
+  const long every = (long)fmax(1.0, floor(vs->interval / vdt + 0.5));
+  const long nrows_max = nmax / every + 2;
+  row *rows = malloc(sizeof(row) * (size_t)nrows_max);
+  /* separation window: 4 L / c in time, in rows */
+  const double c = sqrt(sc->E / (1.0 - sc->nu * sc->nu) / sc->rho);
+  const long win = (long)fmax(1.0, ceil(4.0 * sc->L / c / (sc->dt * (double)every)));
+  if (!rows) {
+    mpm_sim_free(s);
+    snprintf(err, errlen, "out of memory for %ld output rows", nrows_max);
+    return 1;
+  }
+  double last_snap = 0.0;
+  for (int i = 0; i < vs->nsnap; i++)
+    last_snap = fmax(last_snap, vs->snap[i]);
+  int snap_done[VER_MAX_SNAP] = {0};
+  char id[128];
+  ver_scene_case_id(vs, id, sizeof id);
+  const int show = o->progress && isatty(2);
+
+  long nrow = 0, acc_n = 0;
+  double acc_g = 0.0, acc_f = 0.0, peak = 0.0, dpeak = 0.0;
+  const double w0 = now_wall(), c0 = now_cpu();
+  double next_show = w0 + 0.5;
+  int rc = 0;
+  err[0] = '\0';
+  while (s->step < nmax) {
+    if (o->stop && *o->stop) {
+      rc = 130;
+      snprintf(err, errlen, "%s: stopped by a signal at step %ld (delta = %g)", id, s->step, mpm_sim_delta(s));
+      break;
+    }
+    if (o->max_steps > 0 && s->step >= o->max_steps)
+      break;
+    st = mpm_sim_step(s, kerr, sizeof kerr);
+    if (st != MPM_OK) {
+      rc = 1;
+      snprintf(err, errlen, "%s: %s: %s", id, mpm_strerror(st), kerr);
+      u->status = st;
+      break;
+    }
+    acc_g += s->P_grip;
+    acc_f += s->P_fixed;
+    acc_n++;
+    const double delta = mpm_sim_delta(s);
+    if (s->step % every == 0 || s->step == nmax) {
+      row *r = &rows[nrow++];
+      r->t = s->t;
+      r->delta = delta;
+      r->Pg = acc_g / acc_n;
+      r->Pf = acc_f / acc_n;
+      acc_g = acc_f = 0.0;
+      acc_n = 0;
+      mpm_sim_energy(s, &r->e);
+      if (r->Pg > peak) {
+        peak = r->Pg;
+        dpeak = delta;
+      }
+      if (u->delta_sep < 0 && peak > 0 && nrow >= win && rows[nrow - win].delta > dpeak) {
+        double mg = 0.0, mf = 0.0;
+        for (long i = nrow - win; i < nrow; i++) {
+          mg += rows[i].Pg;
+          mf += rows[i].Pf;
+        }
+        if (fmax(fabs(mg), fabs(mf)) / (double)win < sc->sep_load_frac * peak)
+          u->delta_sep = 0.5 * (rows[nrow - win].delta + delta);
+      }
+    }
+    if (o->write_files)
+      for (int i = 0; i < vs->nsnap; i++)
+        if (!snap_done[i] && delta >= vs->snap[i] - 0.5 * vdt) {
+          char stem[64];
+          snprintf(stem, sizeof stem, "snap-d%.3f", vs->snap[i]);
+          if (write_snapshot(s, o->outdir, stem) != 0) {
+            rc = 1;
+            snprintf(err, errlen, "%s/%s: cannot write: %s", o->outdir, stem, strerror(errno));
+          }
+          snap_done[i] = 1;
+        }
+    if (rc)
+      break;
+    if (u->delta_sep >= 0 && sc->stop_margin > 0 && delta >= u->delta_sep + sc->stop_margin &&
+        delta >= last_snap)
+      break;
+    if (show && (s->step & 255) == 0 && now_wall() > next_show) {
+      next_show = now_wall() + 0.5;
+      fprintf(stderr, "\r%s: delta %.4f / %.4f  step %ld  P %.3f  [%.1f s]   ", id, delta, sc->end_delta,
+              s->step, s->P_grip, now_wall() - w0);
+    }
+  }
+  if (show)
+    fprintf(stderr, "\r%*s\r", 90, "");
+  u->wall_s = now_wall() - w0;
+  u->cpu_s = now_cpu() - c0;
+  u->steps = s->step;
+  u->particles = s->p->n;
+  u->updates_per_s = u->wall_s > 0 ? (double)s->p->n * (double)s->step / u->wall_s : 0;
+  u->peak_P = peak;
+  u->delta_peak = dpeak;
+  u->k_elastic = fit_elastic(rows, nrow, peak, dpeak);
+  u->delta_end = mpm_sim_delta(s);
+  u->n_soften = s->n_soften;
+  u->n_separate = s->n_separate;
+  u->n_bracketed = s->n_bracketed;
+  mpm_energy e;
+  mpm_sim_energy(s, &e);
+  u->D_final = e.D;
+  u->W_ext_final = e.W_ext;
+  u->W_coh_final = e.W_coh;
+  u->KE_final = e.KE;
+  u->SE_final = e.SE;
+  double wmax = 0.0, res = 0.0;
+  for (long i = 0; i < nrow; i++)
+    wmax = fmax(wmax, fabs(rows[i].e.W_ext));
+  for (long i = 0; i < nrow && wmax > 0; i++)
+    res = fmax(res, fabs(rows[i].e.W_ext - rows[i].e.KE - rows[i].e.SE - rows[i].e.W_coh) / wmax);
+  u->energy_residual = res;
+  u->complete = rc == 0;
+  if (o->write_files) {
+    if (write_rows(rows, nrow, o->outdir) != 0 || write_snapshot(s, o->outdir, "final") != 0 ||
+        write_summary(vs, u, o->outdir, err) != 0) {
+      if (!rc)
+        snprintf(err, errlen, "%s: cannot write the results: %s", o->outdir, strerror(errno));
+      rc = rc ? rc : 1;
+      u->complete = 0;
+    }
+  }
+  free(rows);
+  mpm_sim_free(s);
+  return rc;
+}

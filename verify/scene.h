@@ -1,0 +1,40 @@
+/*
+ * scene.h - scene files (INI, read with Debian's libinih) and their validation.
+ *
+ * Every key is checked where it enters: unknown, missing, not a number, or out of
+ * its physical range gives one line  file:line: section.key: what is wrong (what is allowed).
+ */
+#ifndef DELAM_SCENE_H
+#define DELAM_SCENE_H
+
+#include <stddef.h>
+
+#include "mpm.h"
+
+#define VER_MAX_SNAP 16
+#define VER_NKEYS 40
+
+typedef struct {
+  char name[64];              /* scene name: the file's base name without .ini          */
+  char path[512];             /* the file it came from                                  */
+  mpm_scene sc;               /* the kernel's description                               */
+  double snap[VER_MAX_SNAP];  /* end displacements at which particles are written       */
+  int nsnap;
+  double interval;            /* load/energy rows every this much end displacement      */
+  int allow_unstable;         /* accept dt above the CFL bound                           */
+  int line[VER_NKEYS];        /* line each key was set on (0: default, -1: command line) */
+  int seen[VER_NKEYS];
+} ver_scene;
+
+/* Reads and validates a scene file.  Returns 0, or 2 with one line in err. */
+int ver_scene_load(const char *path, ver_scene *vs, char *err, size_t errlen);
+/* Parses it without the final validation, so that overrides can follow. */
+int ver_scene_parse(const char *path, ver_scene *vs, char *err, size_t errlen);
+/* Sets one key ("section.key=value" style override, as from --set). */
+int ver_scene_set(ver_scene *vs, const char *assignment, char *err, size_t errlen);
+/* Checks presence, ranges and the CFL bound.  Returns 0 or 2. */
+int ver_scene_validate(ver_scene *vs, char *err, size_t errlen);
+/* Case id, e.g. "fig6-h4-ppc4". */
+void ver_scene_case_id(const ver_scene *vs, char *buf, size_t len);
+
+#endif
