@@ -29,6 +29,10 @@ const char *mpm_strerror(mpm_status s);
 
 enum { MPM_LE_CELL = 0, MPM_LE_PARTICLE = 1 };        /* choice of Le (MODEL.md open point) */
 enum { MPM_DCOH_NONE = 0, MPM_DCOH_MODEL1 = 1, MPM_DCOH_MODEL2 = 2 };
+/* USL: strain from v^L (the paper, eq. 7).  MUSL: strain from the nodal velocity
+ * re-projected from the updated particle velocities, which keeps nearly empty nodes
+ * (tiny m_i, finite f_i) from injecting huge strain increments. */
+enum { MPM_SCHEME_USL = 0, MPM_SCHEME_MUSL = 1 };
 
 /* ---- scene: everything a run needs, as plain numbers (filled by verify/scene.c) ---- */
 typedef struct {
@@ -44,7 +48,8 @@ typedef struct {
   double imp_x, imp_y;   /* the imperfection sits at the particle nearest this point   */
   double h;              /* grid spacing                                               */
   int ppc;               /* particles per cell, a perfect square (1, 4, 9, ...)        */
-  int pad;               /* empty cells around the bar (right, top, bottom; left adds the travel) */
+  double margin;         /* empty space around the bar (length; the left side adds the grip's travel) */
+  int scheme;            /* MPM_SCHEME_USL (paper) or MPM_SCHEME_MUSL                  */
   double dt;             /* time step                                                  */
   double speed;          /* grip speed (pulls the left end in -x)                      */
   double end_delta;      /* the run never goes past this end displacement              */
@@ -120,7 +125,9 @@ typedef struct {
 mpm_particles *mpm_particles_alloc(size_t n);
 void mpm_particles_free(mpm_particles *p);
 
-/* ---- grid: a regular lattice of (nx+1) x (ny+1) nodes, origin (ox, oy), spacing h ---- */
+/* ---- grid: a regular lattice of (ncx+1) x (ncy+1) nodes, origin (ox, oy), spacing h.
+ * Nodes are stored column by column: node (i, j) is at i * nny + j, so the particles,
+ * sorted by cell in the same order, walk the nodal arrays forward. ---- */
 typedef struct {
   int ncx, ncy;            /* cells in x and y                                         */
   int nnx, nny;            /* nodes in x and y (ncx+1, ncy+1)                          */
@@ -131,6 +138,10 @@ typedef struct {
 } mpm_grid;
 
 mpm_grid *mpm_grid_alloc(int ncx, int ncy, double ox, double oy, double h);
+static inline size_t mpm_grid_node(const mpm_grid *g, int i, int j)
+{
+  return (size_t)i * (size_t)g->nny + (size_t)j;
+}
 void mpm_grid_free(mpm_grid *g);
 
 /* ---- energies (sec. 3 eq. 25 for the surface terms) ---- */
@@ -157,10 +168,30 @@ typedef struct {
   double P_grip, P_fixed;  /* loads (tension positive) of the last step                 */
   double W_ext;            /* accumulated external work                                */
   long n_soften, n_separate, n_bracketed; /* counters of constitutive paths           */
-  int imp_index;           /* the imperfection particle                                */
+  int imp_index;           /* the imperfection particle at setup (indices change when sorted) */
+  /* sorting and threads (mpm_sort.c): particles sorted by cell, column by column;
+   * strips of MPM_STRIP columns of cells are coloured even/odd for the scatter */
+  int nthreads;            /* worker threads (OpenMP), fixed at alloc                   */
+  mpm_dwork **dws;         /* one scratch per thread                                   */
+  int nstrip;              /* strips of columns                                        */
+  size_t *strip_start;     /* first particle of each strip (nstrip + 1 entries)        */
+  uint32_t *key, *perm;    /* per-particle cell key and sort permutation               */
+  size_t *count;           /* per-cell counters                                        */
+  double *scratch;         /* one particle array's worth, for permuting                 */
+  uint8_t *scratch8;
+  int resort;              /* 1: a particle left its strip's safe range; sort before the next step */
+  double time_split[5];    /* seconds in: sort, p2g, grid, g2p, constitutive            */
 } mpm_sim;
 
-mpm_status mpm_sim_alloc(const mpm_scene *sc, mpm_sim **out, char *err, size_t errlen);
+enum { MPM_T_SORT = 0, MPM_T_P2G, MPM_T_GRID, MPM_T_G2P, MPM_T_CONST };
+#define MPM_STRIP 4        /* columns of cells per strip (>= 3: see mpm_sort.c)           */
+#define MPM_SORT_EVERY 16  /* steps between sorts                                        */
+
+/* Sorts the particles by cell (stable counting sort) and rebuilds the strips. */
+void mpm_sim_sort(mpm_sim *s);
+
+/* nthreads <= 0: OpenMP's default.  Results do not depend on it (fixed summation order). */
+mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char *err, size_t errlen);
 void mpm_sim_free(mpm_sim *s);
 /* One explicit step (eqs. 2-7, USL).  On failure, err names the step, particle and field. */
 mpm_status mpm_sim_step(mpm_sim *s, char *err, size_t errlen);

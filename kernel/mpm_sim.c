@@ -9,6 +9,9 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#ifdef _OPENMP
+#include <omp.h>
+#endif
 
 #include "mpm.h"
 
@@ -61,7 +64,8 @@ mpm_status mpm_scene_check(const mpm_scene *sc, char *err, size_t errlen)
     BAD("grid.h = %g must divide L = %g and H = %g", sc->h, sc->L, sc->H);
   const int n = (int)lround(sqrt((double)sc->ppc));
   if (sc->ppc < 1 || n * n != sc->ppc) BAD("grid.ppc must be a perfect square (1, 4, 9, ...)");
-  if (sc->pad < 1) BAD("grid.pad must be >= 1");
+  if (!(sc->margin >= 0.0)) BAD("grid.margin must be >= 0");
+  if (sc->scheme != MPM_SCHEME_USL && sc->scheme != MPM_SCHEME_MUSL) BAD("time.scheme must be usl or musl");
   if (!(sc->dt > 0.0)) BAD("time.dt must be > 0");
   if (!(sc->speed > 0.0)) BAD("loading.speed must be > 0");
   if (!(sc->end_delta > 0.0)) BAD("run.end_delta must be > 0");
@@ -76,12 +80,22 @@ void mpm_sim_free(mpm_sim *s)
   mpm_particles_free(s->p);
   mpm_grid_free(s->g);
   mpm_dwork_free(s->dw);
+  if (s->dws)
+    for (int t = 0; t < s->nthreads; t++)
+      mpm_dwork_free(s->dws[t]);
+  free(s->dws);
+  free(s->strip_start);
+  free(s->key);
+  free(s->perm);
+  free(s->count);
+  free(s->scratch);
+  free(s->scratch8);
   free(s->grip);
   free(s->fixx);
   free(s);
 }
 
-mpm_status mpm_sim_alloc(const mpm_scene *sc, mpm_sim **out, char *err, size_t errlen)
+mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char *err, size_t errlen)
 {
   *out = NULL;
   mpm_status st = mpm_scene_check(sc, err, errlen);
@@ -93,17 +107,39 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, mpm_sim **out, char *err, size_t e
   s->sc = *sc;
   const double h = sc->h;
   const int cx = (int)whole_cells(sc->L, h), cy = (int)whole_cells(sc->H, h);
-  /* The grid is only as large as the motion needs: pad cells all round, and on the
-   * left the grip's travel to end_delta besides. */
-  const int padl = sc->pad + (int)ceil(sc->end_delta / h);
-  s->g = mpm_grid_alloc(padl + cx + sc->pad, cy + 2 * sc->pad, -padl * h, -sc->pad * h, h);
+  /* The grid is only as large as the motion needs: margin all round (at least one
+   * cell), and on the left the grip's travel to end_delta besides. */
+  const int pad = 1 + (int)ceil(sc->margin / h - 1e-9);
+  const int padl = pad + (int)ceil(sc->end_delta / h - 1e-9);
+  s->g = mpm_grid_alloc(padl + cx + pad, cy + 2 * pad, -padl * h, -pad * h, h);
   const int n1 = (int)lround(sqrt((double)sc->ppc));
   const size_t np = (size_t)cx * (size_t)cy * (size_t)sc->ppc;
+#ifdef _OPENMP
+  s->nthreads = nthreads > 0 ? nthreads : omp_get_max_threads();
+#else
+  (void)nthreads;
+  s->nthreads = 1;
+#endif
   s->p = mpm_particles_alloc(np);
   s->dw = mpm_dwork_alloc();
+  s->dws = calloc((size_t)s->nthreads, sizeof *s->dws);
   s->grip = malloc(sizeof(int) * (size_t)(cy + 1));
   s->fixx = malloc(sizeof(int) * (size_t)(cy + 1));
-  if (!s->g || !s->p || !s->dw || !s->grip || !s->fixx) {
+  int ok = s->g && s->p && s->dw && s->dws && s->grip && s->fixx;
+  if (ok) {
+    const size_t ncell = (size_t)s->g->ncx * (size_t)s->g->ncy;
+    s->nstrip = (s->g->ncx + MPM_STRIP - 1) / MPM_STRIP;
+    s->strip_start = calloc((size_t)s->nstrip + 1, sizeof(size_t));
+    s->key = malloc(np * sizeof(uint32_t));
+    s->perm = malloc(np * sizeof(uint32_t));
+    s->count = malloc((ncell + 1) * sizeof(size_t));
+    s->scratch = malloc(np * sizeof(double));
+    s->scratch8 = malloc(np);
+    ok = s->strip_start && s->key && s->perm && s->count && s->scratch && s->scratch8;
+    for (int t = 0; ok && t < s->nthreads; t++)
+      ok = (s->dws[t] = mpm_dwork_alloc()) != NULL;
+  }
+  if (!ok) {
     mpm_sim_free(s);
     snprintf(err, errlen, "out of memory for %zu particles", np);
     return MPM_ENOMEM;
@@ -145,11 +181,12 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, mpm_sim **out, char *err, size_t e
   /* Boundary nodes: columns x = 0 (grip) and x = L (fixed), rows 0..H. */
   const mpm_grid *g = s->g;
   for (int j = 0; j <= cy; j++) {
-    s->grip[j] = (j + sc->pad) * g->nnx + padl;
-    s->fixx[j] = (j + sc->pad) * g->nnx + padl + cx;
+    s->grip[j] = (int)mpm_grid_node(g, padl, j + pad);
+    s->fixx[j] = (int)mpm_grid_node(g, padl + cx, j + pad);
   }
   s->ngrip = s->nfixx = cy + 1;
   s->fixy = s->fixx[cy / 2];
+  mpm_sim_sort(s);
   *out = s;
   return MPM_OK;
 }

@@ -7,60 +7,117 @@
  *   g2p   x_p += dt sum v^L_i N_ip,  v_p += sum (v^L_i - v_i) N_ip    eqs. 5, 6
  *         de_p = dt sym(sum v^L_i (x) G_ip), then the decohesion update  eq. 7
  *
- * Bilinear shape functions are products of 1-D hats; with r = (x - x_i)/h in [0,1)
- * the weights are (1-r, r) in each direction and the gradients (-1/h, 1/h) times the
- * other direction's weight.  N and G are taken at the start of the step in both passes.
+ * MUSL (time.scheme = musl) differs only in the strain: the updated particle
+ * velocities are projected to the grid again, v'_i = sum m_p v_p N_ip / m_i (BCs
+ * applied), and de_p = dt sym(sum v'_i (x) G_ip).  v'_i is a weighted mean of particle
+ * velocities, so a node that a particle barely touches (tiny m_i, finite f_i) cannot
+ * inject a huge strain: the cell-crossing instability of USL.
+ *
+ * N and G are taken at the start of the step in every pass (mpm_shape.h).
  *
  * Boundary conditions are applied to v^L only.  Applying them to v_i as well (as
  * MODEL.md sec. 2 reads) would make v^L - v_i = 0 at a gripped node, so the FLIP
  * update (eq. 6) could never bring the particles there to the grip's speed.
+ *
+ * Threads: the scatters run strip by strip, even strips then odd (mpm_sort.c); the
+ * gathers are independent per particle.  Results are bit-for-bit the same for any
+ * number of threads.
  */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
+#include <time.h>
+#ifdef _OPENMP
+#include <omp.h>
+#endif
 
 #include "mpm.h"
+#include "mpm_shape.h"
 
 /* Nodes with less mass than this fraction of a particle's are treated as empty. */
 #define MPM_MASS_EPS 1e-12
 
-static void p2g(mpm_sim *s, int *bad)
+static double wall(void)
 {
-  mpm_grid *g = s->g;
-  const mpm_particles *p = s->p;
-  const size_t nn = (size_t)g->nnx * (size_t)g->nny;
-  memset(g->m, 0, nn * sizeof(double));
-  memset(g->px, 0, nn * sizeof(double));
-  memset(g->py, 0, nn * sizeof(double));
-  memset(g->fx, 0, nn * sizeof(double));
-  memset(g->fy, 0, nn * sizeof(double));
-  const double ih = 1.0 / g->h, ox = g->ox, oy = g->oy;
-  const int nnx = g->nnx, ncx = g->ncx, ncy = g->ncy;
+  struct timespec ts;
+  clock_gettime(CLOCK_MONOTONIC, &ts);
+  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+static int thread_id(void)
+{
+#ifdef _OPENMP
+  return omp_get_thread_num();
+#else
+  return 0;
+#endif
+}
+
+/* eqs. 2, 3 for the particles [a, b); 1 if one of them is outside the grid. */
+static int p2g_range(mpm_grid *restrict g, const mpm_particles *restrict p, size_t a, size_t b)
+{
+  const size_t nny = (size_t)g->nny;
   int out = 0;
-  for (size_t k = 0; k < p->n; k++) {
-    const double fx = (p->x[k] - ox) * ih, fy = (p->y[k] - oy) * ih;
-    const int i = (int)fx, j = (int)fy;
-    if (!(fx >= 0.0 && fy >= 0.0 && i < ncx && j < ncy)) {
+  for (size_t k = a; k < b; k++) {
+    mpm_shape sh;
+    if (!mpm_shape_at(g, p->x[k], p->y[k], &sh)) {
       out = 1;
       continue;
     }
-    const double rx = fx - i, ry = fy - j;
-    const double wx0 = 1.0 - rx, wx1 = rx, wy0 = 1.0 - ry, wy1 = ry;
+    const double wx0 = sh.wx0, wx1 = sh.wx1, wy0 = sh.wy0, wy1 = sh.wy1;
     const double mm = p->m[k], mvx = mm * p->vx[k], mvy = mm * p->vy[k];
-    const double Vi = p->V[k] * ih;
+    const double Vi = p->V[k] / g->h;
     const double A = Vi * p->sxx[k], B = Vi * p->sxy[k], C = Vi * p->syy[k];
-    const size_t n00 = (size_t)j * nnx + i, n10 = n00 + 1, n01 = n00 + nnx, n11 = n01 + 1;
+    const size_t n00 = sh.n00, n01 = n00 + 1, n10 = n00 + nny, n11 = n10 + 1;
     const double N00 = wx0 * wy0, N10 = wx1 * wy0, N01 = wx0 * wy1, N11 = wx1 * wy1;
-    g->m[n00] += mm * N00;  g->m[n10] += mm * N10;  g->m[n01] += mm * N01;  g->m[n11] += mm * N11;
-    g->px[n00] += mvx * N00; g->px[n10] += mvx * N10; g->px[n01] += mvx * N01; g->px[n11] += mvx * N11;
-    g->py[n00] += mvy * N00; g->py[n10] += mvy * N10; g->py[n01] += mvy * N01; g->py[n11] += mvy * N11;
+    g->m[n00] += mm * N00;   g->m[n01] += mm * N01;   g->m[n10] += mm * N10;   g->m[n11] += mm * N11;
+    g->px[n00] += mvx * N00; g->px[n01] += mvx * N01; g->px[n10] += mvx * N10; g->px[n11] += mvx * N11;
+    g->py[n00] += mvy * N00; g->py[n01] += mvy * N01; g->py[n10] += mvy * N10; g->py[n11] += mvy * N11;
     /* f_i = -V sigma . G_i with G_i = (+-wy/h, +-wx/h), eq. 3 */
     g->fx[n00] += A * wy0 + B * wx0;   g->fy[n00] += B * wy0 + C * wx0;
     g->fx[n10] += -A * wy0 + B * wx1;  g->fy[n10] += -B * wy0 + C * wx1;
     g->fx[n01] += A * wy1 - B * wx0;   g->fy[n01] += B * wy1 - C * wx0;
     g->fx[n11] += -A * wy1 - B * wx1;  g->fy[n11] += -B * wy1 - C * wx1;
   }
-  *bad = out;
+  return out;
+}
+
+/* MUSL: momentum of the updated particle velocities into (vx, vy) for [a, b). */
+static void p2g_momentum_range(const mpm_grid *restrict g, const mpm_particles *restrict p,
+                               double *restrict qx, double *restrict qy, size_t a, size_t b)
+{
+  const size_t nny = (size_t)g->nny;
+  for (size_t k = a; k < b; k++) {
+    mpm_shape sh;
+    if (!mpm_shape_at(g, p->x[k], p->y[k], &sh))
+      continue;
+    const double mvx = p->m[k] * p->vx[k], mvy = p->m[k] * p->vy[k];
+    const size_t n00 = sh.n00, n01 = n00 + 1, n10 = n00 + nny, n11 = n10 + 1;
+    const double N00 = sh.wx0 * sh.wy0, N10 = sh.wx1 * sh.wy0, N01 = sh.wx0 * sh.wy1, N11 = sh.wx1 * sh.wy1;
+    qx[n00] += mvx * N00; qx[n01] += mvx * N01; qx[n10] += mvx * N10; qx[n11] += mvx * N11;
+    qy[n00] += mvy * N00; qy[n01] += mvy * N01; qy[n10] += mvy * N10; qy[n11] += mvy * N11;
+  }
+}
+
+/* Scatter over the strips, colour by colour (deterministic, no atomics).  which = 0:
+ * eqs. 2-3; which = 1: MUSL momentum into (fx, fy). */
+static int scatter(mpm_sim *s, int which)
+{
+  mpm_grid *g = s->g;
+  const mpm_particles *p = s->p;
+  int out = 0;
+  for (int colour = 0; colour < 2; colour++) {
+#ifdef _OPENMP
+#pragma omp parallel for schedule(dynamic, 1) reduction(| : out) num_threads(s->nthreads)
+#endif
+    for (int q = colour; q < s->nstrip; q += 2) {
+      if (which == 0)
+        out |= p2g_range(g, p, s->strip_start[q], s->strip_start[q + 1]);
+      else
+        p2g_momentum_range(g, p, g->fx, g->fy, s->strip_start[q], s->strip_start[q + 1]);
+    }
+  }
+  return out;
 }
 
 /* eq. 4 and the reactions.  After this px, py hold v^L and fx, fy hold v^L - v. */
@@ -68,8 +125,11 @@ static void grid_update(mpm_sim *s)
 {
   mpm_grid *g = s->g;
   const double dt = s->sc.dt, mmin = MPM_MASS_EPS * s->p->m[0];
-  const size_t nn = (size_t)g->nnx * (size_t)g->nny;
-  for (size_t k = 0; k < nn; k++) {
+  const long nn = (long)g->nnx * (long)g->nny;
+#ifdef _OPENMP
+#pragma omp parallel for schedule(static) num_threads(s->nthreads)
+#endif
+  for (long k = 0; k < nn; k++) {
     if (g->m[k] > mmin) {
       const double im = 1.0 / g->m[k];
       const double dvx = dt * g->fx[k] * im, dvy = dt * g->fy[k] * im;
@@ -106,6 +166,27 @@ static void grid_update(mpm_sim *s)
   s->W_ext += (Rg / dt) * vg * dt; /* power of the grip's force; the fixed nodes do no work */
 }
 
+/* MUSL: v' = q / m with the same boundary conditions, in place in (fx, fy). */
+static void grid_musl_velocity(mpm_sim *s)
+{
+  mpm_grid *g = s->g;
+  const double mmin = MPM_MASS_EPS * s->p->m[0];
+  const long nn = (long)g->nnx * (long)g->nny;
+#ifdef _OPENMP
+#pragma omp parallel for schedule(static) num_threads(s->nthreads)
+#endif
+  for (long k = 0; k < nn; k++) {
+    const double im = g->m[k] > mmin ? 1.0 / g->m[k] : 0.0;
+    g->fx[k] *= im;
+    g->fy[k] *= im;
+  }
+  for (int q = 0; q < s->ngrip; q++)
+    g->fx[s->grip[q]] = -s->sc.speed;
+  for (int q = 0; q < s->nfixx; q++)
+    g->fx[s->fixx[q]] = 0.0;
+  g->fy[s->fixy] = 0.0;
+}
+
 /* Names the first particle whose state is not finite. */
 static void name_nonfinite(const mpm_sim *s, char *err, size_t errlen)
 {
@@ -115,84 +196,184 @@ static void name_nonfinite(const mpm_sim *s, char *err, size_t errlen)
     const double v[] = {p->x[k], p->y[k], p->vx[k], p->vy[k], p->sxx[k], p->syy[k], p->sxy[k], p->lam[k]};
     for (int f = 0; f < 8; f++)
       if (!isfinite(v[f])) {
-        snprintf(err, errlen, "step %ld: particle %zu (X = %g, Y = %g): %s is not finite",
-                 s->step, k, p->x0[k], p->y0[k], names[f]);
+        snprintf(err, errlen, "step %ld: particle at X = %g, Y = %g: %s is not finite", s->step, p->x0[k],
+                 p->y0[k], names[f]);
         return;
       }
   }
   snprintf(err, errlen, "step %ld: non-finite value", s->step);
 }
 
-static mpm_status g2p(mpm_sim *s, char *err, size_t errlen)
+typedef struct {
+  long soften, separate, bracketed;
+  double tconst;   /* seconds in the full constitutive update */
+  int bad;         /* the update returned non-finite */
+  int resort;      /* a particle drifted out of its strip's safe range */
+  size_t bad_k;
+} g2p_acc;
+
+/* The constitutive update of particle k with strain increment de (eq. 7 -> sec. 4). */
+static inline void constitutive(const mpm_sim *s, mpm_particles *restrict p, size_t k, const double de[3],
+                                mpm_dwork *dw, g2p_acc *acc)
+{
+  const mpm_material *m = &s->mat[p->mat[k]];
+  /* Elastic trial; the full update only where decohesion may act. */
+  const double sxx = p->sxx[k] + m->E1 * de[0] + m->E2 * de[1];
+  const double syy = p->syy[k] + m->E2 * de[0] + m->E1 * de[1];
+  const double sxy = p->sxy[k] + 2.0 * m->G * de[2];
+  int full = 0;
+  if (m->model != MPM_DCOH_NONE) {
+    if (p->lam[k] > 0.0 || p->sep[k]) {
+      full = 1;
+    } else {
+      const double tx = sxx * m->nx + sxy * m->ny, ty = sxy * m->nx + syy * m->ny;
+      const double sn = tx * m->nx + ty * m->ny, st = tx * m->tx + ty * m->ty;
+      const double a = sn > 0.0 ? sn / m->snf : 0.0, b = st / m->stf;
+      full = a * a + b * b > 1.0;
+    }
+  }
+  if (!full) {
+    p->sxx[k] = sxx;
+    p->syy[k] = syy;
+    p->sxy[k] = sxy;
+    return;
+  }
+  const double t0 = wall();
+  const mpm_dstate in = {p->sxx[k], p->syy[k], p->sxy[k], p->lam[k], p->upn[k], p->upt[k], p->sep[k]};
+  mpm_dstate o;
+  mpm_dinfo info;
+  if (mpm_dcoh_update(m, &in, de, &o, &info, dw) != MPM_OK && !acc->bad) {
+    acc->bad = 1;
+    acc->bad_k = k;
+  }
+  p->sxx[k] = o.sxx;
+  p->syy[k] = o.syy;
+  p->sxy[k] = o.sxy;
+  p->lam[k] = o.lam;
+  p->upn[k] = o.upn;
+  p->upt[k] = o.upt;
+  p->sep[k] = (uint8_t)o.sep;
+  p->wcoh[k] += info.w * p->V[k] / m->Le;
+  acc->soften += info.path == MPM_DPATH_SOFTEN;
+  acc->separate += info.path == MPM_DPATH_SEPARATE;
+  acc->bracketed += info.bracketed;
+  acc->tconst += wall() - t0;
+}
+
+/* eqs. 5-7 and the constitutive update for the particles of strip q.  USL: strain from
+ * v^L (px, py).  MUSL: velocities were already updated; strain from v' (fx, fy). */
+static void g2p_strip(mpm_sim *s, int q, int musl, mpm_dwork *dw, g2p_acc *acc)
 {
   const mpm_grid *g = s->g;
-  mpm_particles *p = s->p;
-  const double ih = 1.0 / g->h, ox = g->ox, oy = g->oy, dt = s->sc.dt;
-  const int nnx = g->nnx;
-  double check = 0.0;
-  for (size_t k = 0; k < p->n; k++) {
-    const double fx = (p->x[k] - ox) * ih, fy = (p->y[k] - oy) * ih;
-    const int i = (int)fx, j = (int)fy;
-    const double rx = fx - i, ry = fy - j;
-    const double wx0 = 1.0 - rx, wx1 = rx, wy0 = 1.0 - ry, wy1 = ry;
-    const size_t n00 = (size_t)j * nnx + i, n10 = n00 + 1, n01 = n00 + nnx, n11 = n01 + 1;
+  mpm_particles *restrict p = s->p;
+  const double ih = 1.0 / g->h, dt = s->sc.dt;
+  const size_t nny = (size_t)g->nny;
+  const double *ux = g->px, *uy = g->py;            /* v^L                      */
+  const double *sx = musl ? g->fx : g->px, *sy = musl ? g->fy : g->py; /* strain velocity */
+  const int lo = q * MPM_STRIP - 1, hi = (q + 1) * MPM_STRIP; /* safe columns (mpm_sort.c) */
+  for (size_t k = s->strip_start[q]; k < s->strip_start[q + 1]; k++) {
+    mpm_shape sh;
+    mpm_shape_at(g, p->x[k], p->y[k], &sh); /* inside: checked by the scatter */
+    const double wx0 = sh.wx0, wx1 = sh.wx1, wy0 = sh.wy0, wy1 = sh.wy1;
+    const size_t n00 = sh.n00, n01 = n00 + 1, n10 = n00 + nny, n11 = n10 + 1;
     const double N00 = wx0 * wy0, N10 = wx1 * wy0, N01 = wx0 * wy1, N11 = wx1 * wy1;
-    const double ux00 = g->px[n00], ux10 = g->px[n10], ux01 = g->px[n01], ux11 = g->px[n11];
-    const double uy00 = g->py[n00], uy10 = g->py[n10], uy01 = g->py[n01], uy11 = g->py[n11];
-    /* eqs. 5, 6 */
-    p->x[k] += dt * (N00 * ux00 + N10 * ux10 + N01 * ux01 + N11 * ux11);
-    p->y[k] += dt * (N00 * uy00 + N10 * uy10 + N01 * uy01 + N11 * uy11);
+    /* eq. 5 (and eq. 6 for USL) */
+    p->x[k] += dt * (N00 * ux[n00] + N10 * ux[n10] + N01 * ux[n01] + N11 * ux[n11]);
+    p->y[k] += dt * (N00 * uy[n00] + N10 * uy[n10] + N01 * uy[n01] + N11 * uy[n11]);
+    if (!musl) {
+      p->vx[k] += N00 * g->fx[n00] + N10 * g->fx[n10] + N01 * g->fx[n01] + N11 * g->fx[n11];
+      p->vy[k] += N00 * g->fy[n00] + N10 * g->fy[n10] + N01 * g->fy[n01] + N11 * g->fy[n11];
+    }
+    /* eq. 7: gradient of the bilinear velocity field */
+    const double a00 = sx[n00], a10 = sx[n10], a01 = sx[n01], a11 = sx[n11];
+    const double b00 = sy[n00], b10 = sy[n10], b01 = sy[n01], b11 = sy[n11];
+    const double dxux = ih * (wy0 * (a10 - a00) + wy1 * (a11 - a01));
+    const double dyuy = ih * (wx0 * (b01 - b00) + wx1 * (b11 - b10));
+    const double dyux = ih * (wx0 * (a01 - a00) + wx1 * (a11 - a10));
+    const double dxuy = ih * (wy0 * (b10 - b00) + wy1 * (b11 - b01));
+    const double de[3] = {dt * dxux, dt * dyuy, 0.5 * dt * (dyux + dxuy)};
+    constitutive(s, p, k, de, dw, acc);
+    const int col = (int)floor((p->x[k] - g->ox) * ih);
+    acc->resort |= col < lo || col > hi;
+  }
+}
+
+/* MUSL first half: eq. 6 only, for the particles of strip q. */
+static void g2p_velocity_strip(mpm_sim *s, int q)
+{
+  const mpm_grid *g = s->g;
+  mpm_particles *restrict p = s->p;
+  const size_t nny = (size_t)g->nny;
+  for (size_t k = s->strip_start[q]; k < s->strip_start[q + 1]; k++) {
+    mpm_shape sh;
+    mpm_shape_at(g, p->x[k], p->y[k], &sh);
+    const size_t n00 = sh.n00, n01 = n00 + 1, n10 = n00 + nny, n11 = n10 + 1;
+    const double N00 = sh.wx0 * sh.wy0, N10 = sh.wx1 * sh.wy0, N01 = sh.wx0 * sh.wy1, N11 = sh.wx1 * sh.wy1;
     p->vx[k] += N00 * g->fx[n00] + N10 * g->fx[n10] + N01 * g->fx[n01] + N11 * g->fx[n11];
     p->vy[k] += N00 * g->fy[n00] + N10 * g->fy[n10] + N01 * g->fy[n01] + N11 * g->fy[n11];
-    /* eq. 7: velocity gradient from the bilinear field */
-    const double dxux = ih * (wy0 * (ux10 - ux00) + wy1 * (ux11 - ux01));
-    const double dyuy = ih * (wx0 * (uy01 - uy00) + wx1 * (uy11 - uy10));
-    const double dyux = ih * (wx0 * (ux01 - ux00) + wx1 * (ux11 - ux10));
-    const double dxuy = ih * (wy0 * (uy10 - uy00) + wy1 * (uy11 - uy01));
-    const double de[3] = {dt * dxux, dt * dyuy, 0.5 * dt * (dyux + dxuy)};
-    const mpm_material *m = &s->mat[p->mat[k]];
-    /* Elastic trial; the full update only where decohesion may act. */
-    const double sxx = p->sxx[k] + m->E1 * de[0] + m->E2 * de[1];
-    const double syy = p->syy[k] + m->E2 * de[0] + m->E1 * de[1];
-    const double sxy = p->sxy[k] + 2.0 * m->G * de[2];
-    int full = 0;
-    if (m->model != MPM_DCOH_NONE) {
-      if (p->lam[k] > 0.0 || p->sep[k]) {
-        full = 1;
-      } else {
-        const double tx = sxx * m->nx + sxy * m->ny, ty = sxy * m->nx + syy * m->ny;
-        const double sn = tx * m->nx + ty * m->ny, st = tx * m->tx + ty * m->ty;
-        const double a = sn > 0.0 ? sn / m->snf : 0.0, b = st / m->stf;
-        full = a * a + b * b > 1.0;
-      }
-    }
-    if (!full) {
-      p->sxx[k] = sxx;
-      p->syy[k] = syy;
-      p->sxy[k] = sxy;
-    } else {
-      const mpm_dstate in = {p->sxx[k], p->syy[k], p->sxy[k], p->lam[k], p->upn[k], p->upt[k], p->sep[k]};
-      mpm_dstate o;
-      mpm_dinfo info;
-      if (mpm_dcoh_update(m, &in, de, &o, &info, s->dw) != MPM_OK) {
-        snprintf(err, errlen, "step %ld: particle %zu (X = %g, Y = %g): decohesion update not finite",
-                 s->step, k, p->x0[k], p->y0[k]);
-        return MPM_ENOTFINITE;
-      }
-      p->sxx[k] = o.sxx;
-      p->syy[k] = o.syy;
-      p->sxy[k] = o.sxy;
-      p->lam[k] = o.lam;
-      p->upn[k] = o.upn;
-      p->upt[k] = o.upt;
-      p->sep[k] = (uint8_t)o.sep;
-      p->wcoh[k] += info.w * p->V[k] / m->Le;
-      s->n_soften += info.path == MPM_DPATH_SOFTEN;
-      s->n_separate += info.path == MPM_DPATH_SEPARATE;
-      s->n_bracketed += info.bracketed;
-    }
-    check += p->x[k] + p->y[k] + p->vx[k] + p->vy[k] + p->sxx[k] + p->syy[k] + p->sxy[k];
   }
+}
+
+static mpm_status g2p(mpm_sim *s, char *err, size_t errlen)
+{
+  const int musl = s->sc.scheme == MPM_SCHEME_MUSL;
+  if (musl) {
+#ifdef _OPENMP
+#pragma omp parallel for schedule(dynamic, 1) num_threads(s->nthreads)
+#endif
+    for (int q = 0; q < s->nstrip; q++)
+      g2p_velocity_strip(s, q);
+    mpm_grid *g = s->g;
+    const size_t nn = (size_t)g->nnx * (size_t)g->nny;
+    memset(g->fx, 0, nn * sizeof(double));
+    memset(g->fy, 0, nn * sizeof(double));
+    scatter(s, 1);
+    grid_musl_velocity(s);
+  }
+  g2p_acc tot = {0, 0, 0, 0.0, 0, 0, 0};
+#ifdef _OPENMP
+#pragma omp parallel num_threads(s->nthreads)
+#endif
+  {
+    g2p_acc acc = {0, 0, 0, 0.0, 0, 0, 0};
+    mpm_dwork *dw = s->dws[thread_id()];
+#ifdef _OPENMP
+#pragma omp for schedule(dynamic, 1)
+#endif
+    for (int q = 0; q < s->nstrip; q++)
+      g2p_strip(s, q, musl, dw, &acc);
+#ifdef _OPENMP
+#pragma omp critical
+#endif
+    {
+      /* integer counters: order-free; tconst: a timing only */
+      tot.soften += acc.soften;
+      tot.separate += acc.separate;
+      tot.bracketed += acc.bracketed;
+      tot.tconst = acc.tconst > tot.tconst ? acc.tconst : tot.tconst;
+      tot.resort |= acc.resort;
+      if (acc.bad && (!tot.bad || acc.bad_k < tot.bad_k)) {
+        tot.bad = 1;
+        tot.bad_k = acc.bad_k;
+      }
+    }
+  }
+  s->n_soften += tot.soften;
+  s->n_separate += tot.separate;
+  s->n_bracketed += tot.bracketed;
+  s->time_split[MPM_T_CONST] += tot.tconst;
+  s->resort |= tot.resort;
+  if (tot.bad) {
+    const mpm_particles *p = s->p;
+    snprintf(err, errlen, "step %ld: particle at X = %g, Y = %g: decohesion update not finite", s->step,
+             p->x0[tot.bad_k], p->y0[tot.bad_k]);
+    return MPM_ENOTFINITE;
+  }
+  /* A cheap finiteness check of the state: a NaN anywhere makes the sum NaN. */
+  const mpm_particles *p = s->p;
+  double check = 0.0;
+  for (size_t k = 0; k < p->n; k++)
+    check += p->vx[k] + p->vy[k] + p->sxx[k] + p->syy[k] + p->sxy[k];
   if (!isfinite(check)) {
     name_nonfinite(s, err, errlen);
     return MPM_ENOTFINITE;
@@ -202,25 +383,45 @@ static mpm_status g2p(mpm_sim *s, char *err, size_t errlen)
 
 mpm_status mpm_sim_step(mpm_sim *s, char *err, size_t errlen)
 {
-  int bad = 0;
-  p2g(s, &bad);
-  if (bad) {
+  double t0 = wall(), t1;
+  if (s->resort || s->step % MPM_SORT_EVERY == 0) {
+    mpm_sim_sort(s);
+    t1 = wall();
+    s->time_split[MPM_T_SORT] += t1 - t0;
+    t0 = t1;
+  }
+  mpm_grid *g = s->g;
+  const size_t nn = (size_t)g->nnx * (size_t)g->nny;
+  memset(g->m, 0, nn * sizeof(double));
+  memset(g->px, 0, nn * sizeof(double));
+  memset(g->py, 0, nn * sizeof(double));
+  memset(g->fx, 0, nn * sizeof(double));
+  memset(g->fy, 0, nn * sizeof(double));
+  if (scatter(s, 0)) {
     const mpm_particles *p = s->p;
     mpm_status st = MPM_EDOMAIN;
     for (size_t k = 0; k < p->n; k++) {
-      const double fx = (p->x[k] - s->g->ox) / s->g->h, fy = (p->y[k] - s->g->oy) / s->g->h;
-      if (!(fx >= 0.0 && fy >= 0.0 && fx < s->g->ncx && fy < s->g->ncy)) {
+      mpm_shape sh;
+      if (!mpm_shape_at(g, p->x[k], p->y[k], &sh)) {
         st = isfinite(p->x[k]) && isfinite(p->y[k]) ? MPM_EDOMAIN : MPM_ENOTFINITE;
-        snprintf(err, errlen, "step %ld: particle %zu (X = %g, Y = %g) %s at (%g, %g)%s", s->step, k,
-                 p->x0[k], p->y0[k], st == MPM_EDOMAIN ? "left the grid" : "has a non-finite position",
-                 p->x[k], p->y[k], st == MPM_EDOMAIN ? "; raise grid.pad" : "");
+        snprintf(err, errlen, "step %ld: particle at X = %g, Y = %g %s at (%g, %g)%s", s->step, p->x0[k],
+                 p->y0[k], st == MPM_EDOMAIN ? "left the grid" : "has a non-finite position", p->x[k],
+                 p->y[k], st == MPM_EDOMAIN ? "; raise grid.margin" : "");
         break;
       }
     }
     return st;
   }
+  t1 = wall();
+  s->time_split[MPM_T_P2G] += t1 - t0;
   grid_update(s);
+  t0 = wall();
+  s->time_split[MPM_T_GRID] += t0 - t1;
+  const double c0 = s->time_split[MPM_T_CONST];
   const mpm_status st = g2p(s, err, errlen);
+  t1 = wall();
+  /* g2p's own share excludes the constitutive time measured inside it */
+  s->time_split[MPM_T_G2P] += (t1 - t0) - (s->time_split[MPM_T_CONST] - c0);
   if (st != MPM_OK)
     return st;
   s->step++;

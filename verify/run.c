@@ -24,9 +24,6 @@
 #include <unistd.h>
 
 #include <cjson/cJSON.h>
-#ifdef _OPENMP
-#include <omp.h>
-#endif
 
 #include "run.h"
 
@@ -154,6 +151,7 @@ static int write_summary(const ver_scene *vs, const ver_summary *u, const char *
   cJSON_AddNumberToObject(o, "ppc", vs->sc.ppc);
   cJSON_AddNumberToObject(o, "dt", vs->sc.dt);
   cJSON_AddStringToObject(o, "Le", vs->sc.le_mode == MPM_LE_PARTICLE ? "particle" : "cell");
+  cJSON_AddStringToObject(o, "scheme", vs->sc.scheme == MPM_SCHEME_MUSL ? "musl" : "usl");
   cJSON_AddNumberToObject(o, "separation_threshold", vs->sc.sep_threshold);
   cJSON_AddBoolToObject(o, "complete", u->complete);
   if (errmsg && errmsg[0])
@@ -228,13 +226,9 @@ int ver_run(const ver_scene *vs, const ver_run_opts *o, ver_summary *u, char *er
     snprintf(old, sizeof old, "%s/summary.json", o->outdir);
     remove(old);
   }
-#ifdef _OPENMP
-  if (o->threads > 0)
-    omp_set_num_threads(o->threads);
-#endif
   mpm_sim *s;
   char kerr[512];
-  mpm_status st = mpm_sim_alloc(sc, &s, kerr, sizeof kerr);
+  mpm_status st = mpm_sim_alloc(sc, o->threads, &s, kerr, sizeof kerr);
   if (st != MPM_OK) {
     snprintf(err, errlen, "%s: %s", vs->path, kerr);
     return st == MPM_EINVAL ? 2 : 1;

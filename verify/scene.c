@@ -12,7 +12,7 @@
 
 #include "scene.h"
 
-typedef enum { K_DBL, K_INT, K_LE, K_LIST } ktype;
+typedef enum { K_DBL, K_INT, K_LE, K_SCHEME, K_LIST } ktype;
 
 /* Range kinds: (lo, hi) open, [lo, hi) half open, etc. encoded by flags. */
 enum { LO_OPEN = 1, LO_CLOSED = 2, HI_OPEN = 4, HI_CLOSED = 8 };
@@ -49,14 +49,15 @@ static const keydef keys[] = {
   {"imperfection", "y", K_DBL, OFF(imp_y), 0, 0, 0, 0, -1, "a number (default: H / 2)"},
   {"grid", "h", K_DBL, OFF(h), 1, 0, 0, LO_OPEN, 0, "> 0, dividing L and H"},
   {"grid", "ppc", K_INT, OFF(ppc), 1, 1, 1024, LO_CLOSED | HI_CLOSED, 0, "a perfect square: 1, 4, 9, ..."},
-  {"grid", "pad", K_INT, OFF(pad), 0, 1, 1000, LO_CLOSED | HI_CLOSED, 1, "an integer >= 1"},
+  {"grid", "margin", K_DBL, OFF(margin), 0, 0, 0, LO_CLOSED, 0, ">= 0: empty space around the bar, a length (one cell is always added)"},
   {"time", "dt", K_DBL, OFF(dt), 1, 0, 0, LO_OPEN, 0, "> 0 and below the CFL bound h / c"},
+  {"time", "scheme", K_SCHEME, OFF(scheme), 0, 0, 0, 0, MPM_SCHEME_USL, "usl (the paper) or musl"},
   {"loading", "speed", K_DBL, OFF(speed), 1, 0, 0, LO_OPEN, 0, "> 0"},
   {"run", "end_delta", K_DBL, OFF(end_delta), 1, 0, 0, LO_OPEN, 0, "> 0"},
   {"run", "stop_margin", K_DBL, OFF(stop_margin), 0, 0, 0, LO_CLOSED, 0.1, ">= 0 (0: run to end_delta)"},
   {"run", "sep_load", K_DBL, OFF(sep_load_frac), 0, 0, 1, LO_OPEN | HI_OPEN, 0.02, "in (0, 1)"},
   {"output", "snapshots", K_LIST, 0, 0, 0, 0, LO_CLOSED, 0, "a comma-separated list of end displacements >= 0"},
-  {"output", "interval", K_DBL, 0, 0, 0, 0, LO_OPEN, -1, "> 0 (default: end_delta / 2000)"},
+  {"output", "interval", K_DBL, 0, 0, 0, 0, LO_OPEN, -1, "> 0 (default: 0.0005)"},
 };
 #define NKEYS (int)(sizeof keys / sizeof keys[0])
 
@@ -111,10 +112,12 @@ static int set_key(ver_scene *vs, int ki, const char *value, int line, char *err
   char at[600];
   where(vs, line, at, sizeof at);
   char *base = (char *)&vs->sc;
-  if (k->type == K_LE) {
+  if (k->type == K_LE || k->type == K_SCHEME) {
     int mode;
-    if (!strcmp(value, "cell")) mode = MPM_LE_CELL;
-    else if (!strcmp(value, "particle")) mode = MPM_LE_PARTICLE;
+    if (k->type == K_LE && !strcmp(value, "cell")) mode = MPM_LE_CELL;
+    else if (k->type == K_LE && !strcmp(value, "particle")) mode = MPM_LE_PARTICLE;
+    else if (k->type == K_SCHEME && !strcmp(value, "usl")) mode = MPM_SCHEME_USL;
+    else if (k->type == K_SCHEME && !strcmp(value, "musl")) mode = MPM_SCHEME_MUSL;
     else {
       snprintf(err, errlen, "%s: %s.%s: '%s' is not allowed (%s)", at, k->section, k->key, value, k->allowed);
       return 2;
@@ -313,7 +316,7 @@ int ver_scene_validate(ver_scene *vs, char *err, size_t errlen)
   if (!vs->seen[kidx("imperfection", "y")])
     sc->imp_y = 0.5 * sc->H;
   if (vs->interval <= 0)
-    vs->interval = sc->end_delta / 2000.0;
+    vs->interval = 0.0005;
   /* Rules that involve two keys: h divides L and H, ppc is a square, CFL. */
   const int hi = kidx("grid", "h");
   where(vs, vs->line[hi], at, sizeof at);

@@ -1,0 +1,71 @@
+/*
+ * mpm_sort.c - keeping particles sorted by cell, and the strips that let the
+ * particle-to-grid scatter run on several threads with no atomics and a summation
+ * order that does not depend on the number of threads.
+ *
+ * Cells are numbered column by column (key = i * ncy + j), like the nodes, so a sweep
+ * over sorted particles walks the nodal arrays forward.  Columns are grouped into strips
+ * of MPM_STRIP; a strip's particles write to the node columns of the strip plus one on
+ * each side, as they may drift by up to a cell between sorts.  Strips of one colour
+ * (even or odd) are then at least MPM_STRIP - 2 > 0 columns apart and never share a
+ * node, so each colour runs in parallel; each node receives its sums in a fixed order
+ * (its even strip, then its odd strip, each in particle order) whatever the threads.
+ * A particle that drifts further is caught in the grid-to-particle pass (resort flag).
+ */
+#include <string.h>
+
+#include "mpm.h"
+
+_Static_assert(MPM_STRIP >= 3, "strips must be 3 columns or wider for the colouring to be safe");
+
+static void permute_d(double **a, double **scratch, const uint32_t *perm, size_t n)
+{
+  double *src = *a, *dst = *scratch;
+  for (size_t k = 0; k < n; k++)
+    dst[k] = src[perm[k]];
+  *a = dst;
+  *scratch = src;
+}
+
+static void permute_u8(uint8_t **a, uint8_t **scratch, const uint32_t *perm, size_t n)
+{
+  uint8_t *src = *a, *dst = *scratch;
+  for (size_t k = 0; k < n; k++)
+    dst[k] = src[perm[k]];
+  *a = dst;
+  *scratch = src;
+}
+
+void mpm_sim_sort(mpm_sim *s)
+{
+  mpm_particles *p = s->p;
+  const mpm_grid *g = s->g;
+  const size_t n = p->n, ncell = (size_t)g->ncx * (size_t)g->ncy;
+  const double ih = 1.0 / g->h;
+  memset(s->count, 0, (ncell + 1) * sizeof(size_t));
+  for (size_t k = 0; k < n; k++) {
+    /* Outside the grid (caught by the step) or not finite: clamp, only to sort. */
+    double fx = (p->x[k] - g->ox) * ih, fy = (p->y[k] - g->oy) * ih;
+    fx = fx >= 0.0 ? (fx < g->ncx ? fx : g->ncx - 1) : 0.0;
+    fy = fy >= 0.0 ? (fy < g->ncy ? fy : g->ncy - 1) : 0.0;
+    const uint32_t key = (uint32_t)((size_t)fx * (size_t)g->ncy + (size_t)fy);
+    s->key[k] = key;
+    s->count[key + 1]++;
+  }
+  for (size_t c = 0; c < ncell; c++)
+    s->count[c + 1] += s->count[c];
+  /* count[c] is now the first slot of cell c */
+  for (int q = 0; q <= s->nstrip; q++) {
+    const size_t col = (size_t)q * MPM_STRIP;
+    s->strip_start[q] = col >= (size_t)g->ncx ? n : s->count[col * (size_t)g->ncy];
+  }
+  for (size_t k = 0; k < n; k++)
+    s->perm[s->count[s->key[k]]++] = (uint32_t)k;
+  double **dbl[] = {&p->x, &p->y, &p->x0, &p->y0, &p->vx, &p->vy, &p->m, &p->V, &p->sxx,
+                    &p->syy, &p->sxy, &p->lam, &p->upn, &p->upt, &p->wcoh};
+  for (size_t f = 0; f < sizeof dbl / sizeof dbl[0]; f++)
+    permute_d(dbl[f], &s->scratch, s->perm, n);
+  permute_u8(&p->mat, &s->scratch8, s->perm, n);
+  permute_u8(&p->sep, &s->scratch8, s->perm, n);
+  s->resort = 0;
+}

@@ -1,0 +1,109 @@
+/*
+ * report.h - private to `delam report` (cmd_report.c, report_run.c, report_data.c):
+ * the cases the figures need, how they are run, and what is measured from them.
+ */
+#ifndef DELAM_REPORT_H
+#define DELAM_REPORT_H
+
+#include <stddef.h>
+
+#include "ana.h"
+
+#define REP_PATH 1024
+#define REP_MAX_CASES 160
+
+/* Which figure a case feeds (bit mask). */
+enum {
+  REP_PIC = 1,      /* particle pictures (full scene run, all snapshots)       */
+  REP_SWEEP = 2,    /* h x ppc sweep: convergence and work-precision          */
+  REP_STAB = 4,     /* time-step sweep                                        */
+  REP_SNAP = 8,     /* snapback scenes                                        */
+  REP_SEP = 16,     /* separation threshold                                   */
+  REP_SCHEME = 32,  /* usl vs musl                                            */
+};
+
+/* Outcome of a time-step sweep point. */
+enum { REP_STABLE = 0, REP_NOISY = 1, REP_BLOWN = 2 };
+
+typedef struct {
+  /* what to run */
+  char id[96];          /* case id: <scene>-h<h>-ppc<n>[-u<until>][-dt<dt>][-<tag>]          */
+  char scene[32];       /* scene name, data/scenes/<scene>.ini                               */
+  double h;             /* grid spacing                                                      */
+  int ppc;              /* particles per cell                                                */
+  double dt;            /* time step; 0: the scene's, scaled with h                          */
+  double until;         /* --until; 0: the scene's stop rule                                  */
+  char set[2][64];      /* --set overrides                                                    */
+  int nset;
+  int allow_unstable;   /* pass --allow-unstable; a failed run is then a result, not an error */
+  int role;             /* REP_* mask                                                         */
+  double tag;           /* role-specific: dt / dt_crit, separation threshold, ...            */
+  double cost;          /* estimated particle-updates, to start the longest runs first       */
+  /* where its results are and how the run ended */
+  char dir[REP_PATH];   /* folder with summary.json, load.csv, snapshots                      */
+  int have;             /* 1 if dir holds a summary.json                                     */
+  int reused;           /* 1 if taken from the cache or --from                               */
+  int exit_status;      /* of `delam run` (0 complete, 1 failed, 2 bad input); -1 unknown    */
+  /* from summary.json */
+  int complete;
+  double peak_P, delta_peak, delta_sep, k_elastic, D_final, W_ext_final, energy_residual;
+  double delta_end, cpu_s, wall_s, updates_per_s, dt_used;
+  long steps;
+  double particles;
+  char error[256];      /* summary.json "error", if any                                       */
+  /* measured here against the analytic bar */
+  ana_bar bar;          /* the scene's analytic bar                                          */
+  int bar_ok;
+  double curve_err;     /* RMS (P - P_ana) / Pmax over [0, cmp_end] (NaN if no rows)          */
+  double max_dev;       /* max |P - P_ana| / Pmax over the same range                         */
+  double cmp_end;       /* the range of the comparison                                        */
+  double diss_err;      /* D_final / D_sep(analytic) - 1                                      */
+  double k_soft;        /* least-squares softening slope between 0.8 and 0.3 of the peak     */
+  double drop_width;    /* delta interval in which P fell from 0.9 to 0.1 of its peak; NaN    */
+  double max_absP;      /* largest |P| in load.csv (blow-up test)                             */
+  int rows;             /* rows of load.csv read                                              */
+} rep_case;
+
+typedef struct {
+  rep_case c[REP_MAX_CASES];
+  int n;
+  char exe[REP_PATH];      /* the delam binary (/proc/self/exe)                 */
+  char scenes[REP_PATH];   /* folder of the scene files                         */
+  char cache[REP_PATH];    /* out/report                                        */
+  char from[REP_PATH];     /* --from folder or ""                               */
+  char out[REP_PATH];      /* reports/out                                       */
+  char gpdir[REP_PATH];    /* reports (the .gp scripts)                         */
+  int jobs;                /* children at once                                  */
+  int rerun;               /* ignore cached results                             */
+  int have_musl;           /* the scene files accept time.scheme=musl           */
+} rep_ctx;
+
+/* report_run.c */
+int ver_report_mkdirs(const char *path);
+/* Adds a case (id made from the parameters); returns its index or -1 if full. */
+int ver_report_add(rep_ctx *r, const char *scene, double h, int ppc, double dt, double until,
+                   const char *set1, const char *set2, int role, double tag);
+int ver_report_find(const rep_ctx *r, const char *id);
+/* Looks for results (from, then cache), runs the missing cases jobs at a time with
+ * progress on stderr.  Returns the number of cases that could not be run at all. */
+int ver_report_run_cases(rep_ctx *r);
+/* Runs the n commands argvs[i] in folder cwd (NULL: here) with output to logs[i], up to
+ * jobs at once, one progress line per finished command on stderr; status[i] gets the
+ * exit status (-1 if it could not start). */
+void ver_report_spawn_all(char ***argvs, const char *cwd, char **logs, char **names, int n, int jobs,
+                          int *status, const char *what);
+double ver_report_now(void);
+
+/* report_data.c */
+/* Reads summary.json of c->dir into *c; 0 if read. */
+int ver_report_read_summary(rep_case *c);
+/* Sets up the analytic bar of the case's scene and measures the load curve. */
+void ver_report_measure(const rep_ctx *r, rep_case *c);
+/* Load rows of a case: delta and P (malloc'd, caller frees); returns the count. */
+int ver_report_load(const rep_case *c, double **delta, double **P);
+/* Reads columns from a snapshot CSV by header name; returns the row count (0 if none). */
+int ver_report_snapshot(const char *path, const char *const *cols, int ncol, double **out);
+/* Least-squares slope of log y against log x over n points with x, y > 0. */
+double ver_report_order(const double *x, const double *y, int n, double *logc);
+
+#endif

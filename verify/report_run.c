@@ -1,0 +1,360 @@
+/*
+ * report_run.c - the runs behind `delam report`: the case table, the result cache
+ * (out/report/<case-id>/, reused when its summary.json says "complete": true), and a
+ * small process pool that runs `delam run` (or gnuplot) children a few at a time.
+ *
+ * Children are started with fork + exec rather than posix_spawn because gnuplot has
+ * to run inside the output folder (chdir between the two); each child writes to its
+ * own log file so that the parent's stderr carries only the progress lines.
+ */
+#include <errno.h>
+#include <fcntl.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <sys/types.h>
+#include <sys/wait.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "report.h"
+#include "scene.h"
+
+double ver_report_now(void)
+{
+  struct timespec ts;
+  clock_gettime(CLOCK_MONOTONIC, &ts);
+  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/* mkdir -p; 0 on success. */
+int ver_report_mkdirs(const char *path)
+{
+  char buf[REP_PATH];
+  if (snprintf(buf, sizeof buf, "%s", path) >= (int)sizeof buf)
+    return -1;
+  for (char *p = buf + 1; *p; p++) {
+    if (*p != '/')
+      continue;
+    *p = '\0';
+    if (mkdir(buf, 0777) != 0 && errno != EEXIST)
+      return -1;
+    *p = '/';
+  }
+  if (mkdir(buf, 0777) != 0 && errno != EEXIST)
+    return -1;
+  return 0;
+}
+
+/* "decohesion.separation=0.8" -> "-separation0.8" appended to id. */
+static void id_suffix(char *id, size_t len, const char *set)
+{
+  const char *dot = strchr(set, '.'), *eq = strchr(set, '=');
+  if (!dot || !eq || eq < dot)
+    return;
+  const size_t n = strlen(id);
+  snprintf(id + n, len - n, "-%.*s%s", (int)(eq - dot - 1), dot + 1, eq + 1);
+}
+
+int ver_report_add(rep_ctx *r, const char *scene, double h, int ppc, double dt, double until,
+                   const char *set1, const char *set2, int role, double tag)
+{
+  char id[96];
+  snprintf(id, sizeof id, "%s-h%g-ppc%d", scene, h, ppc);
+  if (until > 0)
+    snprintf(id + strlen(id), sizeof id - strlen(id), "-u%g", until);
+  if (dt > 0)
+    snprintf(id + strlen(id), sizeof id - strlen(id), "-dt%.4g", dt);
+  if (set1)
+    id_suffix(id, sizeof id, set1);
+  if (set2)
+    id_suffix(id, sizeof id, set2);
+  const int k = ver_report_find(r, id);
+  if (k >= 0) {
+    r->c[k].role |= role;
+    return k;
+  }
+  if (r->n >= REP_MAX_CASES)
+    return -1;
+  rep_case *c = &r->c[r->n];
+  memset(c, 0, sizeof *c);
+  snprintf(c->id, sizeof c->id, "%s", id);
+  snprintf(c->scene, sizeof c->scene, "%s", scene);
+  c->h = h;
+  c->ppc = ppc;
+  c->dt = dt;
+  c->until = until;
+  if (set1)
+    snprintf(c->set[c->nset++], sizeof c->set[0], "%s", set1);
+  if (set2)
+    snprintf(c->set[c->nset++], sizeof c->set[0], "%s", set2);
+  c->allow_unstable = (role & REP_STAB) != 0;
+  c->role = role;
+  c->tag = tag;
+  c->exit_status = -1;
+  c->curve_err = c->max_dev = c->diss_err = c->k_soft = c->drop_width = NAN;
+  /* cost: particles x steps, from the scene file (L, H, its dt scaled with h, its end) */
+  char path[REP_PATH + 64], err[256];
+  ver_scene vs;
+  snprintf(path, sizeof path, "%s/%s.ini", r->scenes, scene);
+  double L = 192, H = 32, dts = 0.0125 * h, end = 2, speed = 0.001;
+  if (ver_scene_load(path, &vs, err, sizeof err) == 0) {
+    L = vs.sc.L;
+    H = vs.sc.H;
+    dts = vs.sc.dt * h / vs.sc.h;
+    end = vs.sc.end_delta;
+    speed = vs.sc.speed;
+  }
+  if (dt > 0)
+    dts = dt;
+  if (until > 0)
+    end = until;
+  c->cost = L * H / (h * h) * ppc * end / (speed * dts);
+  return r->n++;
+}
+
+int ver_report_find(const rep_ctx *r, const char *id)
+{
+  for (int i = 0; i < r->n; i++)
+    if (!strcmp(r->c[i].id, id))
+      return i;
+  return -1;
+}
+
+static int read_exit_status(const char *dir)
+{
+  char p[REP_PATH + 32];
+  snprintf(p, sizeof p, "%s/exit-status", dir);
+  FILE *f = fopen(p, "r");
+  int s = -1;
+  if (f) {
+    if (fscanf(f, "%d", &s) != 1)
+      s = -1;
+    fclose(f);
+  }
+  return s;
+}
+
+static void write_exit_status(const char *dir, int s)
+{
+  char p[REP_PATH + 32];
+  snprintf(p, sizeof p, "%s/exit-status", dir);
+  FILE *f = fopen(p, "w");
+  if (f) {
+    fprintf(f, "%d\n", s);
+    fclose(f);
+  }
+}
+
+/* Uses the results in dir if they are complete (or, for a deliberately unstable run,
+ * if the run ended at all).  1 if taken. */
+static int try_reuse(rep_case *c, const char *dir)
+{
+  char save[REP_PATH];
+  snprintf(save, sizeof save, "%s", c->dir);
+  snprintf(c->dir, sizeof c->dir, "%s", dir);
+  if (ver_report_read_summary(c) == 0) {
+    const int st = read_exit_status(dir);
+    if (c->complete || (c->allow_unstable && st >= 0)) {
+      c->have = 1;
+      c->reused = 1;
+      c->exit_status = c->complete ? 0 : st;
+      return 1;
+    }
+  }
+  snprintf(c->dir, sizeof c->dir, "%s", save);
+  return 0;
+}
+
+static pid_t start_child(char *const argv[], const char *cwd, const char *log)
+{
+  const pid_t pid = fork();
+  if (pid != 0)
+    return pid; /* parent (or -1) */
+  if (cwd && chdir(cwd) != 0)
+    _exit(126);
+  const int fd = open(log, O_WRONLY | O_CREAT | O_TRUNC, 0666);
+  if (fd >= 0) {
+    dup2(fd, 1);
+    dup2(fd, 2);
+    close(fd);
+  }
+  execvp(argv[0], argv);
+  _exit(127);
+}
+
+static int exit_code(int ws)
+{
+  if (WIFEXITED(ws))
+    return WEXITSTATUS(ws);
+  return WIFSIGNALED(ws) ? 128 + WTERMSIG(ws) : -1;
+}
+
+void ver_report_spawn_all(char ***argvs, const char *cwd, char **logs, char **names, int n, int jobs,
+                          int *status, const char *what)
+{
+  pid_t *pid = calloc((size_t)n + 1, sizeof *pid);
+  double *t0 = calloc((size_t)n + 1, sizeof *t0);
+  if (!pid || !t0) {
+    free(pid);
+    free(t0);
+    for (int i = 0; i < n; i++)
+      status[i] = -1;
+    return;
+  }
+  int next = 0, running = 0, done = 0;
+  while (done < n) {
+    while (running < jobs && next < n) {
+      t0[next] = ver_report_now();
+      pid[next] = start_child(argvs[next], cwd, logs[next]);
+      if (pid[next] < 0) {
+        status[next] = -1;
+        done++;
+      } else {
+        running++;
+      }
+      next++;
+    }
+    if (!running)
+      continue;
+    int ws;
+    const pid_t p = waitpid(-1, &ws, 0);
+    if (p < 0) {
+      if (errno == EINTR)
+        continue;
+      break;
+    }
+    for (int i = 0; i < next; i++)
+      if (pid[i] == p) {
+        status[i] = exit_code(ws);
+        pid[i] = 0;
+        running--;
+        done++;
+        fprintf(stderr, "delam report: [%2d/%d] %s %s: %s (%.1f s)\n", done, n, what, names[i],
+                status[i] == 0 ? "ok" : "failed", ver_report_now() - t0[i]);
+      }
+  }
+  free(pid);
+  free(t0);
+}
+
+static int by_cost_desc(const void *a, const void *b)
+{
+  const double x = (*(rep_case *const *)a)->cost, y = (*(rep_case *const *)b)->cost;
+  return (x < y) - (x > y);
+}
+
+int ver_report_run_cases(rep_ctx *r)
+{
+  rep_case *todo[REP_MAX_CASES];
+  int ntodo = 0, reused = 0;
+  for (int i = 0; i < r->n; i++) {
+    rep_case *c = &r->c[i];
+    if (c->have)
+      continue;
+    char d[REP_PATH];
+    if (r->from[0]) {
+      snprintf(d, sizeof d, "%.800s/%.150s", r->from, c->id);
+      if (try_reuse(c, d)) {
+        reused++;
+        continue;
+      }
+    }
+    snprintf(d, sizeof d, "%.800s/%.150s", r->cache, c->id);
+    if (!r->rerun && try_reuse(c, d)) {
+      reused++;
+      continue;
+    }
+    snprintf(c->dir, sizeof c->dir, "%s", d);
+    todo[ntodo++] = c;
+  }
+  double total = 0;
+  for (int i = 0; i < ntodo; i++)
+    total += todo[i]->cost;
+  fprintf(stderr, "delam report: %d cases, %d reused, %d to run (%.2g particle-updates) with %d at a time\n",
+          r->n, reused, ntodo, total, r->jobs);
+  if (!ntodo)
+    return 0;
+  /* longest first, so that the last ones to finish are short */
+  qsort(todo, (size_t)ntodo, sizeof todo[0], by_cost_desc);
+
+  /* argument vectors: every string lives in one block per case */
+  enum { NARG = 32, ALEN = 160 };
+  char *store = calloc((size_t)ntodo, NARG * ALEN);
+  char ***argvs = calloc((size_t)ntodo, sizeof *argvs);
+  char **argvbuf = calloc((size_t)ntodo * (NARG + 1), sizeof *argvbuf);
+  char **logs = calloc((size_t)ntodo, sizeof *logs);
+  char **names = calloc((size_t)ntodo, sizeof *names);
+  char *logstore = calloc((size_t)ntodo, REP_PATH + 16);
+  int *status = calloc((size_t)ntodo, sizeof *status);
+  int failed = 0;
+  if (!store || !argvs || !argvbuf || !logs || !names || !logstore || !status) {
+    fprintf(stderr, "delam report: out of memory\n");
+    failed = ntodo;
+    goto out;
+  }
+  for (int i = 0; i < ntodo; i++) {
+    rep_case *c = todo[i];
+    char **av = argvbuf + (size_t)i * (NARG + 1);
+    char *s = store + (size_t)i * NARG * ALEN;
+    int k = 0;
+#define ARG(...) (snprintf(s + (size_t)k * ALEN, ALEN, __VA_ARGS__), av[k] = s + (size_t)k * ALEN, k++)
+    ARG("%s", r->exe);
+    ARG("run");
+    ARG("%.100s/%.40s.ini", r->scenes, c->scene);
+    ARG("--h");
+    ARG("%.17g", c->h);
+    ARG("--ppc");
+    ARG("%d", c->ppc);
+    if (c->dt > 0) {
+      ARG("--dt");
+      ARG("%.17g", c->dt);
+    }
+    if (c->until > 0) {
+      ARG("--until");
+      ARG("%.17g", c->until);
+    }
+    for (int j = 0; j < c->nset; j++) {
+      ARG("--set");
+      ARG("%s", c->set[j]);
+    }
+    if (c->allow_unstable)
+      ARG("--allow-unstable");
+    ARG("--threads");
+    ARG("1");
+    ARG("--quiet");
+    ARG("--out");
+    ARG("%.150s", c->dir);
+#undef ARG
+    av[k] = NULL;
+    argvs[i] = av;
+    /* the log sits beside the run's files; the folder must exist before the child opens it */
+    ver_report_mkdirs(c->dir);
+    logs[i] = logstore + (size_t)i * (REP_PATH + 16);
+    snprintf(logs[i], REP_PATH + 16, "%s/run.log", c->dir);
+    names[i] = c->id;
+  }
+  ver_report_spawn_all(argvs, NULL, logs, names, ntodo, r->jobs, status, "run");
+  for (int i = 0; i < ntodo; i++) {
+    rep_case *c = todo[i];
+    c->exit_status = status[i];
+    write_exit_status(c->dir, status[i]);
+    if (ver_report_read_summary(c) == 0)
+      c->have = 1;
+    else
+      failed++;
+    if (status[i] != 0 && !c->allow_unstable)
+      fprintf(stderr, "delam report: %s: delam run exit status %d (see %s)\n", c->id, status[i], logs[i]);
+  }
+out:
+  free(store);
+  free(argvs);
+  free(argvbuf);
+  free(logs);
+  free(names);
+  free(logstore);
+  free(status);
+  return failed;
+}
