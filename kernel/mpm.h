@@ -118,6 +118,8 @@ typedef struct {
   double *lam;             /* decohesion parameter                                     */
   double *upn, *upt;       /* displacement jump, n and t components                    */
   double *wcoh;            /* traction work on the failure plane so far (energy)       */
+  double *str;             /* remaining strength 1 - lambda^q (eq. 23), 0 once separated:
+                              lets the step test F <= 0 without a pow per particle     */
   uint8_t *mat;            /* index into the material table                            */
   uint8_t *sep;            /* 1 once separated                                         */
 } mpm_particles;
@@ -132,6 +134,7 @@ typedef struct {
   int ncx, ncy;            /* cells in x and y                                         */
   int nnx, nny;            /* nodes in x and y (ncx+1, ncy+1)                          */
   double ox, oy, h;        /* origin and spacing                                       */
+  double ih;               /* 1 / h                                                    */
   double *m;               /* nodal mass                                               */
   double *px, *py;         /* momentum, then Lagrangian velocity v^L after the update  */
   double *fx, *fy;         /* internal force, then v^L - v after the update            */

@@ -91,6 +91,12 @@ void mpm_material_init(mpm_material *m, const mpm_scene *sc, double snf, double 
   m->sep_threshold = sc->sep_threshold;
 }
 
+/* lambda^q, exact and cheap for the paper's q = 1. */
+static inline double powq(double lam, double q)
+{
+  return q == 1.0 ? lam : pow(lam, q);
+}
+
 /* Stress in the n-t frame: (s_nn, s_tt, s_nt). */
 typedef struct {
   double nn, tt, nt;
@@ -123,7 +129,7 @@ static double eff_traction(const mpm_material *m, double sn, double st)
 double mpm_dcoh_F(const mpm_material *m, double sxx, double syy, double sxy, double lam)
 {
   const nt_stress s = to_nt(m, sxx, syy, sxy);
-  return eff_traction(m, s.nn, s.nt) - (1.0 - pow(lam, m->q));
+  return eff_traction(m, s.nn, s.nt) - (1.0 - powq(lam, m->q));
 }
 
 /* The consistency function along the frozen flow direction:
@@ -139,7 +145,7 @@ static double phi(double dl, void *vp)
 {
   const phi_ctx *c = vp;
   return eff_traction(c->m, c->sn - dl * c->smn, c->st - dl * c->smt) - 1.0 +
-         pow(c->lam + dl, c->m->q);
+         powq(c->lam + dl, c->m->q);
 }
 
 /* d phi / d dl, for Newton (se is smooth away from sn = 0 and se = 0). */
@@ -254,7 +260,7 @@ mpm_status mpm_dcoh_update(const mpm_material *m, const mpm_dstate *in, const do
     info->path = MPM_DPATH_OPEN;
   } else {
     const double se = eff_traction(m, tr.nn, tr.nt);
-    const double c = se - (1.0 - pow(in->lam, m->q));             /* eq. 23 */
+    const double c = se - (1.0 - powq(in->lam, m->q));            /* eq. 23 */
     if (c <= 0.0)
       goto done;
     /* Flow direction at the trial state (eqs. 24, 26). */

@@ -20,6 +20,7 @@ mpm_grid *mpm_grid_alloc(int ncx, int ncy, double ox, double oy, double h)
   g->ox = ox;
   g->oy = oy;
   g->h = h;
+  g->ih = 1.0 / h;
   const size_t nn = (size_t)g->nnx * (size_t)g->nny;
   g->m = calloc(nn, sizeof(double));
   g->px = calloc(nn, sizeof(double));

@@ -21,7 +21,7 @@ typedef struct {
  * the grid. */
 static inline int mpm_shape_at(const mpm_grid *g, double x, double y, mpm_shape *s)
 {
-  const double fx = (x - g->ox) / g->h, fy = (y - g->oy) / g->h;
+  const double fx = (x - g->ox) * g->ih, fy = (y - g->oy) * g->ih;
   if (!(fx >= 0.0 && fy >= 0.0 && fx < (double)g->ncx && fy < (double)g->ncy)) {
     s->n00 = 0;
     s->wx0 = s->wy0 = 1.0;

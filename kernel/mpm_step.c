@@ -66,7 +66,7 @@ static int p2g_range(mpm_grid *restrict g, const mpm_particles *restrict p, size
     }
     const double wx0 = sh.wx0, wx1 = sh.wx1, wy0 = sh.wy0, wy1 = sh.wy1;
     const double mm = p->m[k], mvx = mm * p->vx[k], mvy = mm * p->vy[k];
-    const double Vi = p->V[k] / g->h;
+    const double Vi = p->V[k] * g->ih;
     const double A = Vi * p->sxx[k], B = Vi * p->sxy[k], C = Vi * p->syy[k];
     const size_t n00 = sh.n00, n01 = n00 + 1, n10 = n00 + nny, n11 = n10 + 1;
     const double N00 = wx0 * wy0, N10 = wx1 * wy0, N01 = wx0 * wy1, N11 = wx1 * wy1;
@@ -210,34 +210,14 @@ typedef struct {
   int bad;         /* the update returned non-finite */
   int resort;      /* a particle drifted out of its strip's safe range */
   size_t bad_k;
+  double check;    /* sum of the new state: NaN if anything is not finite */
 } g2p_acc;
 
-/* The constitutive update of particle k with strain increment de (eq. 7 -> sec. 4). */
-static inline void constitutive(const mpm_sim *s, mpm_particles *restrict p, size_t k, const double de[3],
-                                mpm_dwork *dw, g2p_acc *acc)
+/* The full decohesion update of particle k (sec. 4), off the hot path. */
+static __attribute__((noinline)) void constitutive_full(const mpm_material *m, mpm_particles *restrict p,
+                                                         size_t k, const double de[3], mpm_dwork *dw,
+                                                         g2p_acc *acc)
 {
-  const mpm_material *m = &s->mat[p->mat[k]];
-  /* Elastic trial; the full update only where decohesion may act. */
-  const double sxx = p->sxx[k] + m->E1 * de[0] + m->E2 * de[1];
-  const double syy = p->syy[k] + m->E2 * de[0] + m->E1 * de[1];
-  const double sxy = p->sxy[k] + 2.0 * m->G * de[2];
-  int full = 0;
-  if (m->model != MPM_DCOH_NONE) {
-    if (p->lam[k] > 0.0 || p->sep[k]) {
-      full = 1;
-    } else {
-      const double tx = sxx * m->nx + sxy * m->ny, ty = sxy * m->nx + syy * m->ny;
-      const double sn = tx * m->nx + ty * m->ny, st = tx * m->tx + ty * m->ty;
-      const double a = sn > 0.0 ? sn / m->snf : 0.0, b = st / m->stf;
-      full = a * a + b * b > 1.0;
-    }
-  }
-  if (!full) {
-    p->sxx[k] = sxx;
-    p->syy[k] = syy;
-    p->sxy[k] = sxy;
-    return;
-  }
   const double t0 = wall();
   const mpm_dstate in = {p->sxx[k], p->syy[k], p->sxy[k], p->lam[k], p->upn[k], p->upt[k], p->sep[k]};
   mpm_dstate o;
@@ -253,11 +233,36 @@ static inline void constitutive(const mpm_sim *s, mpm_particles *restrict p, siz
   p->upn[k] = o.upn;
   p->upt[k] = o.upt;
   p->sep[k] = (uint8_t)o.sep;
+  p->str[k] = o.sep ? 0.0 : 1.0 - (m->q == 1.0 ? o.lam : pow(o.lam, m->q));
   p->wcoh[k] += info.w * p->V[k] / m->Le;
   acc->soften += info.path == MPM_DPATH_SOFTEN;
   acc->separate += info.path == MPM_DPATH_SEPARATE;
   acc->bracketed += info.bracketed;
   acc->tconst += wall() - t0;
+}
+
+/* The constitutive update of particle k with strain increment de (eq. 7 -> sec. 4):
+ * the elastic trial inline, the full update only where F > 0 may hold. */
+static inline void constitutive(const mpm_sim *s, mpm_particles *restrict p, size_t k, const double de[3],
+                                mpm_dwork *dw, g2p_acc *acc)
+{
+  const mpm_material *m = &s->mat[p->mat[k]];
+  const double sxx = p->sxx[k] + m->E1 * de[0] + m->E2 * de[1];
+  const double syy = p->syy[k] + m->E2 * de[0] + m->E1 * de[1];
+  const double sxy = p->sxy[k] + 2.0 * m->G * de[2];
+  if (m->model != MPM_DCOH_NONE) {
+    /* F <= 0 (eq. 23) as se^2 <= (1 - lambda^q)^2, with the strength cached */
+    const double tx = sxx * m->nx + sxy * m->ny, ty = sxy * m->nx + syy * m->ny;
+    const double sn = tx * m->nx + ty * m->ny, st = tx * m->tx + ty * m->ty;
+    const double a = sn > 0.0 ? sn / m->snf : 0.0, b = st / m->stf;
+    if (p->sep[k] || a * a + b * b > p->str[k] * p->str[k]) {
+      constitutive_full(m, p, k, de, dw, acc);
+      return;
+    }
+  }
+  p->sxx[k] = sxx;
+  p->syy[k] = syy;
+  p->sxy[k] = sxy;
 }
 
 /* eqs. 5-7 and the constitutive update for the particles of strip q.  USL: strain from
@@ -293,8 +298,9 @@ static void g2p_strip(mpm_sim *s, int q, int musl, mpm_dwork *dw, g2p_acc *acc)
     const double dxuy = ih * (wy0 * (b10 - b00) + wy1 * (b11 - b01));
     const double de[3] = {dt * dxux, dt * dyuy, 0.5 * dt * (dyux + dxuy)};
     constitutive(s, p, k, de, dw, acc);
-    const int col = (int)floor((p->x[k] - g->ox) * ih);
-    acc->resort |= col < lo || col > hi;
+    const double col = (p->x[k] - g->ox) * ih;
+    acc->resort |= col < lo || col >= hi + 1;
+    acc->check += p->vx[k] + p->vy[k] + p->sxx[k] + p->syy[k] + p->sxy[k];
   }
 }
 
@@ -330,12 +336,12 @@ static mpm_status g2p(mpm_sim *s, char *err, size_t errlen)
     scatter(s, 1);
     grid_musl_velocity(s);
   }
-  g2p_acc tot = {0, 0, 0, 0.0, 0, 0, 0};
+  g2p_acc tot = {0, 0, 0, 0.0, 0, 0, 0, 0.0};
 #ifdef _OPENMP
 #pragma omp parallel num_threads(s->nthreads)
 #endif
   {
-    g2p_acc acc = {0, 0, 0, 0.0, 0, 0, 0};
+    g2p_acc acc = {0, 0, 0, 0.0, 0, 0, 0, 0.0};
     mpm_dwork *dw = s->dws[thread_id()];
 #ifdef _OPENMP
 #pragma omp for schedule(dynamic, 1)
@@ -352,6 +358,7 @@ static mpm_status g2p(mpm_sim *s, char *err, size_t errlen)
       tot.bracketed += acc.bracketed;
       tot.tconst = acc.tconst > tot.tconst ? acc.tconst : tot.tconst;
       tot.resort |= acc.resort;
+      tot.check += acc.check; /* only tested for finiteness: order does not matter */
       if (acc.bad && (!tot.bad || acc.bad_k < tot.bad_k)) {
         tot.bad = 1;
         tot.bad_k = acc.bad_k;
@@ -369,12 +376,8 @@ static mpm_status g2p(mpm_sim *s, char *err, size_t errlen)
              p->x0[tot.bad_k], p->y0[tot.bad_k]);
     return MPM_ENOTFINITE;
   }
-  /* A cheap finiteness check of the state: a NaN anywhere makes the sum NaN. */
-  const mpm_particles *p = s->p;
-  double check = 0.0;
-  for (size_t k = 0; k < p->n; k++)
-    check += p->vx[k] + p->vy[k] + p->sxx[k] + p->syy[k] + p->sxy[k];
-  if (!isfinite(check)) {
+  /* A NaN anywhere in the state makes the sum NaN. */
+  if (!isfinite(tot.check)) {
     name_nonfinite(s, err, errlen);
     return MPM_ENOTFINITE;
   }

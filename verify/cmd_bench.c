@@ -1,12 +1,201 @@
-/* cmd_bench.c - `delam bench` (placeholder until its issue lands). */
+/*
+ * cmd_bench.c - `delam bench`: kernel speed on fixed cases.
+ *
+ * Each case starts from the exact quasi-static uniaxial state at 99 % of the analytic
+ * peak stress r0 (uniform sxx, the matching displacements and velocity field), so that
+ * the timed steps cross the peak and decohesion is active in them, with no untimed
+ * warm-up of tens of thousands of steps.  Reported: particles, steps, wall and CPU
+ * seconds, particle-updates per second (particles x steps / wall), the time split
+ * (sort, particle-to-grid, grid update, grid-to-particle, constitutive update) and the
+ * bytes per particle.  Reproduce a single case outside the bench with, e.g.,
+ *   /usr/bin/time -v build/delam run data/scenes/fig6.ini --h 1 --ppc 4 --until 0.1 --threads 1
+ * (its "Maximum resident set size" and "Elapsed" lines; that run includes output rows).
+ */
+#include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
 
+#include <cjson/cJSON.h>
+
+#include "ana.h"
 #include "cmd.h"
+#include "mpm.h"
+#include "scene.h"
+
+typedef struct {
+  const char *scene;
+  double h;
+  int ppc;
+  long steps;
+} bench_case;
+
+static const bench_case cases[] = {
+  {"data/scenes/fig6.ini", 2.0, 4, 4000},
+  {"data/scenes/fig6.ini", 1.0, 4, 2000},
+  {"data/scenes/fig7.ini", 2.0, 4, 4000},
+};
+
+static double now(clockid_t c)
+{
+  struct timespec ts;
+  clock_gettime(c, &ts);
+  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/* Uniform uniaxial stress sigma along x: strains sigma/E and -nu sigma/E, the left end
+ * at -delta, the right end fixed, mid-height fixed in y; velocity the loading field. */
+static void prestress(mpm_sim *s, double sigma)
+{
+  const mpm_scene *sc = &s->sc;
+  mpm_particles *p = s->p;
+  const double exx = sigma / sc->E, eyy = -sc->nu * sigma / sc->E;
+  for (size_t k = 0; k < p->n; k++) {
+    p->x[k] = p->x0[k] - (sc->L - p->x0[k]) * exx;
+    p->y[k] = p->y0[k] + (p->y0[k] - 0.5 * sc->H) * eyy;
+    p->sxx[k] = sigma;
+  }
+  s->t = sc->L * exx / sc->speed;
+  s->step = (long)floor(s->t / sc->dt);
+  s->t = s->step * sc->dt;
+}
+
+static size_t bytes_per_particle(const mpm_sim *s)
+{
+  const size_t np = s->p->n, nn = (size_t)s->g->nnx * (size_t)s->g->nny;
+  const size_t ncell = (size_t)s->g->ncx * (size_t)s->g->ncy;
+  const size_t particles = np * (16 * sizeof(double) + 2);         /* mpm_particles  */
+  const size_t sorting = np * (sizeof(double) + 1 + 2 * sizeof(uint32_t)) + (ncell + 1) * sizeof(size_t);
+  const size_t grid = nn * 5 * sizeof(double);
+  return (particles + sorting + grid + np / 2) / np;
+}
+
+static void usage(FILE *f)
+{
+  fprintf(f,
+    "usage: delam bench [--threads N] [--json] [--steps-scale X]\n"
+    "Times fixed cases (Fig. 6 at h = 2 and h = 1, Fig. 7 at h = 2, 4 particles per cell,\n"
+    "from 99 %% of the peak stress so decohesion is active) with 1 and 2 threads, or with N.\n"
+    "  --threads N      only N threads (default: 1 and 2)\n"
+    "  --json           one JSON object per line instead of the table\n"
+    "  --steps-scale X  multiply the number of steps (default 1)\n"
+    "Reproduce outside the bench: /usr/bin/time -v build/delam run data/scenes/fig6.ini \\\n"
+    "  --h 1 --ppc 4 --until 0.1 --threads 1\n");
+}
 
 int ver_cmd_bench(int argc, char **argv)
 {
-  (void)argc;
-  (void)argv;
-  fprintf(stderr, "delam bench: not implemented yet\n");
-  return 2;
+  int threads = 0, json = 0;
+  double scale = 1.0;
+  for (int i = 1; i < argc; i++) {
+    if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
+      usage(stdout);
+      return 0;
+    } else if (!strcmp(argv[i], "--json")) {
+      json = 1;
+    } else if (!strcmp(argv[i], "--threads") || !strcmp(argv[i], "--steps-scale")) {
+      char *end;
+      const double v = i + 1 < argc ? strtod(argv[i + 1], &end) : NAN;
+      if (!(i + 1 < argc) || *end || !(v > 0) || v > 1024) {
+        fprintf(stderr, "delam bench: %s needs a number > 0\n", argv[i]);
+        return 2;
+      }
+      if (argv[i][2] == 't')
+        threads = (int)v;
+      else
+        scale = v;
+      i++;
+    } else {
+      fprintf(stderr, "delam bench: unknown option '%s' (see delam bench --help)\n", argv[i]);
+      return 2;
+    }
+  }
+  const int tlist[2] = {threads ? threads : 1, 2};
+  const int ntl = threads ? 1 : 2;
+  if (!json)
+    printf("%-16s %3s %8s %6s %7s %7s %9s  %5s %5s %5s %5s %5s  %4s\n", "case", "thr", "particles", "steps",
+           "wall_s", "cpu_s", "Mupd/s", "sort%", "p2g%", "grid%", "g2p%", "cons%", "B/p");
+  for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++)
+    for (int ti = 0; ti < ntl; ti++) {
+      ver_scene vs;
+      char err[1024], set[64];
+      if (ver_scene_parse(cases[c].scene, &vs, err, sizeof err)) {
+        fprintf(stderr, "delam bench: %s (run from the source folder)\n", err);
+        return 2;
+      }
+      vs.sc.dt *= cases[c].h / vs.sc.h;
+      snprintf(set, sizeof set, "grid.h=%g", cases[c].h);
+      ver_scene_set(&vs, set, err, sizeof err);
+      snprintf(set, sizeof set, "grid.ppc=%d", cases[c].ppc);
+      ver_scene_set(&vs, set, err, sizeof err);
+      vs.sc.end_delta = 1.0;
+      if (ver_scene_validate(&vs, err, sizeof err)) {
+        fprintf(stderr, "delam bench: %s\n", err);
+        return 2;
+      }
+      ana_params ap;
+      ana_params_default(&ap);
+      ap.alpha_deg = vs.sc.alpha_deg;
+      ap.snf = vs.sc.snf;
+      ap.stf = vs.sc.stf;
+      ap.U0 = vs.sc.U0;
+      ap.s0 = vs.sc.s0;
+      ap.q = vs.sc.q;
+      ap.model = vs.sc.model;
+      ana_bar bar;
+      if (ana_bar_init(&ap, &bar, err, (int)sizeof err) != ANA_OK) {
+        fprintf(stderr, "delam bench: %s\n", err);
+        return 2;
+      }
+      mpm_sim *s;
+      if (mpm_sim_alloc(&vs.sc, tlist[ti], &s, err, sizeof err) != MPM_OK) {
+        fprintf(stderr, "delam bench: %s\n", err);
+        return 1;
+      }
+      prestress(s, 0.99 * bar.r0);
+      const long steps = (long)(cases[c].steps * scale);
+      const double w0 = now(CLOCK_MONOTONIC), c0 = now(CLOCK_PROCESS_CPUTIME_ID);
+      for (long k = 0; k < steps; k++)
+        if (mpm_sim_step(s, err, sizeof err) != MPM_OK) {
+          fprintf(stderr, "delam bench: %s\n", err);
+          mpm_sim_free(s);
+          return 1;
+        }
+      const double wall = now(CLOCK_MONOTONIC) - w0, cpu = now(CLOCK_PROCESS_CPUTIME_ID) - c0;
+      const double ups = (double)s->p->n * (double)steps / wall;
+      double split = 0.0;
+      for (int q = 0; q < 5; q++)
+        split += s->time_split[q];
+      char id[96];
+      snprintf(id, sizeof id, "%s-h%g-ppc%d", vs.name, cases[c].h, cases[c].ppc);
+      const size_t bpp = bytes_per_particle(s);
+      if (json) {
+        cJSON *o = cJSON_CreateObject();
+        cJSON_AddStringToObject(o, "case", id);
+        cJSON_AddNumberToObject(o, "threads", tlist[ti]);
+        cJSON_AddNumberToObject(o, "particles", (double)s->p->n);
+        cJSON_AddNumberToObject(o, "steps", (double)steps);
+        cJSON_AddNumberToObject(o, "wall_s", wall);
+        cJSON_AddNumberToObject(o, "cpu_s", cpu);
+        cJSON_AddNumberToObject(o, "updates_per_s", ups);
+        const char *names[5] = {"sort_s", "p2g_s", "grid_s", "g2p_s", "constitutive_s"};
+        for (int q = 0; q < 5; q++)
+          cJSON_AddNumberToObject(o, names[q], s->time_split[q]);
+        cJSON_AddNumberToObject(o, "decohesion_updates", (double)(s->n_soften + s->n_separate));
+        cJSON_AddNumberToObject(o, "bytes_per_particle", (double)bpp);
+        char *txt = cJSON_PrintUnformatted(o);
+        printf("%s\n", txt);
+        free(txt);
+        cJSON_Delete(o);
+      } else {
+        printf("%-16s %3d %8zu %6ld %7.2f %7.2f %9.1f  %5.1f %5.1f %5.1f %5.1f %5.1f  %4zu\n", id, tlist[ti],
+               s->p->n, steps, wall, cpu, ups / 1e6, 100 * s->time_split[0] / split,
+               100 * s->time_split[1] / split, 100 * s->time_split[2] / split, 100 * s->time_split[3] / split,
+               100 * s->time_split[4] / split, bpp);
+      }
+      fflush(stdout);
+      mpm_sim_free(s);
+    }
+  return 0;
 }
