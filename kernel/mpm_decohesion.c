@@ -249,6 +249,10 @@ mpm_status mpm_dcoh_update(const mpm_material *m, const mpm_dstate *in, const do
   out->sxy = in->sxy + 2.0 * m->G * de[2];
   if (m->model == MPM_DCOH_NONE)
     goto done;
+  /* Non-finite input never reaches the root solver (GSL's default handler aborts). */
+  if (!isfinite(out->sxx) || !isfinite(out->syy) || !isfinite(out->sxy) || !isfinite(in->lam) ||
+      !isfinite(in->upn) || !isfinite(in->upt))
+    return MPM_ENOTFINITE;
 
   const nt_stress s_in = to_nt(m, in->sxx, in->syy, in->sxy);
   const nt_stress tr = to_nt(m, out->sxx, out->syy, out->sxy);
