@@ -1,0 +1,253 @@
+/*
+ * test_ver_checks.c - the measuring helpers of `delam verify` (verify_checks.c) on
+ * synthetic data whose answers are known by construction: exact lines, a made-up
+ * load-deflection curve with a known softening slope, particle bands of known width
+ * and angle, errors C h^p of known order.  Every degenerate input is hit on purpose.
+ */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "verify.h"
+
+#define PI 3.14159265358979323846
+
+static void assert_rel(double got, double want, double tol, const char *what)
+{
+  const double err = want == 0.0 ? fabs(got) : fabs(got - want) / fabs(want);
+  if (!(err <= tol))
+    fail_msg("%s: got %.10g, want %.10g (rel err %.3g > %.3g)", what, got, want, err, tol);
+}
+
+static void test_ver_checks_fit_line_exact(void **state)
+{
+  (void)state;
+  double x[5], y[5], s, b;
+  for (int i = 0; i < 5; i++) {
+    x[i] = 0.1 * i;
+    y[i] = -170.5 * x[i] + 3.25;
+  }
+  assert_int_equal(ver_fit_line(x, y, 5, &s, &b), 0);
+  assert_rel(s, -170.5, 1e-12, "slope");
+  assert_rel(b, 3.25, 1e-12, "intercept");
+  /* degenerate: one point, all x equal */
+  assert_int_equal(ver_fit_line(x, y, 1, &s, &b), -1);
+  const double xs[3] = {2, 2, 2};
+  assert_int_equal(ver_fit_line(xs, y, 3, &s, &b), -1);
+}
+
+/* A bar curve: elastic slope 170.67 to P = 32 at delta 0.1875, then linear softening
+ * with slope -170.67 to zero, then zero.  The fit over 0.8-0.2 of the peak must give
+ * the softening slope exactly, ignoring the elastic rows and the zero tail. */
+static void test_ver_checks_softening_slope_bar(void **state)
+{
+  (void)state;
+  enum { N = 600 };
+  double d[N], P[N];
+  const double k = 512.0 / 3.0, dp = 0.1875;
+  for (int i = 0; i < N; i++) {
+    d[i] = 0.001 * (i + 1);
+    P[i] = d[i] <= dp ? k * d[i] : fmax(0.0, 32.0 - k * (d[i] - dp));
+  }
+  assert_rel(ver_softening_slope(d, P, N, 0.8, 0.2), -k, 1e-9, "softening slope");
+  /* a late bump above 0.2 peak after the load fell below it is not part of the fit */
+  P[N - 5] = 20.0;
+  assert_rel(ver_softening_slope(d, P, N, 0.8, 0.2), -k, 1e-9, "softening slope, late bump");
+  /* no softening rows: NaN */
+  double Pe[N];
+  for (int i = 0; i < N; i++)
+    Pe[i] = k * d[i];
+  assert_true(isnan(ver_softening_slope(d, Pe, N, 0.8, 0.2)));
+  assert_true(isnan(ver_softening_slope(d, P, 0, 0.8, 0.2)));
+}
+
+/* A grid of particles on [0,192]x[0,32], h = 4, ppc = 4 (offsets h/4, 3h/4); the band
+ * is the cells with x in [96, 100) (alpha 90): width 1 cell, extent 1 cell. */
+static void test_ver_checks_band_width_vertical(void **state)
+{
+  (void)state;
+  const double h = 4;
+  const int ns = 2, ppc = 4;
+  const size_t n = (size_t)(192 / h * ns) * (size_t)(32 / h * ns);
+  double *x = malloc(n * sizeof *x), *y = malloc(n * sizeof *y), *l = malloc(n * sizeof *l);
+  size_t k = 0;
+  for (int i = 0; i < 192 / 4 * ns; i++)
+    for (int j = 0; j < 32 / 4 * ns; j++) {
+      x[k] = (i + 0.5) * h / ns;
+      y[k] = (j + 0.5) * h / ns;
+      l[k] = (x[k] >= 96 && x[k] < 100) ? 1.0 : 0.0;
+      k++;
+    }
+  double ext;
+  size_t cnt;
+  assert_rel(ver_band_width(x, y, l, n, 0.5, 90, h, ppc, 32, &ext, &cnt), 1.0, 1e-12, "width, one cell");
+  assert_rel(ext, 1.0, 1e-12, "extent, one cell");
+  assert_int_equal(cnt, 32); /* 8 cells of 4 particles */
+  assert_rel(ver_crack_angle(x, y, l, n, 0.5), 90.0, 1e-9, "angle of a vertical band");
+  /* two cells wide: both measures say 2 */
+  for (size_t i = 0; i < n; i++)
+    l[i] = (x[i] >= 96 && x[i] < 104) ? 0.9 : 0.1;
+  assert_rel(ver_band_width(x, y, l, n, 0.5, 90, h, ppc, 32, &ext, &cnt), 2.0, 1e-12, "width, two cells");
+  assert_rel(ext, 2.0, 1e-12, "extent, two cells");
+  /* nothing decohered */
+  for (size_t i = 0; i < n; i++)
+    l[i] = 0.0;
+  assert_true(ver_band_width(x, y, l, n, 0.5, 90, h, ppc, 32, &ext, &cnt) == 0.0);
+  assert_int_equal(cnt, 0);
+  assert_true(isnan(ver_crack_angle(x, y, l, n, 0.5)));
+  free(x), free(y), free(l);
+}
+
+/* Particles on a fine lattice, decohered within a strip of width w about a line
+ * at 60 deg through (96, 16): the band's mean width is w / h cells, its angle 60. */
+static void test_ver_checks_band_inclined(void **state)
+{
+  (void)state;
+  const double h = 2, a = 60 * PI / 180, nx = sin(a), ny = -cos(a), w = 4.0;
+  const int ns = 3, ppc = 9;
+  const int ni = (int)(192 / h) * ns, nj = (int)(32 / h) * ns;
+  const size_t n = (size_t)ni * (size_t)nj;
+  double *x = malloc(n * sizeof *x), *y = malloc(n * sizeof *y), *l = malloc(n * sizeof *l);
+  size_t k = 0;
+  for (int i = 0; i < ni; i++)
+    for (int j = 0; j < nj; j++) {
+      x[k] = (i + 0.5) * h / ns;
+      y[k] = (j + 0.5) * h / ns;
+      const double s = (x[k] - 96) * nx + (y[k] - 16) * ny;
+      l[k] = fabs(s) < 0.5 * w ? 1.0 : 0.0;
+      k++;
+    }
+  double ext;
+  size_t cnt;
+  const double wid = ver_band_width(x, y, l, n, 0.5, 60, h, ppc, 32, &ext, &cnt);
+  assert_rel(wid, w / h, 0.02, "inclined band width in cells");
+  assert_rel(ext, w / h, 0.2, "inclined band extent in cells");
+  /* the strip is cut by the bar's top and bottom into a parallelogram, which tilts its
+   * principal axis by a few tenths of a degree */
+  assert_rel(ver_crack_angle(x, y, l, n, 0.5), 60.0, 0.01, "inclined band angle");
+  /* the same band mirrored: 120 deg, and the wrapped difference to 60 is 60 */
+  for (size_t i = 0; i < n; i++)
+    x[i] = 192 - x[i];
+  const double a2 = ver_crack_angle(x, y, l, n, 0.5);
+  assert_rel(a2, 120.0, 0.01, "mirrored angle");
+  assert_rel(ver_angle_diff(a2, 60), 60.0, 0.02, "wrapped difference");
+  free(x), free(y), free(l);
+}
+
+static void test_ver_checks_angle_diff_wraps(void **state)
+{
+  (void)state;
+  assert_rel(ver_angle_diff(179, 1), -2.0, 1e-12, "179 vs 1");
+  assert_rel(ver_angle_diff(1, 179), 2.0, 1e-12, "1 vs 179");
+  assert_rel(ver_angle_diff(90, 90), 0.0, 1e-12, "equal");
+  assert_rel(ver_angle_diff(0, 90), 90.0, 1e-12, "perpendicular: +90");
+}
+
+static void test_ver_checks_conv_order(void **state)
+{
+  (void)state;
+  const double h[4] = {8, 4, 2, 1};
+  double e[4];
+  for (int i = 0; i < 4; i++)
+    e[i] = 0.03 * pow(h[i] / 8, 1.5);
+  assert_rel(ver_conv_order(h, e, 4), 1.5, 1e-12, "order 1.5");
+  assert_rel(ver_conv_order(h, e, 2), 1.5, 1e-12, "order from two points");
+  assert_true(isnan(ver_conv_order(h, e, 1)));
+  e[2] = 0.0;
+  assert_true(isnan(ver_conv_order(h, e, 4)));
+  const double hh[3] = {4, 4, 4}, ee[3] = {1, 2, 3};
+  assert_true(isnan(ver_conv_order(hh, ee, 3)));
+}
+
+static void test_ver_checks_spread(void **state)
+{
+  (void)state;
+  const double v[3] = {12.0, 12.3, 11.7};
+  assert_rel(ver_spread(v, 3), 0.6 / 12.0, 1e-12, "spread");
+  assert_true(isnan(ver_spread(v, 0)));
+  const double z[2] = {-1, 1};
+  assert_true(isnan(ver_spread(z, 2)));
+}
+
+static double line_ref(const void *ctx, double d)
+{
+  return *(const double *)ctx * d;
+}
+
+/* Rows that are the reference shifted by a constant c give RMS |c| / scale; rows past
+ * delta_end are ignored; comparison is at each interval's midpoint. */
+static void test_ver_checks_curve_l2(void **state)
+{
+  (void)state;
+  enum { N = 100 };
+  double d[N], P[N];
+  const double k = 2.0;
+  for (int i = 0; i < N; i++) {
+    d[i] = 0.01 * (i + 1);
+    P[i] = k * (d[i] - 0.005) + 0.5; /* interval average of k delta, plus 0.5 */
+  }
+  P[N - 1] = 1e6; /* beyond delta_end */
+  assert_rel(ver_curve_l2(d, P, N, 0.995, 10.0, line_ref, &k), 0.05, 1e-9, "constant offset");
+  assert_true(isnan(ver_curve_l2(d, P, N, 0.0, 10.0, line_ref, &k)));
+}
+
+static void test_ver_checks_judge(void **state)
+{
+  (void)state;
+  ver_check c;
+  memset(&c, 0, sizeof c);
+  c.measured = 31.4;
+  c.reference = 32;
+  c.rel = 1;
+  c.tol = 0.03;
+  c.lim_lo = -INFINITY;
+  c.lim_hi = INFINITY;
+  ver_check_judge(&c);
+  assert_int_equal(c.verdict, VER_PASS);
+  c.tol = 0.01;
+  ver_check_judge(&c);
+  assert_int_equal(c.verdict, VER_FAIL);
+  /* known-limit inside its bounds, fail outside them */
+  c.cls = VER_CLASS_KNOWN;
+  c.lim_lo = -0.05;
+  c.lim_hi = 0.0;
+  ver_check_judge(&c);
+  assert_int_equal(c.verdict, VER_KNOWN);
+  c.measured = 40;
+  ver_check_judge(&c);
+  assert_int_equal(c.verdict, VER_FAIL);
+  /* not finite: fail whatever the class */
+  c.measured = NAN;
+  ver_check_judge(&c);
+  assert_int_equal(c.verdict, VER_FAIL);
+  c.measured = 1;
+  c.reference = 0;
+  ver_check_judge(&c);
+  assert_int_equal(c.verdict, VER_FAIL);
+  assert_string_equal(ver_verdict_name(VER_KNOWN), "known-limit");
+  assert_string_equal(ver_verdict_name(VER_PASS), "pass");
+  assert_string_equal(ver_verdict_name(VER_FAIL), "fail");
+}
+
+int main(void)
+{
+  const struct CMUnitTest tests[] = {
+    cmocka_unit_test(test_ver_checks_fit_line_exact),
+    cmocka_unit_test(test_ver_checks_softening_slope_bar),
+    cmocka_unit_test(test_ver_checks_band_width_vertical),
+    cmocka_unit_test(test_ver_checks_band_inclined),
+    cmocka_unit_test(test_ver_checks_angle_diff_wraps),
+    cmocka_unit_test(test_ver_checks_conv_order),
+    cmocka_unit_test(test_ver_checks_spread),
+    cmocka_unit_test(test_ver_checks_curve_l2),
+    cmocka_unit_test(test_ver_checks_judge),
+  };
+  return cmocka_run_group_tests(tests, NULL, NULL);
+}
