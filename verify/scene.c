@@ -1,9 +1,19 @@
 /*
  * scene.c - scene files: a table of keys, each with its type, range and default,
  * read by inih into a ver_scene and validated once where it enters.
+ *
+ * Every error is one line  file:line: section.key: what is wrong (what is allowed).
+ * inih gives a line number only when parsing fails, counts a line longer than its
+ * buffer as two, and takes an indented line as the continuation of the previous
+ * value; so it reads through our own line reader, which counts the lines, strips
+ * the indentation, checks each line's shape ([section], key = value, comment or
+ * blank) and stops at the first error.  The handler therefore always knows its line.
  */
+#include <ctype.h>
+#include <assert.h>
 #include <errno.h>
 #include <math.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -61,12 +71,46 @@ static const keydef keys[] = {
 };
 #define NKEYS (int)(sizeof keys / sizeof keys[0])
 
+_Static_assert(NKEYS <= VER_NKEYS, "VER_NKEYS too small for the key table");
+
+/* Size limits: far above any sensible scene, low enough that every count fits in an
+ * int and every allocation in memory (and that no double-to-integer cast overflows). */
+#define MAX_NODES 1e8     /* grid nodes                        */
+#define MAX_PARTICLES 1e8 /* particles                         */
+#define MAX_STEPS 1e12    /* time steps to run.end_delta       */
+#define MAX_ROWS 1e7      /* rows of load.csv and energy.csv   */
+#define MAX_LINE 500      /* characters on a line of the file  */
+
 typedef struct {
   ver_scene *vs;
-  char *err;
-  size_t errlen;
-  int line; /* the line inih is on (counted by the handler: inih reports it only on error) */
+  const char *text; /* the scene, NUL-terminated                               */
+  size_t pos;       /* where the reader is in text                             */
+  int line;         /* lines handed to inih so far: the line the handler is on */
+  int errline;      /* line of the first error found by reader or handler      */
+  char msg[640];    /* that error, without "file:line: "                       */
 } parse_ctx;
+
+/* 1 if key i is the first of its section in the table. */
+static int first_of_section(int i)
+{
+  for (int j = 0; j < i; j++)
+    if (!strcmp(keys[j].section, keys[i].section))
+      return 0;
+  return 1;
+}
+
+/* Index of a section among the distinct sections of the table, or -1. */
+static int section_index(const char *section)
+{
+  for (int i = 0, n = 0; i < NKEYS; i++)
+    if (first_of_section(i)) {
+      assert(n < VER_NSECT);
+      if (!strcmp(keys[i].section, section))
+        return n;
+      n++;
+    }
+  return -1;
+}
 
 static int find_key(const char *section, const char *key)
 {
@@ -74,6 +118,33 @@ static int find_key(const char *section, const char *key)
     if (!strcmp(keys[i].section, section) && !strcmp(keys[i].key, key))
       return i;
   return -1;
+}
+
+/* User text fit for a one-line message: at most 40 characters, control characters
+ * shown as '?'. */
+static const char *shown(const char *s, char *buf, size_t len)
+{
+  size_t i = 0;
+  for (; s[i] && i < 40 && i + 4 < len; i++)
+    buf[i] = (unsigned char)s[i] < 0x20 || s[i] == 0x7f ? '?' : s[i];
+  if (s[i] && i + 4 <= len) {
+    memcpy(buf + i, "...", 3);
+    i += 3;
+  }
+  buf[i] = '\0';
+  return buf;
+}
+
+/* The keys of a section, or with section NULL all sections: "a, b, c" into buf. */
+static void list_names(const char *section, char *buf, size_t len)
+{
+  buf[0] = '\0';
+  size_t n = 0;
+  for (int i = 0; i < NKEYS && n < len; i++) {
+    if (section ? strcmp(keys[i].section, section) != 0 : !first_of_section(i))
+      continue;
+    n += (size_t)snprintf(buf + n, len - n, "%s%s", n ? ", " : "", section ? keys[i].key : keys[i].section);
+  }
 }
 
 static int in_range(const keydef *k, double v)
@@ -85,33 +156,35 @@ static int in_range(const keydef *k, double v)
   return 1;
 }
 
+/* A finite number with nothing but blanks after it: 0; 1 not a number; 2 not finite. */
 static int parse_num(const char *s, double *v)
 {
   char *end;
   errno = 0;
   *v = strtod(s, &end);
+  if (end == s)
+    return 1;
   while (*end == ' ' || *end == '\t')
     end++;
-  return end != s && *end == '\0' && errno == 0 && isfinite(*v);
+  if (*end)
+    return 1;
+  if (!isfinite(*v) || (errno == ERANGE && fabs(*v) > 1.0))
+    return 2;
+  return 0;
 }
 
-static void where(const ver_scene *vs, int line, char *buf, size_t len)
-{
-  if (line > 0)
-    snprintf(buf, len, "%s:%d", vs->path, line);
-  else if (line < 0)
-    snprintf(buf, len, "%s: command line", vs->path);
-  else
-    snprintf(buf, len, "%s", vs->path);
-}
-
-/* Sets key index ki from text; 0 or 2 with the message in err. */
-static int set_key(ver_scene *vs, int ki, const char *value, int line, char *err, size_t errlen)
+/* Checks value for key ki and stores it; 0, or 2 with a message (no location) in msg. */
+static int set_key(ver_scene *vs, int ki, const char *value, char *msg, size_t len)
 {
   const keydef *k = &keys[ki];
-  char at[600];
-  where(vs, line, at, sizeof at);
+  char sv[48];
   char *base = (char *)&vs->sc;
+  while (*value == ' ' || *value == '\t')
+    value++;
+  if (!*value) {
+    snprintf(msg, len, "%s.%s: empty value (%s)", k->section, k->key, k->allowed);
+    return 2;
+  }
   if (k->type == K_LE || k->type == K_SCHEME) {
     int mode;
     if (k->type == K_LE && !strcmp(value, "cell")) mode = MPM_LE_CELL;
@@ -119,110 +192,191 @@ static int set_key(ver_scene *vs, int ki, const char *value, int line, char *err
     else if (k->type == K_SCHEME && !strcmp(value, "usl")) mode = MPM_SCHEME_USL;
     else if (k->type == K_SCHEME && !strcmp(value, "musl")) mode = MPM_SCHEME_MUSL;
     else {
-      snprintf(err, errlen, "%s: %s.%s: '%s' is not allowed (%s)", at, k->section, k->key, value, k->allowed);
+      snprintf(msg, len, "%s.%s: '%s' is not allowed (%s)", k->section, k->key, shown(value, sv, sizeof sv),
+               k->allowed);
       return 2;
     }
     *(int *)(base + k->off) = mode;
   } else if (k->type == K_LIST) {
-    vs->nsnap = 0;
-    char buf[512];
-    snprintf(buf, sizeof buf, "%s", value);
-    for (char *tok = strtok(buf, ","); tok; tok = strtok(NULL, ",")) {
-      while (*tok == ' ') tok++;
-      double v;
-      if (!parse_num(tok, &v) || v < 0.0) {
-        snprintf(err, errlen, "%s: %s.%s: '%s' is not an end displacement (%s)", at, k->section, k->key, tok, k->allowed);
+    double v[VER_MAX_SNAP];
+    int n = 0;
+    for (const char *p = value;;) {
+      const char *e = strchr(p, ',');
+      char item[64];
+      const size_t il = e ? (size_t)(e - p) : strlen(p);
+      if (il >= sizeof item) {
+        snprintf(msg, len, "%s.%s: an item is too long (%s)", k->section, k->key, k->allowed);
         return 2;
       }
-      if (vs->nsnap == VER_MAX_SNAP) {
-        snprintf(err, errlen, "%s: %s.%s: more than %d snapshots", at, k->section, k->key, VER_MAX_SNAP);
+      memcpy(item, p, il);
+      item[il] = '\0';
+      const char *t = item;
+      while (*t == ' ' || *t == '\t') t++;
+      if (!*t) {
+        snprintf(msg, len, "%s.%s: an empty item in the list (%s)", k->section, k->key, k->allowed);
         return 2;
       }
-      vs->snap[vs->nsnap++] = v;
+      if (n == VER_MAX_SNAP) {
+        snprintf(msg, len, "%s.%s: more than %d snapshots (%s)", k->section, k->key, VER_MAX_SNAP, k->allowed);
+        return 2;
+      }
+      const int r = parse_num(t, &v[n]);
+      if (r || v[n] < 0.0) {
+        snprintf(msg, len, "%s.%s: '%s' is %s (%s)", k->section, k->key, shown(t, sv, sizeof sv),
+                 r == 1 ? "not a number" : r == 2 ? "not a finite number" : "negative", k->allowed);
+        return 2;
+      }
+      n++;
+      if (!e)
+        break;
+      p = e + 1;
     }
+    memcpy(vs->snap, v, sizeof(double) * (size_t)n);
+    vs->nsnap = n;
   } else {
     double v;
-    if (!parse_num(value, &v)) {
-      snprintf(err, errlen, "%s: %s.%s: '%s' is not a number (%s)", at, k->section, k->key, value, k->allowed);
+    const int r = parse_num(value, &v);
+    if (r) {
+      snprintf(msg, len, "%s.%s: '%s' is %s (%s)", k->section, k->key, shown(value, sv, sizeof sv),
+               r == 1 ? "not a number" : "not a finite number", k->allowed);
       return 2;
     }
     if (k->type == K_INT && v != floor(v)) {
-      snprintf(err, errlen, "%s: %s.%s: '%s' is not an integer (%s)", at, k->section, k->key, value, k->allowed);
+      snprintf(msg, len, "%s.%s: '%s' is not an integer (%s)", k->section, k->key, shown(value, sv, sizeof sv),
+               k->allowed);
       return 2;
     }
     if (!in_range(k, v)) {
-      snprintf(err, errlen, "%s: %s.%s: %s is out of range (%s)", at, k->section, k->key, value, k->allowed);
+      snprintf(msg, len, "%s.%s: %s is out of range (%s)", k->section, k->key, shown(value, sv, sizeof sv),
+               k->allowed);
       return 2;
     }
     if (!strcmp(k->section, "output"))
       vs->interval = v;
     else if (k->type == K_INT)
-      *(int *)(base + k->off) = (int)v;
+      *(int *)(base + k->off) = (int)v; /* in range, so it fits */
     else
       *(double *)(base + k->off) = v;
   }
-  vs->seen[ki] = 1;
-  vs->line[ki] = line;
   return 0;
+}
+
+/* Records the first error at the current line; returns 1. */
+__attribute__((format(printf, 2, 3))) static int fail(parse_ctx *c, const char *fmt, ...)
+{
+  va_list ap;
+  va_start(ap, fmt);
+  vsnprintf(c->msg, sizeof c->msg, fmt, ap);
+  va_end(ap);
+  c->errline = c->line;
+  return 1;
+}
+
+/* The shape of one line (indentation already stripped): 0 fine, 1 error recorded. */
+static int check_line(parse_ctx *c, const char *s, size_t n)
+{
+  char b[MAX_LINE + 1], sv[48];
+  memcpy(b, s, n);
+  b[n] = '\0';
+  char *p = b;
+  if (c->line == 1 && !strncmp(p, "\xEF\xBB\xBF", 3))
+    p += 3; /* UTF-8 byte order mark: inih skips it too */
+  for (char *e = p + strlen(p); e > p && isspace((unsigned char)e[-1]);)
+    *--e = '\0';
+  if (!*p || *p == ';' || *p == '#')
+    return 0;
+  if (*p == '[') {
+    char *e = strchr(p, ']');
+    if (!e)
+      return fail(c, "'%s': a [section] header without ']'", shown(p, sv, sizeof sv));
+    *e = '\0';
+    const char *rest = e + 1;
+    while (*rest == ' ' || *rest == '\t') rest++;
+    if (*rest && *rest != ';')
+    {
+      char sr[48];
+      return fail(c, "[%s]: text after the section header ('%s')", shown(p + 1, sv, sizeof sv),
+                  shown(rest, sr, sizeof sr));
+    }
+    const int si = section_index(p + 1);
+    if (si < 0) {
+      char all[256];
+      list_names(NULL, all, sizeof all);
+      return fail(c, "[%s]: unknown section (allowed: %s)", shown(p + 1, sv, sizeof sv), all);
+    }
+    if (!c->vs->sect_line[si])
+      c->vs->sect_line[si] = c->line;
+    return 0;
+  }
+  /* key = value: the first of '=', ':' (inih's other separator) and an inline
+   * comment must be '=', with a key before it. */
+  char *q = p;
+  for (int blank = 0; *q && *q != '=' && *q != ':' && !(blank && *q == ';'); q++)
+    blank = isspace((unsigned char)*q);
+  if (*q != '=') {
+    if (*q == ';') /* show the line without its comment */
+      for (char *e = q; e > p && isspace((unsigned char)e[-1]);)
+        *--e = '\0';
+    return fail(c, "'%s' is not a 'key = value' line, a [section] header or a comment",
+                shown(p, sv, sizeof sv));
+  }
+  if (q == p)
+    return fail(c, "'%s': no key before '='", shown(p, sv, sizeof sv));
+  return 0;
+}
+
+/* inih's line source: one line of the text per call, indentation stripped. */
+static char *reader(char *str, int num, void *stream)
+{
+  parse_ctx *c = stream;
+  if (c->errline || !c->text[c->pos])
+    return NULL;
+  const char *s = c->text + c->pos;
+  const char *nl = strchr(s, '\n');
+  size_t n = nl ? (size_t)(nl - s) : strlen(s);
+  c->pos += n + (nl != NULL);
+  c->line++;
+  while (n && (*s == ' ' || *s == '\t')) {
+    s++;
+    n--;
+  }
+  const size_t most = num - 3 < MAX_LINE ? (size_t)(num - 3) : MAX_LINE;
+  if (num < 4 || n > most) {
+    fail(c, "a line longer than %zu characters", num < 4 ? 0 : most);
+    return NULL;
+  }
+  if (check_line(c, s, n))
+    return NULL;
+  memcpy(str, s, n);
+  str[n] = '\n';
+  str[n + 1] = '\0';
+  return str;
 }
 
 static int handler(void *user, const char *section, const char *name, const char *value)
 {
   parse_ctx *c = user;
+  char sv[48];
+  if (c->errline)
+    return 0;
+  if (!section[0])
+    return !fail(c, "%s: a key before any [section] header", shown(name, sv, sizeof sv));
   const int ki = find_key(section, name);
   if (ki < 0) {
-    /* inih returns this line number from ini_parse; the message is completed there. */
-    snprintf(c->err, c->errlen, "%s.%s: unknown key", section, name);
+    char all[256];
+    list_names(section, all, sizeof all);
+    return !fail(c, "%s.%s: unknown key (allowed in [%s]: %s)", section, shown(name, sv, sizeof sv), section, all);
+  }
+  ver_scene *vs = c->vs;
+  if (vs->seen[ki])
+    return !fail(c, "%s.%s: set twice, first on line %d (each key once)", section, name, vs->line[ki]);
+  if (set_key(vs, ki, value, c->msg, sizeof c->msg)) {
+    c->errline = c->line;
     return 0;
   }
-  if (c->vs->seen[ki] && c->vs->line[ki] > 0) {
-    snprintf(c->err, c->errlen, "%s.%s: set twice (each key once)", section, name);
-    return 0;
-  }
-  /* The line is not known inside the handler; mark it and let ini_parse's caller fill it
-   * by re-scanning the file (cheap; scene files are small). */
-  char msg[700];
-  if (set_key(c->vs, ki, value, 1, msg, sizeof msg) != 0) {
-    /* strip the "file:1: " prefix: the caller prints file:line */
-    const char *p = strstr(msg, ": ");
-    snprintf(c->err, c->errlen, "%s", p ? p + 2 : msg);
-    return 0;
-  }
+  vs->seen[ki] = 1;
+  vs->line[ki] = c->line;
   return 1;
-}
-
-/* The line on which section.key is set (first match), for messages; 0 if not found. */
-static int key_line(const char *path, const char *section, const char *key)
-{
-  FILE *f = fopen(path, "r");
-  if (!f)
-    return 0;
-  char buf[1024], cur[128] = "";
-  int ln = 0, found = 0;
-  while (fgets(buf, sizeof buf, f)) {
-    ln++;
-    char *s = buf;
-    while (*s == ' ' || *s == '\t') s++;
-    if (*s == '[') {
-      char *e = strchr(s, ']');
-      if (e) {
-        size_t n = (size_t)(e - s - 1);
-        if (n >= sizeof cur) n = sizeof cur - 1;
-        memcpy(cur, s + 1, n);
-        cur[n] = '\0';
-      }
-      continue;
-    }
-    if (*s == ';' || *s == '#' || *s == '\0' || *s == '\n')
-      continue;
-    size_t kl = strlen(key);
-    if (!strcmp(cur, section) && !strncmp(s, key, kl) && (s[kl] == ' ' || s[kl] == '=' || s[kl] == '\t' || s[kl] == ':')) {
-      found = ln;
-      break;
-    }
-  }
-  fclose(f);
-  return found;
 }
 
 static void scene_defaults(ver_scene *vs, const char *path)
@@ -247,54 +401,134 @@ static void scene_defaults(ver_scene *vs, const char *path)
   vs->interval = -1;
 }
 
+int ver_scene_parse_string(const char *text, const char *name, ver_scene *vs, char *err, size_t errlen)
+{
+  scene_defaults(vs, name);
+  parse_ctx c;
+  memset(&c, 0, sizeof c);
+  c.vs = vs;
+  c.text = text;
+  const int r = ini_parse_stream(reader, &c, handler, &c);
+  /* inih's own complaint (a line it would not take that the reader let through) is
+   * the error only if it comes first. */
+  if (r > 0 && (!c.errline || r < c.errline)) {
+    snprintf(err, errlen, "%s:%d: not a 'key = value' line, a [section] header or a comment", vs->path, r);
+    return 2;
+  }
+  if (c.errline) {
+    snprintf(err, errlen, "%s:%d: %s", vs->path, c.errline, c.msg);
+    return 2;
+  }
+  if (r < 0) {
+    snprintf(err, errlen, "%s: cannot parse: out of memory", vs->path);
+    return 2;
+  }
+  vs->nlines = c.line;
+  return 0;
+}
+
 int ver_scene_parse(const char *path, ver_scene *vs, char *err, size_t errlen)
 {
   scene_defaults(vs, path);
-  FILE *f = fopen(path, "r");
+  FILE *f = fopen(path, "rb");
   if (!f) {
     snprintf(err, errlen, "%s: cannot open: %s", path, strerror(errno));
     return 2;
   }
-  char msg[800] = "";
-  parse_ctx c = {vs, msg, sizeof msg, 0};
-  const int r = ini_parse_file(f, handler, &c);
-  fclose(f);
-  if (r != 0) {
-    if (msg[0])
-      snprintf(err, errlen, "%s:%d: %s", path, r, msg);
-    else
-      snprintf(err, errlen, "%s:%d: not a 'key = value' line or a [section] header", path, r);
+  char *text = malloc(VER_SCENE_MAX + 1);
+  if (!text) {
+    fclose(f);
+    snprintf(err, errlen, "%s: cannot read: out of memory", path);
     return 2;
   }
-  /* Record the real line of each key for later messages. */
-  for (int i = 0; i < NKEYS; i++)
-    if (vs->seen[i])
-      vs->line[i] = key_line(path, keys[i].section, keys[i].key);
-  return 0;
+  const size_t n = fread(text, 1, VER_SCENE_MAX + 1, f);
+  const int bad = ferror(f), e = errno;
+  fclose(f);
+  int rc = 2;
+  if (bad)
+    snprintf(err, errlen, "%s: cannot read: %s", path, strerror(e));
+  else if (n > VER_SCENE_MAX)
+    snprintf(err, errlen, "%s: larger than %d bytes: not a scene file", path, VER_SCENE_MAX);
+  else if (memchr(text, '\0', n)) {
+    int line = 1;
+    for (const char *p = text; *p; p++)
+      line += *p == '\n';
+    snprintf(err, errlen, "%s:%d: a NUL byte: not a text file", path, line);
+  } else {
+    text[n] = '\0';
+    rc = ver_scene_parse_string(text, path, vs, err, errlen);
+  }
+  free(text);
+  return rc;
 }
 
 int ver_scene_set(ver_scene *vs, const char *assignment, char *err, size_t errlen)
 {
-  char buf[256];
+  char buf[256], sv[48], msg[640];
+  for (const char *p = assignment; *p; p++)
+    if ((unsigned char)*p < 0x20 || *p == 0x7f) {
+      snprintf(err, errlen, "%s: command line: '%s': a control character (expected section.key=value)", vs->path,
+               shown(assignment, sv, sizeof sv));
+      return 2;
+    }
+  if (strlen(assignment) >= sizeof buf) {
+    snprintf(err, errlen, "%s: command line: '%s': too long (expected section.key=value)", vs->path,
+             shown(assignment, sv, sizeof sv));
+    return 2;
+  }
   snprintf(buf, sizeof buf, "%s", assignment);
   char *eq = strchr(buf, '='), *dot = strchr(buf, '.');
   if (!eq || !dot || dot > eq) {
-    snprintf(err, errlen, "%s: command line: '%s': expected section.key=value", vs->path, assignment);
+    snprintf(err, errlen, "%s: command line: '%s': expected section.key=value", vs->path,
+             shown(assignment, sv, sizeof sv));
     return 2;
   }
   *eq = '\0';
   *dot = '\0';
-  const int ki = find_key(buf, dot + 1);
+  char *key = dot + 1;
+  for (char *e = eq; e > key && isspace((unsigned char)e[-1]);)
+    *--e = '\0';
+  const int ki = find_key(buf, key);
   if (ki < 0) {
-    snprintf(err, errlen, "%s: command line: %s.%s: unknown key", vs->path, buf, dot + 1);
+    char all[256];
+    if (section_index(buf) >= 0)
+      list_names(buf, all, sizeof all);
+    else
+      list_names(NULL, all, sizeof all);
+    snprintf(err, errlen, "%s: command line: %s: unknown key (allowed%s%s%s: %s)", vs->path,
+             shown(assignment, sv, sizeof sv), section_index(buf) >= 0 ? " in [" : " sections",
+             section_index(buf) >= 0 ? buf : "", section_index(buf) >= 0 ? "]" : "", all);
     return 2;
   }
-  return set_key(vs, ki, eq + 1, -1, err, errlen);
+  if (set_key(vs, ki, eq + 1, msg, sizeof msg)) {
+    snprintf(err, errlen, "%s: command line: %s", vs->path, msg);
+    return 2;
+  }
+  vs->seen[ki] = 1;
+  vs->line[ki] = -1;
+  return 0;
+}
+
+/* "file:line" of key ki: its line, else its section's header, else the file's end. */
+static const char *key_at(const ver_scene *vs, int ki, char *buf, size_t len)
+{
+  int line = vs->line[ki];
+  if (line < 0) {
+    snprintf(buf, len, "%s: command line", vs->path);
+    return buf;
+  }
+  if (!line)
+    line = vs->sect_line[section_index(keys[ki].section)];
+  if (!line)
+    line = vs->nlines > 0 ? vs->nlines : 1;
+  snprintf(buf, len, "%s:%d", vs->path, line);
+  return buf;
 }
 
 static int kidx(const char *section, const char *key)
 {
   const int i = find_key(section, key);
+  assert(i >= 0);
   return i;
 }
 
@@ -305,7 +539,10 @@ int ver_scene_validate(ver_scene *vs, char *err, size_t errlen)
   for (int i = 0; i < NKEYS; i++) {
     const int need = keys[i].required == 1 || (keys[i].required == 2 && sc->model > 0);
     if (need && !vs->seen[i]) {
-      snprintf(err, errlen, "%s: %s.%s: missing (%s)", vs->path, keys[i].section, keys[i].key, keys[i].allowed);
+      const int si = section_index(keys[i].section);
+      snprintf(err, errlen, "%s: %s.%s: missing%s%s%s (%s)", key_at(vs, i, at, sizeof at), keys[i].section,
+               keys[i].key, vs->sect_line[si] ? "" : ", and there is no [", vs->sect_line[si] ? "" : keys[i].section,
+               vs->sect_line[si] ? "" : "] section", keys[i].allowed);
       return 2;
     }
   }
@@ -317,33 +554,61 @@ int ver_scene_validate(ver_scene *vs, char *err, size_t errlen)
     sc->imp_y = 0.5 * sc->H;
   if (vs->interval <= 0)
     vs->interval = 0.0005;
-  /* Rules that involve two keys: h divides L and H, ppc is a square, CFL. */
+  /* Sizes first: the checks after them round L / h and H / h to integers. */
   const int hi = kidx("grid", "h");
-  where(vs, vs->line[hi], at, sizeof at);
+  key_at(vs, hi, at, sizeof at);
+  const double nx = (sc->L + sc->end_delta + 2.0 * sc->margin) / sc->h + 4.0,
+               ny = (sc->H + 2.0 * sc->margin) / sc->h + 4.0;
+  if (!(nx * ny <= MAX_NODES)) {
+    snprintf(err, errlen, "%s: grid.h: %g gives a grid of %.3g x %.3g nodes for bar, grid.margin and run.end_delta "
+             "(allowed: at most %.0e nodes)", at, sc->h, nx, ny, MAX_NODES);
+    return 2;
+  }
+  /* h divides L and H (as the kernel rounds it), ppc is a square. */
   for (int d = 0; d < 2; d++) {
-    const double len = d ? sc->H : sc->L, r = len / sc->h;
-    if (fabs(r - round(r)) > 1e-9 * r || r < 1) {
-      snprintf(err, errlen, "%s: grid.h: %g does not divide bar.%s = %g (allowed: h = %s / n for a whole n)",
-               at, sc->h, d ? "H" : "L", len, d ? "H" : "L");
+    const double len = d ? sc->H : sc->L, r = len / sc->h, n = round(r);
+    if (!(n >= 1 && fabs(r - n) < 1e-9 * r)) {
+      snprintf(err, errlen, "%s: grid.h: %g does not divide bar.%s = %g (allowed: h = %s / n for a whole n)", at,
+               sc->h, d ? "H" : "L", len, d ? "H" : "L");
       return 2;
     }
   }
-  const int pi = kidx("grid", "ppc"), n = (int)lround(sqrt((double)sc->ppc));
-  if (n * n != sc->ppc) {
-    where(vs, vs->line[pi], at, sizeof at);
-    snprintf(err, errlen, "%s: grid.ppc: %d is not a perfect square (allowed: 1, 4, 9, 16, ...)", at, sc->ppc);
+  const int n1 = (int)lround(sqrt((double)sc->ppc));
+  if (n1 * n1 != sc->ppc) {
+    snprintf(err, errlen, "%s: grid.ppc: %d is not a perfect square (allowed: 1, 4, 9, 16, ...)",
+             key_at(vs, kidx("grid", "ppc"), at, sizeof at), sc->ppc);
+    return 2;
+  }
+  const double np = round(sc->L / sc->h) * round(sc->H / sc->h) * sc->ppc;
+  if (np > MAX_PARTICLES) {
+    snprintf(err, errlen, "%s: grid.h: %g with grid.ppc = %d gives %.3g particles (allowed: at most %.0e)",
+             key_at(vs, hi, at, sizeof at), sc->h, sc->ppc, np, MAX_PARTICLES);
     return 2;
   }
   const double dtc = mpm_scene_dt_crit(sc);
-  if (sc->dt >= dtc && !vs->allow_unstable) {
-    where(vs, vs->line[kidx("time", "dt")], at, sizeof at);
+  if (!(sc->dt < dtc) && !vs->allow_unstable) {
     snprintf(err, errlen, "%s: time.dt: %g is at or above the CFL bound h / c = %.4g (allowed: dt < %.4g, or --allow-unstable)",
-             at, sc->dt, dtc, dtc);
+             key_at(vs, kidx("time", "dt"), at, sizeof at), sc->dt, dtc, dtc);
     return 2;
   }
+  const double vdt = sc->speed * sc->dt;
+  if (!(sc->end_delta / vdt <= MAX_STEPS)) {
+    snprintf(err, errlen, "%s: run.end_delta: %g at loading.speed = %g and time.dt = %g takes %.3g time steps "
+             "(allowed: at most %.0e)", key_at(vs, kidx("run", "end_delta"), at, sizeof at), sc->end_delta,
+             sc->speed, sc->dt, sc->end_delta / vdt, MAX_STEPS);
+    return 2;
+  }
+  const int ii = kidx("output", "interval");
+  if (!(sc->end_delta / vs->interval <= MAX_ROWS) || !(vs->interval / vdt <= MAX_STEPS)) {
+    snprintf(err, errlen, "%s: output.interval: %g gives %.3g rows to run.end_delta = %g and a row every %.3g steps "
+             "(allowed: at most %.0e rows, and a row every at most %.0e steps)", key_at(vs, ii, at, sizeof at),
+             vs->interval, sc->end_delta / vs->interval, sc->end_delta, vs->interval / vdt, MAX_ROWS, MAX_STEPS);
+    return 2;
+  }
+  /* The kernel's own check: every rule it has is above, so this is a backstop. */
   char e2[256];
   if (mpm_scene_check(sc, e2, sizeof e2) != MPM_OK) {
-    snprintf(err, errlen, "%s: %s", vs->path, e2);
+    snprintf(err, errlen, "%s:%d: %s", vs->path, vs->nlines > 0 ? vs->nlines : 1, e2);
     return 2;
   }
   return 0;

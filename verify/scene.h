@@ -3,6 +3,7 @@
  *
  * Every key is checked where it enters: unknown, missing, not a number, or out of
  * its physical range gives one line  file:line: section.key: what is wrong (what is allowed).
+ * A value set on the command line (--set, --h, ...) is reported as  file: command line: ...
  */
 #ifndef DELAM_SCENE_H
 #define DELAM_SCENE_H
@@ -13,6 +14,7 @@
 
 #define VER_MAX_SNAP 16
 #define VER_NKEYS 40
+#define VER_NSECT 12
 
 typedef struct {
   char name[64];              /* scene name: the file's base name without .ini          */
@@ -24,15 +26,22 @@ typedef struct {
   int allow_unstable;         /* accept dt above the CFL bound                           */
   int line[VER_NKEYS];        /* line each key was set on (0: default, -1: command line) */
   int seen[VER_NKEYS];
+  int sect_line[VER_NSECT];   /* line of each section's first [header] (0: absent)       */
+  int nlines;                 /* lines in the file                                      */
 } ver_scene;
 
 /* Reads and validates a scene file.  Returns 0, or 2 with one line in err. */
 int ver_scene_load(const char *path, ver_scene *vs, char *err, size_t errlen);
-/* Parses it without the final validation, so that overrides can follow. */
+/* Parses it without the final validation, so that overrides can follow.  Files
+ * larger than VER_SCENE_MAX bytes or holding a NUL byte are refused. */
+#define VER_SCENE_MAX (1 << 20)
 int ver_scene_parse(const char *path, ver_scene *vs, char *err, size_t errlen);
+/* The same for a scene held in memory; name stands for the file in messages. */
+int ver_scene_parse_string(const char *text, const char *name, ver_scene *vs, char *err, size_t errlen);
 /* Sets one key ("section.key=value" style override, as from --set). */
 int ver_scene_set(ver_scene *vs, const char *assignment, char *err, size_t errlen);
-/* Checks presence, ranges and the CFL bound.  Returns 0 or 2. */
+/* Checks presence, ranges, the rules between keys (h divides L and H, ppc a square,
+ * the CFL bound, sizes the kernel can allocate) and fills the defaults.  Returns 0 or 2. */
 int ver_scene_validate(ver_scene *vs, char *err, size_t errlen);
 /* Case id, e.g. "fig6-h4-ppc4". */
 void ver_scene_case_id(const ver_scene *vs, char *buf, size_t len);
