@@ -1,1 +1,393 @@
-int main(void){return 0;}
+/*
+ * test_mpm_bar.c - the MPM step (sec. 2, eqs. 2-7) on whole bars, against laws and
+ * closed forms that do not come from the code:
+ *  - total momentum is conserved without boundary conditions (sum_i f_i = 0 because
+ *    sum_i grad N_i = 0), in both USL and MUSL;
+ *  - an elastic bar pulled at its end has the static stiffness E H / L (uniaxial
+ *    stress, plane stress: the lateral faces are free), and the reaction at the fixed
+ *    end equals the pull (equilibrium);
+ *  - energy balance W_ext + KE(0) = KE + SE, and SE = k delta^2 / 2;
+ *  - results do not depend on the number of threads (bit for bit: mpm.h promises it);
+ *  - the error paths: each rule of mpm_scene_check, a particle that leaves the grid,
+ *    a non-finite position.
+ */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "mpm.h"
+
+/* |got - want| <= tol |want| (or <= tol when want == 0), with a readable failure. */
+static void assert_rel(double got, double want, double tol, const char *what)
+{
+  const double err = want == 0.0 ? fabs(got) : fabs(got - want) / fabs(want);
+  if (!(err <= tol))
+    fail_msg("%s: got %.12g, want %.12g (rel err %.3g > %.3g)", what, got, want, err, tol);
+}
+
+static void assert_abs(double got, double want, double tol, const char *what)
+{
+  if (!(fabs(got - want) <= tol))
+    fail_msg("%s: got %.12g, want %.12g (abs err %.3g > %.3g)", what, got, want, fabs(got - want), tol);
+}
+
+static double urand(uint64_t *s)
+{
+  uint64_t z = (*s += 0x9E3779B97F4A7C15ull);
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+  z ^= z >> 31;
+  return (double)(z >> 11) * 0x1.0p-53;
+}
+
+/* The Fig. 6 bar (L 192, H 32, E 1024, nu 0.25, rho 1), elastic, h 8, dt 0.1. */
+static mpm_scene fig6_scene(void)
+{
+  mpm_scene sc;
+  memset(&sc, 0, sizeof sc);
+  sc.L = 192.0;
+  sc.H = 32.0;
+  sc.E = 1024.0;
+  sc.nu = 0.25;
+  sc.rho = 1.0;
+  sc.model = MPM_DCOH_NONE;
+  sc.alpha_deg = 90.0;
+  sc.snf = 1.0;
+  sc.stf = 10.0;
+  sc.U0 = 0.375;
+  sc.s0 = 1.0;
+  sc.q = 1.0;
+  sc.sep_threshold = 0.98;
+  sc.le_mode = MPM_LE_CELL;
+  sc.imp_factor = 1.0;
+  sc.imp_x = 96.0;
+  sc.imp_y = 16.0;
+  sc.h = 8.0;
+  sc.ppc = 4;
+  sc.margin = 8.0;
+  sc.scheme = MPM_SCHEME_USL;
+  sc.dt = 0.1;
+  sc.speed = 0.001;
+  sc.end_delta = 0.1;
+  sc.stop_margin = 0.0;
+  sc.sep_load_frac = 0.02;
+  return sc;
+}
+
+static mpm_sim *make_sim(const mpm_scene *sc, int nthreads)
+{
+  mpm_sim *s = NULL;
+  char err[256] = "";
+  const mpm_status st = mpm_sim_alloc(sc, nthreads, &s, err, sizeof err);
+  if (st != MPM_OK || !s)
+    fail_msg("mpm_sim_alloc: %s: %s", mpm_strerror(st), err);
+  return s;
+}
+
+static void run_steps(mpm_sim *s, long n)
+{
+  char err[256] = "";
+  for (long k = 0; k < n; k++) {
+    const mpm_status st = mpm_sim_step(s, err, sizeof err);
+    if (st != MPM_OK)
+      fail_msg("step %ld: %s: %s", k, mpm_strerror(st), err);
+  }
+}
+
+/* (a) Without boundary conditions the grid forces sum to zero, so the particles' total
+ * momentum is that of the start, to rounding (scale: sum m |v|), under a translating,
+ * rotating and random velocity field that also shears and stresses the bar. */
+static void momentum_case(int scheme)
+{
+  mpm_scene sc = fig6_scene();
+  sc.L = 16.0;
+  sc.H = 8.0;
+  sc.h = 2.0;
+  sc.ppc = 4;
+  sc.margin = 6.0;
+  sc.scheme = scheme;
+  sc.dt = 0.2 * mpm_scene_dt_crit(&sc);
+  mpm_sim *s = make_sim(&sc, 1);
+  mpm_particles *p = s->p;
+  uint64_t seed = 2024 + (uint64_t)scheme;
+  const double cx = 8.0, cy = 4.0, om = 0.02;
+  for (size_t k = 0; k < p->n; k++) {
+    p->vx[k] = 0.3 - om * (p->y[k] - cy) + 0.05 * (urand(&seed) - 0.5);
+    p->vy[k] = -0.2 + om * (p->x[k] - cx) + 0.05 * (urand(&seed) - 0.5);
+  }
+  s->ngrip = 0;
+  s->nfixx = 0;
+  s->fixy = 0; /* a corner node of the padding: never carries mass (checked below) */
+  double px0, py0, scale = 0.0;
+  mpm_particles_momentum(p, &px0, &py0);
+  for (size_t k = 0; k < p->n; k++)
+    scale += p->m[k] * hypot(p->vx[k], p->vy[k]);
+  double smax = 0.0;
+  for (int k = 0; k < 200; k++) {
+    run_steps(s, 1);
+    assert_true(s->g->m[0] == 0.0);
+    double px, py;
+    mpm_particles_momentum(s->p, &px, &py);
+    assert_abs(px, px0, 1e-12 * scale, scheme ? "MUSL: x momentum" : "USL: x momentum");
+    assert_abs(py, py0, 1e-12 * scale, scheme ? "MUSL: y momentum" : "USL: y momentum");
+  }
+  for (size_t k = 0; k < s->p->n; k++)
+    smax = fmax(smax, fabs(s->p->sxx[k]) + fabs(s->p->syy[k]) + fabs(s->p->sxy[k]));
+  /* the random field did load the bar, so the forces were not trivially zero */
+  assert_true(smax > 1e-3);
+  /* the centre of mass moved with the constant momentum: x_c(t) = x_c(0) + P t / M */
+  double M = 0.0, xc = 0.0, yc = 0.0;
+  for (size_t k = 0; k < s->p->n; k++) {
+    M += s->p->m[k];
+    xc += s->p->m[k] * (s->p->x[k] - s->p->x0[k]);
+    yc += s->p->m[k] * (s->p->y[k] - s->p->y0[k]);
+  }
+  assert_rel(xc / M, px0 / M * s->t, 1e-9, "centre of mass drift x");
+  assert_rel(yc / M, py0 / M * s->t, 1e-9, "centre of mass drift y");
+  mpm_sim_free(s);
+}
+
+static void test_mpm_bar_momentum_usl(void **state)
+{
+  (void)state;
+  momentum_case(MPM_SCHEME_USL);
+}
+
+static void test_mpm_bar_momentum_musl(void **state)
+{
+  (void)state;
+  momentum_case(MPM_SCHEME_MUSL);
+}
+
+/* Shared by (b), (c), (d): the elastic Fig. 6 bar pulled to delta = 0.1 (1000 steps),
+ * windowed averages of the loads. */
+#define NWIN 20
+typedef struct {
+  double delta[NWIN], Pg[NWIN], Pf[NWIN];
+  mpm_energy e;
+  double KE0;
+} elastic_run;
+
+static void run_elastic(int scheme, int ppc, elastic_run *r)
+{
+  mpm_scene sc = fig6_scene();
+  sc.scheme = scheme;
+  sc.ppc = ppc;
+  mpm_sim *s = make_sim(&sc, 1);
+  mpm_energy e0;
+  mpm_sim_energy(s, &e0);
+  r->KE0 = e0.KE;
+  const long nsteps = lround(sc.end_delta / (sc.speed * sc.dt)), per = nsteps / NWIN;
+  for (int w = 0; w < NWIN; w++) {
+    double sg = 0.0, sf = 0.0, sd = 0.0;
+    for (long k = 0; k < per; k++) {
+      run_steps(s, 1);
+      sg += s->P_grip;
+      sf += s->P_fixed;
+      sd += mpm_sim_delta(s);
+    }
+    r->Pg[w] = sg / per;
+    r->Pf[w] = sf / per;
+    r->delta[w] = sd / per;
+  }
+  assert_rel(mpm_sim_delta(s), sc.end_delta, 1e-9, "end delta");
+  mpm_sim_energy(s, &r->e);
+  mpm_sim_free(s);
+}
+
+/* least-squares slope and intercept of y on x */
+static void lsq(const double *x, const double *y, int n, double *slope, double *icpt)
+{
+  double sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
+  for (int i = 0; i < n; i++) {
+    sx += x[i];
+    sy += y[i];
+    sxx += x[i] * x[i];
+    sxy += x[i] * y[i];
+  }
+  *slope = (n * sxy - sx * sy) / (n * sxx - sx * sx);
+  *icpt = (sy - *slope * sx) / n;
+}
+
+/* (b) stiffness E H / L = 1024 * 32 / 192 = 170.67 within 1 % (grip and fixed end),
+ * and (d) energy: W_ext + KE(0) = KE + SE within 1 %, SE = k delta^2 / 2 within 2 %. */
+static void elastic_case(int scheme, int ppc)
+{
+  const double k_exact = 1024.0 * 32.0 / 192.0, d_end = 0.1;
+  elastic_run r;
+  run_elastic(scheme, ppc, &r);
+  double kg, ig, kf, iff;
+  lsq(r.delta, r.Pg, NWIN, &kg, &ig);
+  lsq(r.delta, r.Pf, NWIN, &kf, &iff);
+  char what[96];
+  snprintf(what, sizeof what, "scheme %d ppc %d: grip stiffness vs E H / L", scheme, ppc);
+  assert_rel(kg, k_exact, 0.01, what);
+  snprintf(what, sizeof what, "scheme %d ppc %d: fixed-end stiffness vs E H / L", scheme, ppc);
+  assert_rel(kf, k_exact, 0.01, what);
+  /* the line goes through the origin: |intercept| small against the final load */
+  assert_abs(ig, 0.0, 0.01 * k_exact * d_end, "grip load intercept");
+  const double lhs = r.e.W_ext + r.KE0, rhs = r.e.KE + r.e.SE;
+  snprintf(what, sizeof what, "scheme %d ppc %d: W_ext + KE0 vs KE + SE", scheme, ppc);
+  assert_rel(lhs, rhs, 0.01, what);
+  assert_rel(r.e.SE, 0.5 * k_exact * d_end * d_end, 0.02, "SE vs k delta^2 / 2");
+  assert_true(r.e.W_coh == 0.0 && r.e.D == 0.0); /* model 0: nothing on a failure plane */
+}
+
+static void test_mpm_bar_elastic_stiffness_energy(void **state)
+{
+  (void)state;
+  elastic_case(MPM_SCHEME_USL, 4);
+  elastic_case(MPM_SCHEME_USL, 1);
+  elastic_case(MPM_SCHEME_MUSL, 4);
+}
+
+/* (c) nthreads 1 and 2 give bit-identical particle states: the elastic bar, and a
+ * Model 1 bar with an imperfection pulled past its peak (softening, separation and
+ * the bracketed solver run inside the threaded pass). */
+static void threads_case(const mpm_scene *sc, long nsteps, const char *what, long *n_soften, long *n_separate)
+{
+  mpm_sim *a = make_sim(sc, 1), *b = make_sim(sc, 2);
+  assert_int_equal(a->nthreads, 1);
+#ifdef _OPENMP
+  assert_int_equal(b->nthreads, 2);
+#endif
+  run_steps(a, nsteps);
+  run_steps(b, nsteps);
+  assert_int_equal(a->p->n, b->p->n);
+  const size_t nb = a->p->n * sizeof(double);
+  if (memcmp(a->p->x, b->p->x, nb) || memcmp(a->p->y, b->p->y, nb))
+    fail_msg("%s: positions differ between 1 and 2 threads", what);
+  if (memcmp(a->p->vx, b->p->vx, nb) || memcmp(a->p->sxx, b->p->sxx, nb) || memcmp(a->p->lam, b->p->lam, nb))
+    fail_msg("%s: velocities, stresses or lambda differ between 1 and 2 threads", what);
+  if (memcmp(&a->P_grip, &b->P_grip, sizeof a->P_grip) || memcmp(&a->W_ext, &b->W_ext, sizeof a->W_ext))
+    fail_msg("%s: loads or work differ between 1 and 2 threads", what);
+  assert_int_equal(a->n_soften, b->n_soften);
+  assert_int_equal(a->n_separate, b->n_separate);
+  *n_soften = a->n_soften;
+  *n_separate = a->n_separate;
+  mpm_sim_free(a);
+  mpm_sim_free(b);
+}
+
+static void test_mpm_bar_threads_bit_identical(void **state)
+{
+  (void)state;
+  long nsoft, nsep;
+  mpm_scene sc = fig6_scene();
+  threads_case(&sc, 1000, "elastic bar, USL", &nsoft, &nsep);
+  sc.scheme = MPM_SCHEME_MUSL;
+  threads_case(&sc, 1000, "elastic bar, MUSL", &nsoft, &nsep);
+  /* Fig. 6 with the decohesion on: peak at delta 0.1875, separation near 0.375 */
+  sc = fig6_scene();
+  sc.model = MPM_DCOH_MODEL1;
+  sc.imp_factor = 0.9;
+  sc.end_delta = 0.45;
+  sc.scheme = MPM_SCHEME_MUSL;
+  threads_case(&sc, 4500, "Model 1 bar, softening and separation", &nsoft, &nsep);
+  /* the case did reach decohesion, else the comparison proves little */
+  if (!(nsoft > 0 && nsep > 0))
+    fail_msg("Model 1 bar: %ld softening and %ld separation updates; expected both", nsoft, nsep);
+}
+
+/* (e) each rule of mpm_scene_check once, with the key in the message. */
+static void expect_einval(const mpm_scene *sc, const char *key)
+{
+  char err[256] = "";
+  if (mpm_scene_check(sc, err, sizeof err) != MPM_EINVAL)
+    fail_msg("scene with bad %s accepted", key);
+  if (!strstr(err, key))
+    fail_msg("message for bad %s does not name it: \"%s\"", key, err);
+  mpm_sim *s = (mpm_sim *)&err; /* must be reset to NULL */
+  assert_int_equal(mpm_sim_alloc(sc, 1, &s, err, sizeof err), MPM_EINVAL);
+  assert_null(s);
+}
+
+static void test_mpm_bar_scene_check(void **state)
+{
+  (void)state;
+  const mpm_scene ok = fig6_scene();
+  char err[256];
+  assert_int_equal(mpm_scene_check(&ok, err, sizeof err), MPM_OK);
+  mpm_scene d1 = ok;
+  d1.model = MPM_DCOH_MODEL1;
+  assert_int_equal(mpm_scene_check(&d1, err, sizeof err), MPM_OK);
+  mpm_scene sc;
+  sc = ok; sc.L = 0.0; expect_einval(&sc, "L");
+  sc = ok; sc.H = NAN; expect_einval(&sc, "H");
+  sc = ok; sc.E = -1.0; expect_einval(&sc, "E");
+  sc = ok; sc.nu = 0.5; expect_einval(&sc, "nu");
+  sc = ok; sc.nu = -1.0; expect_einval(&sc, "nu");
+  sc = ok; sc.rho = 0.0; expect_einval(&sc, "rho");
+  sc = ok; sc.model = 3; expect_einval(&sc, "model");
+  sc = ok; sc.model = -1; expect_einval(&sc, "model");
+  sc = d1; sc.alpha_deg = 180.0; expect_einval(&sc, "alpha");
+  sc = d1; sc.alpha_deg = -1.0; expect_einval(&sc, "alpha");
+  sc = d1; sc.snf = 0.0; expect_einval(&sc, "snf");
+  sc = d1; sc.stf = -2.0; expect_einval(&sc, "stf");
+  sc = d1; sc.U0 = 0.0; expect_einval(&sc, "U0");
+  sc = d1; sc.s0 = NAN; expect_einval(&sc, "s0");
+  sc = d1; sc.q = 0.0; expect_einval(&sc, "q");
+  sc = d1; sc.sep_threshold = 1.01; expect_einval(&sc, "separation");
+  sc = d1; sc.sep_threshold = 0.0; expect_einval(&sc, "separation");
+  sc = d1; sc.imp_factor = 0.0; expect_einval(&sc, "snf_factor");
+  sc = d1; sc.imp_factor = 1.5; expect_einval(&sc, "snf_factor");
+  sc = ok; sc.h = 0.0; expect_einval(&sc, "h");
+  sc = ok; sc.h = 5.0; expect_einval(&sc, "h"); /* 5 divides neither 192 nor 32 */
+  sc = ok; sc.h = 24.0; expect_einval(&sc, "h"); /* divides L = 192, not H = 32 */
+  sc = ok; sc.ppc = 3; expect_einval(&sc, "ppc");
+  sc = ok; sc.ppc = 0; expect_einval(&sc, "ppc");
+  sc = ok; sc.margin = -1.0; expect_einval(&sc, "margin");
+  sc = ok; sc.scheme = 2; expect_einval(&sc, "scheme");
+  sc = ok; sc.dt = 0.0; expect_einval(&sc, "dt");
+  sc = ok; sc.speed = 0.0; expect_einval(&sc, "speed");
+  sc = ok; sc.end_delta = -0.1; expect_einval(&sc, "end_delta");
+  /* the edges of the allowed ranges are accepted */
+  sc = d1; sc.alpha_deg = 0.0; sc.sep_threshold = 1.0; sc.imp_factor = 1.0; sc.margin = 0.0; sc.ppc = 9;
+  assert_int_equal(mpm_scene_check(&sc, err, sizeof err), MPM_OK);
+  /* decohesion keys are not checked when decohesion is off */
+  sc = ok; sc.q = -1.0; sc.snf = 0.0;
+  assert_int_equal(mpm_scene_check(&sc, err, sizeof err), MPM_OK);
+  mpm_sim_free(NULL);
+}
+
+/* (f) a particle thrown out of the grid: MPM_EDOMAIN from the step that finds it, with
+ * a message that says so; a non-finite position: MPM_ENOTFINITE. */
+static void test_mpm_bar_leaves_grid(void **state)
+{
+  (void)state;
+  const mpm_scene sc = fig6_scene();
+  mpm_sim *s = make_sim(&sc, 1);
+  s->p->vx[s->p->n / 2] = 1e6;
+  char err[256] = "";
+  mpm_status st = MPM_OK;
+  for (int k = 0; k < 3 && st == MPM_OK; k++)
+    st = mpm_sim_step(s, err, sizeof err);
+  assert_int_equal(st, MPM_EDOMAIN);
+  assert_non_null(strstr(err, "left the grid"));
+  mpm_sim_free(s);
+
+  s = make_sim(&sc, 1);
+  s->p->y[3] = NAN;
+  assert_int_equal(mpm_sim_step(s, err, sizeof err), MPM_ENOTFINITE);
+  mpm_sim_free(s);
+}
+
+int main(void)
+{
+  const struct CMUnitTest tests[] = {
+      cmocka_unit_test(test_mpm_bar_momentum_usl),
+      cmocka_unit_test(test_mpm_bar_momentum_musl),
+      cmocka_unit_test(test_mpm_bar_elastic_stiffness_energy),
+      cmocka_unit_test(test_mpm_bar_threads_bit_identical),
+      cmocka_unit_test(test_mpm_bar_scene_check),
+      cmocka_unit_test(test_mpm_bar_leaves_grid),
+  };
+  return cmocka_run_group_tests(tests, NULL, NULL);
+}
