@@ -53,31 +53,40 @@ static int thread_id(void)
 #endif
 }
 
-/* eqs. 2, 3 for the particles [a, b); 1 if one of them is outside the grid. */
-static int p2g_range(mpm_grid *restrict g, const mpm_particles *restrict p, size_t a, size_t b)
+/* eqs. 2, 3 for the particles [a, b); 1 if one of them is outside the grid.  The array
+ * pointers are hoisted into restrict locals: through g-> and p-> every store would make
+ * the compiler reload every pointer. */
+static int p2g_range(const mpm_grid *gg, const mpm_particles *p, size_t a, size_t b)
 {
+  const mpm_grid geo = *gg, *g = &geo; /* a local copy: no store below can alias it */
   const size_t nny = (size_t)g->nny;
+  const double ih = g->ih;
+  double *restrict gm = g->m, *restrict gpx = g->px, *restrict gpy = g->py;
+  double *restrict gfx = g->fx, *restrict gfy = g->fy;
+  const double *restrict x = p->x, *restrict y = p->y, *restrict vx = p->vx, *restrict vy = p->vy;
+  const double *restrict pm = p->m, *restrict V = p->V;
+  const double *restrict sxx = p->sxx, *restrict syy = p->syy, *restrict sxy = p->sxy;
   int out = 0;
   for (size_t k = a; k < b; k++) {
     mpm_shape sh;
-    if (!mpm_shape_at(g, p->x[k], p->y[k], &sh)) {
+    if (!mpm_shape_at(g, x[k], y[k], &sh)) {
       out = 1;
       continue;
     }
     const double wx0 = sh.wx0, wx1 = sh.wx1, wy0 = sh.wy0, wy1 = sh.wy1;
-    const double mm = p->m[k], mvx = mm * p->vx[k], mvy = mm * p->vy[k];
-    const double Vi = p->V[k] * g->ih;
-    const double A = Vi * p->sxx[k], B = Vi * p->sxy[k], C = Vi * p->syy[k];
+    const double mm = pm[k], mvx = mm * vx[k], mvy = mm * vy[k];
+    const double Vi = V[k] * ih;
+    const double A = Vi * sxx[k], B = Vi * sxy[k], C = Vi * syy[k];
     const size_t n00 = sh.n00, n01 = n00 + 1, n10 = n00 + nny, n11 = n10 + 1;
     const double N00 = wx0 * wy0, N10 = wx1 * wy0, N01 = wx0 * wy1, N11 = wx1 * wy1;
-    g->m[n00] += mm * N00;   g->m[n01] += mm * N01;   g->m[n10] += mm * N10;   g->m[n11] += mm * N11;
-    g->px[n00] += mvx * N00; g->px[n01] += mvx * N01; g->px[n10] += mvx * N10; g->px[n11] += mvx * N11;
-    g->py[n00] += mvy * N00; g->py[n01] += mvy * N01; g->py[n10] += mvy * N10; g->py[n11] += mvy * N11;
+    gm[n00] += mm * N00;   gm[n01] += mm * N01;   gm[n10] += mm * N10;   gm[n11] += mm * N11;
+    gpx[n00] += mvx * N00; gpx[n01] += mvx * N01; gpx[n10] += mvx * N10; gpx[n11] += mvx * N11;
+    gpy[n00] += mvy * N00; gpy[n01] += mvy * N01; gpy[n10] += mvy * N10; gpy[n11] += mvy * N11;
     /* f_i = -V sigma . G_i with G_i = (+-wy/h, +-wx/h), eq. 3 */
-    g->fx[n00] += A * wy0 + B * wx0;   g->fy[n00] += B * wy0 + C * wx0;
-    g->fx[n10] += -A * wy0 + B * wx1;  g->fy[n10] += -B * wy0 + C * wx1;
-    g->fx[n01] += A * wy1 - B * wx0;   g->fy[n01] += B * wy1 - C * wx0;
-    g->fx[n11] += -A * wy1 - B * wx1;  g->fy[n11] += -B * wy1 - C * wx1;
+    gfx[n00] += A * wy0 + B * wx0;   gfy[n00] += B * wy0 + C * wx0;
+    gfx[n10] += -A * wy0 + B * wx1;  gfy[n10] += -B * wy0 + C * wx1;
+    gfx[n01] += A * wy1 - B * wx0;   gfy[n01] += B * wy1 - C * wx0;
+    gfx[n11] += -A * wy1 - B * wx1;  gfy[n11] += -B * wy1 - C * wx1;
   }
   return out;
 }
@@ -247,9 +256,10 @@ static inline void constitutive(const mpm_sim *s, mpm_particles *restrict p, siz
                                 mpm_dwork *dw, g2p_acc *acc)
 {
   const mpm_material *m = &s->mat[p->mat[k]];
-  const double sxx = p->sxx[k] + m->E1 * de[0] + m->E2 * de[1];
-  const double syy = p->syy[k] + m->E2 * de[0] + m->E1 * de[1];
-  const double sxy = p->sxy[k] + 2.0 * m->G * de[2];
+  double *restrict psxx = p->sxx, *restrict psyy = p->syy, *restrict psxy = p->sxy;
+  const double sxx = psxx[k] + m->E1 * de[0] + m->E2 * de[1];
+  const double syy = psyy[k] + m->E2 * de[0] + m->E1 * de[1];
+  const double sxy = psxy[k] + 2.0 * m->G * de[2];
   if (m->model != MPM_DCOH_NONE) {
     /* F <= 0 (eq. 23) as se^2 <= (1 - lambda^q)^2, with the strength cached */
     const double tx = sxx * m->nx + sxy * m->ny, ty = sxy * m->nx + syy * m->ny;
@@ -260,34 +270,38 @@ static inline void constitutive(const mpm_sim *s, mpm_particles *restrict p, siz
       return;
     }
   }
-  p->sxx[k] = sxx;
-  p->syy[k] = syy;
-  p->sxy[k] = sxy;
+  psxx[k] = sxx;
+  psyy[k] = syy;
+  psxy[k] = sxy;
 }
 
 /* eqs. 5-7 and the constitutive update for the particles of strip q.  USL: strain from
  * v^L (px, py).  MUSL: velocities were already updated; strain from v' (fx, fy). */
 static void g2p_strip(mpm_sim *s, int q, int musl, mpm_dwork *dw, g2p_acc *acc)
 {
-  const mpm_grid *g = s->g;
-  mpm_particles *restrict p = s->p;
-  const double ih = 1.0 / g->h, dt = s->sc.dt;
+  const mpm_grid geo = *s->g, *g = &geo; /* a local copy: no store below can alias it */
+  mpm_particles *p = s->p;
+  const double ih = g->ih, dt = s->sc.dt, ox = g->ox;
   const size_t nny = (size_t)g->nny;
-  const double *ux = g->px, *uy = g->py;            /* v^L                      */
-  const double *sx = musl ? g->fx : g->px, *sy = musl ? g->fy : g->py; /* strain velocity */
+  const double *restrict ux = g->px, *restrict uy = g->py;                 /* v^L      */
+  const double *restrict dvx = g->fx, *restrict dvy = g->fy;               /* v^L - v  */
+  const double *restrict sx = musl ? g->fx : g->px, *restrict sy = musl ? g->fy : g->py; /* strain velocity */
+  double *restrict x = p->x, *restrict y = p->y, *restrict vx = p->vx, *restrict vy = p->vy;
   const int lo = q * MPM_STRIP - 1, hi = (q + 1) * MPM_STRIP; /* safe columns (mpm_sort.c) */
+  double check = 0.0;
+  int resort = 0;
   for (size_t k = s->strip_start[q]; k < s->strip_start[q + 1]; k++) {
     mpm_shape sh;
-    mpm_shape_at(g, p->x[k], p->y[k], &sh); /* inside: checked by the scatter */
+    mpm_shape_at(g, x[k], y[k], &sh); /* inside: checked by the scatter */
     const double wx0 = sh.wx0, wx1 = sh.wx1, wy0 = sh.wy0, wy1 = sh.wy1;
     const size_t n00 = sh.n00, n01 = n00 + 1, n10 = n00 + nny, n11 = n10 + 1;
     const double N00 = wx0 * wy0, N10 = wx1 * wy0, N01 = wx0 * wy1, N11 = wx1 * wy1;
     /* eq. 5 (and eq. 6 for USL) */
-    p->x[k] += dt * (N00 * ux[n00] + N10 * ux[n10] + N01 * ux[n01] + N11 * ux[n11]);
-    p->y[k] += dt * (N00 * uy[n00] + N10 * uy[n10] + N01 * uy[n01] + N11 * uy[n11]);
+    x[k] += dt * (N00 * ux[n00] + N10 * ux[n10] + N01 * ux[n01] + N11 * ux[n11]);
+    y[k] += dt * (N00 * uy[n00] + N10 * uy[n10] + N01 * uy[n01] + N11 * uy[n11]);
     if (!musl) {
-      p->vx[k] += N00 * g->fx[n00] + N10 * g->fx[n10] + N01 * g->fx[n01] + N11 * g->fx[n11];
-      p->vy[k] += N00 * g->fy[n00] + N10 * g->fy[n10] + N01 * g->fy[n01] + N11 * g->fy[n11];
+      vx[k] += N00 * dvx[n00] + N10 * dvx[n10] + N01 * dvx[n01] + N11 * dvx[n11];
+      vy[k] += N00 * dvy[n00] + N10 * dvy[n10] + N01 * dvy[n01] + N11 * dvy[n11];
     }
     /* eq. 7: gradient of the bilinear velocity field */
     const double a00 = sx[n00], a10 = sx[n10], a01 = sx[n01], a11 = sx[n11];
@@ -298,10 +312,12 @@ static void g2p_strip(mpm_sim *s, int q, int musl, mpm_dwork *dw, g2p_acc *acc)
     const double dxuy = ih * (wy0 * (b10 - b00) + wy1 * (b11 - b01));
     const double de[3] = {dt * dxux, dt * dyuy, 0.5 * dt * (dyux + dxuy)};
     constitutive(s, p, k, de, dw, acc);
-    const double col = (p->x[k] - g->ox) * ih;
-    acc->resort |= col < lo || col >= hi + 1;
-    acc->check += p->vx[k] + p->vy[k] + p->sxx[k] + p->syy[k] + p->sxy[k];
+    const double col = (x[k] - ox) * ih;
+    resort |= col < lo || col >= hi + 1;
+    check += vx[k] + vy[k] + p->sxx[k] + p->syy[k] + p->sxy[k];
   }
+  acc->resort |= resort;
+  acc->check += check;
 }
 
 /* MUSL first half: eq. 6 only, for the particles of strip q. */
