@@ -7,6 +7,8 @@
  *    stress, plane stress: the lateral faces are free), and the reaction at the fixed
  *    end equals the pull (equilibrium);
  *  - energy balance W_ext + KE(0) = KE + SE, and SE = k delta^2 / 2;
+ *  - the Fig. 6 bar with decohesion: peak snf H, work to separation UF H (eq. 25),
+ *    dissipation U0 H, and the balance with the traction work;
  *  - results do not depend on the number of threads (bit for bit: mpm.h promises it);
  *  - the error paths: each rule of mpm_scene_check, a particle that leaves the grid,
  *    a non-finite position.
@@ -248,6 +250,59 @@ static void test_mpm_bar_elastic_stiffness_energy(void **state)
   elastic_case(MPM_SCHEME_MUSL, 4);
 }
 
+/* Fig. 6 with decohesion (Model 1, alpha 90, q 1, imperfection 0.9 at the centre),
+ * pulled to delta 0.45, past separation (analytic: peak at 0.1875, separation at
+ * 0.375, MODEL.md sec. 5).  Against eq. 25 and the closed-form bar:
+ *   peak load Pmax = snf H = 32 (the imperfection is one particle: within 3 %);
+ *   external work to separation = UF x failure area = (q U0 / (q + 1)) H = 6;
+ *   traction work on the failure plane W_coh = 6 as well (sec. 3: UF);
+ *   dissipation D = U0 H = 12 (lambda ~ 1 over one band of cells, Le = h);
+ *   energy balance W_ext + KE(0) = KE + SE + W_coh, to 1 % of W_ext;
+ *   the separated bar carries (almost) nothing: |P| < 3 % of the peak at the end. */
+static void fig6_decohesion_case(int scheme)
+{
+  mpm_scene sc = fig6_scene();
+  sc.model = MPM_DCOH_MODEL1;
+  sc.imp_factor = 0.9;
+  sc.end_delta = 0.45;
+  sc.scheme = scheme;
+  mpm_sim *s = make_sim(&sc, 1);
+  mpm_energy e0, e;
+  mpm_sim_energy(s, &e0);
+  const long nsteps = lround(sc.end_delta / (sc.speed * sc.dt));
+  double Pmax = 0.0, Pend = 0.0;
+  for (long k = 0; k < nsteps; k++) {
+    run_steps(s, 1);
+    Pmax = fmax(Pmax, s->P_grip);
+    if (k >= nsteps - 100)
+      Pend += s->P_grip / 100.0; /* averaged over the last 100 steps */
+  }
+  mpm_sim_energy(s, &e);
+  const double H = sc.H, UF = sc.q * sc.U0 / (sc.q + 1.0);
+  char what[96];
+  snprintf(what, sizeof what, "scheme %d: peak load vs snf H", scheme);
+  assert_rel(Pmax, sc.snf * H, 0.03, what);
+  snprintf(what, sizeof what, "scheme %d: W_ext vs UF H", scheme);
+  assert_rel(e.W_ext, UF * H, 0.02, what);
+  snprintf(what, sizeof what, "scheme %d: W_coh vs UF H", scheme);
+  assert_rel(e.W_coh, UF * H, 0.02, what);
+  snprintf(what, sizeof what, "scheme %d: dissipation vs U0 H", scheme);
+  assert_rel(e.D, sc.U0 * H, 0.02, what);
+  snprintf(what, sizeof what, "scheme %d: W_ext + KE0 - (KE + SE + W_coh)", scheme);
+  assert_abs(e.W_ext + e0.KE - (e.KE + e.SE + e.W_coh), 0.0, 0.01 * e.W_ext, what);
+  snprintf(what, sizeof what, "scheme %d: load after separation", scheme);
+  assert_abs(Pend, 0.0, 0.03 * Pmax, what);
+  assert_true(s->n_separate >= (long)(H / sc.h)); /* at least one band across the bar */
+  mpm_sim_free(s);
+}
+
+static void test_mpm_bar_fig6_decohesion_energy(void **state)
+{
+  (void)state;
+  fig6_decohesion_case(MPM_SCHEME_USL);
+  fig6_decohesion_case(MPM_SCHEME_MUSL);
+}
+
 /* (c) nthreads 1 and 2 give bit-identical particle states: the elastic bar, and a
  * Model 1 bar with an imperfection pulled past its peak (softening, separation and
  * the bracketed solver run inside the threaded pass). */
@@ -385,6 +440,7 @@ int main(void)
       cmocka_unit_test(test_mpm_bar_momentum_usl),
       cmocka_unit_test(test_mpm_bar_momentum_musl),
       cmocka_unit_test(test_mpm_bar_elastic_stiffness_energy),
+      cmocka_unit_test(test_mpm_bar_fig6_decohesion_energy),
       cmocka_unit_test(test_mpm_bar_threads_bit_identical),
       cmocka_unit_test(test_mpm_bar_scene_check),
       cmocka_unit_test(test_mpm_bar_leaves_grid),
