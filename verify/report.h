@@ -39,6 +39,7 @@ typedef struct {
   int role;             /* REP_* mask                                                         */
   double tag;           /* role-specific: dt / dt_crit, separation threshold, ...            */
   double cost;          /* estimated particle-updates, to start the longest runs first       */
+  double last_snap;     /* the scene's last snapshot (REP_PIC results must hold it); -1 none  */
   /* where its results are and how the run ended */
   char dir[REP_PATH];   /* folder with summary.json, load.csv, snapshots                      */
   int have;             /* 1 if dir holds a summary.json                                     */
@@ -80,6 +81,8 @@ typedef struct {
 
 /* report_run.c */
 int ver_report_mkdirs(const char *path);
+/* path made absolute against the working folder (not resolved further). */
+void ver_report_abs(const char *path, char *out, size_t len);
 /* Adds a case (id made from the parameters); returns its index or -1 if full. */
 int ver_report_add(rep_ctx *r, const char *scene, double h, int ppc, double dt, double until,
                    const char *set1, const char *set2, int role, double tag);

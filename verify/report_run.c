@@ -29,6 +29,15 @@ double ver_report_now(void)
   return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
+void ver_report_abs(const char *path, char *out, size_t len)
+{
+  char cwd[REP_PATH];
+  if (path[0] == '/' || !getcwd(cwd, sizeof cwd))
+    snprintf(out, len, "%s", path);
+  else
+    snprintf(out, len, "%.1000s/%.1000s", cwd, path);
+}
+
 /* mkdir -p; 0 on success. */
 int ver_report_mkdirs(const char *path)
 {
@@ -100,7 +109,10 @@ int ver_report_add(rep_ctx *r, const char *scene, double h, int ppc, double dt, 
   ver_scene vs;
   snprintf(path, sizeof path, "%s/%s.ini", r->scenes, scene);
   double L = 192, H = 32, dts = 0.0125 * h, end = 2, speed = 0.001;
+  c->last_snap = -1;
   if (ver_scene_load(path, &vs, err, sizeof err) == 0) {
+    for (int j = 0; j < vs.nsnap; j++)
+      c->last_snap = fmax(c->last_snap, vs.snap[j]);
     L = vs.sc.L;
     H = vs.sc.H;
     dts = vs.sc.dt * h / vs.sc.h;
@@ -148,10 +160,58 @@ static void write_exit_status(const char *dir, int s)
   }
 }
 
+/* Reads a whole (small) file; NULL if it cannot. */
+static char *read_all(const char *path, long *len)
+{
+  FILE *f = fopen(path, "rb");
+  if (!f)
+    return NULL;
+  char *buf = malloc(65536);
+  *len = buf ? (long)fread(buf, 1, 65536, f) : 0;
+  fclose(f);
+  return buf;
+}
+
+/* 1 if the two files have the same bytes (scene files are small). */
+static int same_file(const char *a, const char *b)
+{
+  long la = 0, lb = 0;
+  char *x = read_all(a, &la), *y = read_all(b, &lb);
+  const int same = x && y && la == lb && !memcmp(x, y, (size_t)la);
+  free(x);
+  free(y);
+  return same;
+}
+
+/* Keeps a copy of the scene file beside the results, so that a cached result is
+ * reused only while the scene file is unchanged. */
+static void keep_scene(const rep_ctx *r, const rep_case *c)
+{
+  char src[REP_PATH + 64], dst[REP_PATH + 32];
+  snprintf(src, sizeof src, "%s/%s.ini", r->scenes, c->scene);
+  snprintf(dst, sizeof dst, "%s/scene.ini", c->dir);
+  long n = 0;
+  char *buf = read_all(src, &n);
+  FILE *f = buf ? fopen(dst, "wb") : NULL;
+  if (f) {
+    fwrite(buf, 1, (size_t)n, f);
+    fclose(f);
+  }
+  free(buf);
+}
+
 /* Uses the results in dir if they are complete (or, for a deliberately unstable run,
  * if the run ended at all).  1 if taken. */
-static int try_reuse(rep_case *c, const char *dir)
+static int try_reuse(const rep_ctx *r, rep_case *c, const char *dir, int check_scene)
 {
+  char p[REP_PATH + 64], q[REP_PATH + 64];
+  snprintf(p, sizeof p, "%s/scene.ini", dir);
+  snprintf(q, sizeof q, "%s/%s.ini", r->scenes, c->scene);
+  if (check_scene && !same_file(p, q))
+    return 0; /* made with another version of the scene file */
+  snprintf(p, sizeof p, "%s/snap-d%.3f.csv", dir, c->last_snap);
+  if ((c->role & REP_PIC) && c->last_snap >= 0 && access(p, R_OK) != 0)
+    return 0; /* a shorter run under the same case id: no pictures */
   char save[REP_PATH];
   snprintf(save, sizeof save, "%s", c->dir);
   snprintf(c->dir, sizeof c->dir, "%s", dir);
@@ -257,13 +317,13 @@ int ver_report_run_cases(rep_ctx *r)
     char d[REP_PATH];
     if (r->from[0]) {
       snprintf(d, sizeof d, "%.800s/%.150s", r->from, c->id);
-      if (try_reuse(c, d)) {
+      if (try_reuse(r, c, d, 0)) {
         reused++;
         continue;
       }
     }
     snprintf(d, sizeof d, "%.800s/%.150s", r->cache, c->id);
-    if (!r->rerun && try_reuse(c, d)) {
+    if (!r->rerun && try_reuse(r, c, d, 1)) {
       reused++;
       continue;
     }
@@ -281,7 +341,7 @@ int ver_report_run_cases(rep_ctx *r)
   qsort(todo, (size_t)ntodo, sizeof todo[0], by_cost_desc);
 
   /* argument vectors: every string lives in one block per case */
-  enum { NARG = 32, ALEN = 160 };
+  enum { NARG = 32, ALEN = REP_PATH + 64 };
   char *store = calloc((size_t)ntodo, NARG * ALEN);
   char ***argvs = calloc((size_t)ntodo, sizeof *argvs);
   char **argvbuf = calloc((size_t)ntodo * (NARG + 1), sizeof *argvbuf);
@@ -301,9 +361,9 @@ int ver_report_run_cases(rep_ctx *r)
     char *s = store + (size_t)i * NARG * ALEN;
     int k = 0;
 #define ARG(...) (snprintf(s + (size_t)k * ALEN, ALEN, __VA_ARGS__), av[k] = s + (size_t)k * ALEN, k++)
-    ARG("%s", r->exe);
+    av[k++] = r->exe;
     ARG("run");
-    ARG("%.100s/%.40s.ini", r->scenes, c->scene);
+    ARG("%.900s/%.40s.ini", r->scenes, c->scene);
     ARG("--h");
     ARG("%.17g", c->h);
     ARG("--ppc");
@@ -326,7 +386,7 @@ int ver_report_run_cases(rep_ctx *r)
     ARG("1");
     ARG("--quiet");
     ARG("--out");
-    ARG("%.150s", c->dir);
+    ARG("%.1000s", c->dir);
 #undef ARG
     av[k] = NULL;
     argvs[i] = av;
@@ -341,6 +401,7 @@ int ver_report_run_cases(rep_ctx *r)
     rep_case *c = todo[i];
     c->exit_status = status[i];
     write_exit_status(c->dir, status[i]);
+    keep_scene(r, c);
     if (ver_report_read_summary(c) == 0)
       c->have = 1;
     else

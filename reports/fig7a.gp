@@ -1,0 +1,8 @@
+# Fig. 7(a): decohesion around the crack at delta = 0.24, 0.25, 0.26, 0.28 (h = 2)
+W = 1100; Hgt = 900
+load gpdir.'/common.gp'
+id = pic_fig7; hw = pic_fig7_hw; endd = pic_fig7_end
+ds = "0.24 0.25 0.26 0.28"; rows = 2; cols = 2
+x0 = 70; x1 = 122; y0 = -2; y1 = 34
+ttl = sprintf("Fig. 7(a): Mode I, {/Symbol a} = 60, decohesion {/Symbol l} near the crack (%s)", id)
+load gpdir.'/particles.gp'

@@ -1,0 +1,17 @@
+# Snapback scenes: analytic g < 1 against the runs
+W = 1500; Hgt = 520
+load gpdir.'/common.gp'
+set multiplot layout 1,3 title "Snapback scenes (analytic g < 1: the load should drop vertically at the peak)"
+set title sprintf("a45, {/Symbol a} = 45 (g = %.3g)", g_a45)
+ids = id_a45_h4_ppc1.' '.id_a45_h2_ppc1; labs = '"h = 4" "h = 2"'
+sc = 'a45'; xmax = 1.1
+load gpdir.'/loadcurves.gp'
+set title sprintf("a30, {/Symbol a} = 30 (g = %.3g)", g_a30)
+ids = id_a30_h4_ppc1.' '.id_a30_h2_ppc1
+sc = 'a30'; xmax = 1.1
+load gpdir.'/loadcurves.gp'
+set title sprintf("fig8, Mode II, {/Symbol a} = 60 (g = %.3g)", g_fig8)
+ids = pic_fig8; labs = '"h = 2"'
+sc = 'fig8'; xmax = 1.1
+load gpdir.'/loadcurves.gp'
+unset multiplot
