@@ -604,9 +604,9 @@ static void test_mpm_decohesion_not_finite(void **state)
 }
 
 /* The same with GSL's default error handler, as any other caller of the library gets
- * it: mpm.h promises MPM_ENOTFINITE, but a NaN trial stress reaches
- * gsl_root_fsolver_set (solve_dl in mpm_decohesion.c), whose default handler aborts.
- * Run in a child process so that the abort is observed, not suffered. */
+ * it: mpm.h promises MPM_ENOTFINITE, and a NaN must never reach gsl_root_fsolver_set,
+ * whose default handler aborts.  Run in a child process so that an abort is observed,
+ * not suffered. */
 static void test_mpm_decohesion_not_finite_default_gsl_handler(void **state)
 {
   (void)state;
@@ -620,22 +620,7 @@ static void test_mpm_decohesion_not_finite_default_gsl_handler(void **state)
   }
   int status = 0;
   assert_int_equal(waitpid(pid, &status, 0), pid);
-  if (WIFSIGNALED(status)) {
-    /* KNOWN KERNEL BUG (reported to the lead): mpm_dcoh_update aborts the process (GSL
-     * default error handler, "function value is not finite" in brent.c) on a
-     * non-finite strain increment under Model 1/2 instead of returning
-     * MPM_ENOTFINITE, unless the caller has turned GSL's handler off.  cmocka 1.1.5
-     * prints skip() as "not ok # SKIP", which meson's TAP parser counts as a FAIL, so
-     * the bug is announced on a TAP comment line instead; DELAM_KNOWN_BUGS_FAIL=1
-     * turns it into a failure.  Delete this block when the kernel is fixed. */
-    printf("# KNOWN KERNEL BUG: mpm_dcoh_update aborts (signal %d) on a non-finite increment "
-           "with GSL's default error handler instead of returning MPM_ENOTFINITE\n",
-           WTERMSIG(status));
-    const char *strict = getenv("DELAM_KNOWN_BUGS_FAIL");
-    if (strict && strcmp(strict, "1") == 0)
-      fail_msg("known kernel bug: abort on a non-finite increment");
-    return;
-  }
+  assert_false(WIFSIGNALED(status)); /* no abort from GSL's default handler */
   assert_true(WIFEXITED(status));
   assert_int_equal(WEXITSTATUS(status), 0);
 }
