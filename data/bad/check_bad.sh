@@ -1,0 +1,95 @@
+#!/usr/bin/env bash
+# check_bad.sh DELAM - every bad scene in data/bad/ and every bad option of
+# `delam run` must be refused where it enters: exit status 2, exactly one line on
+# stderr holding the expected fragment, and no output folder created or touched.
+# A scene's expected fragment is its first line:  ; expect: FRAGMENT
+# Prints TAP; exits 1 if a check failed.
+set -u
+delam=${1:?usage: check_bad.sh path/to/delam}
+here=$(cd "$(dirname "$0")" && pwd)
+scenes=$(cd "$here/../scenes" && pwd)
+tmp=$(mktemp -d "${TMPDIR:-/tmp}/delam-bad.XXXXXX")
+trap 'rm -rf "$tmp"' EXIT
+n=0 pass=0 fail=0
+
+# check ID FRAGMENT ARGS...: runs delam run ARGS --out $tmp/out, checks the rules.
+check() {
+  local id=$1 frag=$2 why=""
+  shift 2
+  n=$((n + 1))
+  rm -rf "$tmp/out"
+  "$delam" run "$@" --out "$tmp/out" --quiet >"$tmp/stdout" 2>"$tmp/stderr"
+  local rc=$?
+  local lines
+  lines=$(wc -l <"$tmp/stderr")
+  if [ "$rc" != 2 ]; then why="exit status $rc, not 2"
+  elif [ "$lines" != 1 ]; then why="$lines lines on stderr, not 1"
+  elif ! grep -qF -- "$frag" "$tmp/stderr"; then why="stderr lacks '$frag'"
+  elif [ -e "$tmp/out" ]; then why="the output folder was created"
+  elif [ -s "$tmp/stdout" ]; then why="something on stdout"
+  fi
+  if [ -z "$why" ]; then
+    pass=$((pass + 1))
+    echo "ok $n - $id"
+  else
+    fail=$((fail + 1))
+    echo "not ok $n - $id: $why"
+    sed 's/^/#   stderr: /' "$tmp/stderr"
+  fi
+}
+
+# 1. One bad scene per rule.
+for f in "$here"/bad_*.ini; do
+  frag=$(sed -n '1s/^; expect: //p' "$f")
+  if [ -z "$frag" ]; then
+    n=$((n + 1)); fail=$((fail + 1))
+    echo "not ok $n - $(basename "$f"): no '; expect: ' first line"
+    continue
+  fi
+  check "scene-$(basename "$f" .ini)" "$frag" "$f"
+done
+
+# 2. Bad options of delam run on a good scene.
+fig6=$scenes/fig6.ini
+check opt-unknown "unknown option '--bogus'" "$fig6" --bogus
+check opt-h-word "--h: 'abc' is not a number > 0" "$fig6" --h abc
+check opt-h-missing "--h: '--out' is not a number > 0" "$fig6" --h
+check opt-h-not-dividing "grid.h: 7 does not divide bar.L = 192" "$fig6" --h 7
+check opt-ppc-3 "command line: grid.ppc: 3 is not a perfect square" "$fig6" --ppc 3
+check opt-ppc-fraction "grid.ppc: '2.5' is not an integer" "$fig6" --ppc 2.5
+check opt-dt-zero "--dt: '0' is not a number > 0" "$fig6" --dt 0
+check opt-dt-cfl "command line: time.dt: 1 is at or above the CFL bound" "$fig6" --dt 1
+check opt-until-nan "--until: 'nan' is not a number > 0" "$fig6" --until nan
+check opt-threads-word "--threads: 'x' is not a number > 0" "$fig6" --threads x
+check opt-set-nokey "'nokey': expected section.key=value" "$fig6" --set nokey
+check opt-set-unknown "material.Ex=1: unknown key (allowed in [material]: E, nu, rho)" "$fig6" --set material.Ex=1
+check opt-set-section "nosuch.E=1: unknown key (allowed sections: bar," "$fig6" --set nosuch.E=1
+check opt-set-range "command line: material.nu: 0.5 is out of range (in (-1, 0.5))" "$fig6" --set material.nu=0.5
+check opt-set-junk "command line: material.E: '10x' is not a number" "$fig6" --set material.E=10x
+check opt-set-empty "command line: material.E: empty value" "$fig6" --set material.E=
+check opt-set-newline "a control character" "$fig6" --set "material.E=1
+2"
+check opt-no-scene "no scene file"
+check opt-two-scenes "one scene file only" "$fig6" "$fig6"
+check file-missing "nosuch.ini: cannot open: No such file or directory" "$tmp/nosuch.ini"
+check file-directory "cannot read: Is a directory" "$here"
+printf '[bar]\nL = 192\x00\n' >"$tmp/nul.ini"
+check file-nul "nul.ini:2: a NUL byte: not a text file" "$tmp/nul.ini"
+
+# 3. An existing output folder is not touched by a refused scene.
+n=$((n + 1))
+mkdir -p "$tmp/keep"
+echo '{"complete": true}' >"$tmp/keep/summary.json"
+before=$(ls -l --time-style=+%s.%N "$tmp/keep"; md5sum "$tmp/keep/summary.json")
+"$delam" run "$here/bad_E_zero.ini" --out "$tmp/keep" --quiet 2>/dev/null
+rc=$?
+after=$(ls -l --time-style=+%s.%N "$tmp/keep"; md5sum "$tmp/keep/summary.json")
+if [ "$rc" = 2 ] && [ "$before" = "$after" ]; then
+  pass=$((pass + 1)); echo "ok $n - existing-out-untouched"
+else
+  fail=$((fail + 1)); echo "not ok $n - existing-out-untouched: exit $rc, folder changed: $([ "$before" = "$after" ] && echo no || echo yes)"
+fi
+
+echo "1..$n"
+echo "# $pass passed, $fail failed"
+[ "$fail" = 0 ]

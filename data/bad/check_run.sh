@@ -1,0 +1,92 @@
+#!/usr/bin/env bash
+# check_run.sh DELAM - what `delam run` does when a run goes wrong after it started:
+#   nonfinite  a time step far above the CFL bound (--allow-unstable) stops the run with
+#              exit status 1 and a message naming the step, the particle and the field;
+#   sigterm,   a signal stops the run cleanly: exit status 130, summary.json with
+#   sigint     "complete": false, no *.tmp file left behind;
+#   determinism  the same scene run twice gives byte-identical load.csv, energy.csv,
+#              final.csv (and snapshots); summary.json differs only in its timings.
+# Prints TAP; exits 1 if a check failed.
+set -u
+delam=${1:?usage: check_run.sh path/to/delam}
+here=$(cd "$(dirname "$0")" && pwd)
+fig6=$(cd "$here/../scenes" && pwd)/fig6.ini
+tmp=$(mktemp -d "${TMPDIR:-/tmp}/delam-run.XXXXXX")
+trap 'rm -rf "$tmp"' EXIT
+n=0 fail=0
+
+result() { # result ID WHY (empty WHY: pass)
+  n=$((n + 1))
+  if [ -z "$2" ]; then echo "ok $n - $1"; else fail=$((fail + 1)); echo "not ok $n - $1: $2"; fi
+}
+
+# "complete": false in summary.json, and no *.tmp file, in folder $1; else why not.
+partial_ok() {
+  if [ ! -f "$1/summary.json" ]; then echo "no summary.json"
+  elif ! grep -q '"complete":[[:space:]]*false' "$1/summary.json"; then echo "summary.json does not say complete: false"
+  elif ls "$1"/*.tmp >/dev/null 2>&1; then echo "*.tmp files left: $(cd "$1" && echo *.tmp)"
+  fi
+}
+
+# 1. Non-finite: E = 1e300 puts the CFL bound near 1e-150, so dt = 0.1 is far above
+#    it; without decohesion nothing caps the stress, which overflows at once.
+out=$tmp/nonfinite
+"$delam" run "$fig6" --set decohesion.model=0 --set material.E=1e300 --allow-unstable \
+  --out "$out" --quiet >/dev/null 2>"$tmp/err"
+rc=$?
+why=""
+if [ "$rc" != 1 ]; then why="exit status $rc, not 1"
+elif ! grep -qE 'non-finite value: step [0-9]+: particle at X = [-0-9.e+]+, Y = [-0-9.e+]+: [a-z_]+ is not finite' "$tmp/err"
+then why="no message naming step, particle and field: $(head -1 "$tmp/err")"
+else why=$(partial_ok "$out")
+fi
+result nonfinite "$why"
+
+# 2. Signals: a run of some seconds (h = 1, 4 particles per cell, one thread), stopped
+#    a second after it has started its time loop (the output folder exists by then).
+for sig in TERM INT; do
+  out=$tmp/sig$sig
+  "$delam" run "$fig6" --h 1 --ppc 4 --threads 1 --out "$out" --quiet >/dev/null 2>"$tmp/err" &
+  pid=$!
+  for _ in $(seq 100); do [ -d "$out" ] && break; sleep 0.1; done
+  sleep 1
+  kill -s "$sig" "$pid"
+  wait "$pid"
+  rc=$?
+  why=""
+  if [ "$rc" != 130 ]; then why="exit status $rc, not 130 ($(head -1 "$tmp/err"))"
+  elif ! grep -q 'stopped by a signal at step' "$tmp/err"; then why="no 'stopped by a signal' message"
+  else why=$(partial_ok "$out")
+  fi
+  result "sig${sig,,}" "$why"
+done
+
+# 3. Determinism: two runs into two folders, compared byte by byte.  One thread, as
+#    OpenMP threads that wait by spinning are slow when the cores are shared.
+for k in 1 2; do
+  "$delam" run "$fig6" --until 0.1 --set output.snapshots=0.05 --threads 1 --out "$tmp/det$k" --quiet >/dev/null 2>&1 ||
+    echo "# run $k failed"
+done
+why=""
+for f in load.csv energy.csv final.csv final.vtk snap-d0.050.csv; do
+  cmp -s "$tmp/det1/$f" "$tmp/det2/$f" || why="$why $f differs or is missing;"
+done
+timings='"(wall_s|cpu_s|updates_per_s)"'
+if ! diff <(grep -vE "$timings" "$tmp/det1/summary.json") <(grep -vE "$timings" "$tmp/det2/summary.json") >/dev/null
+then why="$why summary.json differs beyond its timings"
+fi
+result determinism "$why"
+
+# 4. The same with one thread and with two: the scatter is coloured so that the sums
+#    do not depend on the thread count.  Passive waiting: spinning threads on shared
+#    cores make this tiny run take seconds.
+OMP_WAIT_POLICY=passive "$delam" run "$fig6" --until 0.1 --set output.snapshots=0.05 --threads 2 --out "$tmp/det3" --quiet >/dev/null 2>&1
+why=""
+for f in load.csv energy.csv final.csv; do
+  cmp -s "$tmp/det1/$f" "$tmp/det3/$f" || why="$why $f differs or is missing;"
+done
+result determinism-threads "$why"
+
+echo "1..$n"
+echo "# $((n - fail)) passed, $fail failed"
+[ "$fail" = 0 ]
