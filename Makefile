@@ -1,13 +1,15 @@
 # Thin wrapper around meson so that a fresh Debian machine needs two commands:
 #   make report   install what is missing, build, reproduce the paper, write reports/out/
 #   make check    install what is missing, build, run the test suite
+#   make check-asan   the kernel, analytic and robustness tests under AddressSanitizer + UBSan
+#   make fuzz     build the libFuzzer target for the scene parser and run it FUZZ_TIME seconds
 BUILD     ?= build
 MESONFLAGS ?=
 DEBS = meson ninja-build pkg-config gcc libgsl-dev libcmocka-dev libinih-dev \
        libcjson-dev gnuplot-nox
 SUDO = $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-.PHONY: all deps build check check-asan report report-full bench clean
+.PHONY: all deps build check check-asan fuzz report report-full bench clean
 
 all: build
 
@@ -31,6 +33,32 @@ build: deps $(BUILD)/build.ninja
 check: build
 	meson test -C $(BUILD) --print-errorlogs
 
+# Sanitizers: a debug build in build-asan; not the long verify suite.
+BUILD_ASAN ?= build-asan
+$(BUILD_ASAN)/build.ninja:
+	meson setup $(BUILD_ASAN) -Dbuildtype=debug -Db_sanitize=address,undefined -Db_lundef=false $(MESONFLAGS)
+
+check-asan: deps $(BUILD_ASAN)/build.ninja
+	ninja -C $(BUILD_ASAN)
+	ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+	  meson test -C $(BUILD_ASAN) --print-errorlogs --suite kernel --suite analytic --suite robustness
+
+# libFuzzer (clang): the scene parser and validator with the kernel sources they link
+# against.  New inputs go to build-fuzz/corpus; fuzz/corpus holds the seeds (keep it
+# small: libFuzzer -merge=1 into it).  Crashes are written as build-fuzz/crash-*.
+FUZZ_CC ?= clang
+FUZZ_TIME ?= 60
+FUZZ_SRC = fuzz/fuzz_scene.c verify/scene.c $(wildcard kernel/*.c)
+build-fuzz/fuzz_scene: $(FUZZ_SRC) verify/scene.h kernel/mpm.h
+	@mkdir -p build-fuzz/corpus
+	$(FUZZ_CC) -g -O1 -std=c11 -D_POSIX_C_SOURCE=200809L -Wall -Wextra -Wno-unknown-pragmas \
+	  -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined -Ikernel -Iverify \
+	  $(FUZZ_SRC) -linih -lgsl -lm -o $@
+
+fuzz: deps build-fuzz/fuzz_scene
+	build-fuzz/fuzz_scene -max_total_time=$(FUZZ_TIME) -dict=fuzz/scene.dict -max_len=8192 \
+	  -artifact_prefix=build-fuzz/ -print_final_stats=1 build-fuzz/corpus fuzz/corpus
+
 report: build
 	$(BUILD)/delam report
 
@@ -42,4 +70,4 @@ bench: build
 	$(BUILD)/delam bench
 
 clean:
-	rm -rf $(BUILD)
+	rm -rf $(BUILD) $(BUILD_ASAN) build-fuzz
