@@ -2,7 +2,7 @@
 W = 1300; Hgt = 560
 load gpdir.'/common.gp'
 scs = "fig6 fig7 fig8"
-set multiplot layout 1,2 title "Convergence under refinement (1 particle per cell; lines: least-squares fit err = C h^p)"
+set multiplot layout 1,2 title "Convergence under refinement (1 particle per cell; lines: least-squares fit err = C h^p; open circles: runs that stopped early, not fitted)"
 set logscale xy
 set xrange [0.8:10]
 set xtics (1, 2, 4, 8)
@@ -10,12 +10,14 @@ set xlabel "grid spacing h"
 set key bottom right
 set ylabel "RMS load error / P_{max}"
 set title "load-deflection curve"
-plot for [i=1:3] sprintf('data/sweep-%s-ppc1.dat', word(scs, i)) u 1:2 w p pt 7 ps 1.5 lc i \
+plot for [i=1:3] sprintf('data/sweep-%s-ppc1.dat', word(scs, i)) u 1:($5 > 0.5 ? $2 : 1/0) w p pt 7 ps 1.5 lc i \
        title sprintf("%s (p = %.2f)", word(scs, i), value('p_curve_'.word(scs, i))), \
+     for [i=1:3] sprintf('data/sweep-%s-ppc1.dat', word(scs, i)) u 1:($5 > 0.5 ? 1/0 : $2) w p pt 6 ps 1.5 lc i notitle, \
      for [i=1:3] exp(value('c_curve_'.word(scs, i))) * x**value('p_curve_'.word(scs, i)) w l dt 2 lc i notitle
 set ylabel "|D / D_{analytic} - 1|"
 set title "dissipated energy at the end of the run"
-plot for [i=1:3] sprintf('data/sweep-%s-ppc1.dat', word(scs, i)) u 1:3 w p pt 7 ps 1.5 lc i \
+plot for [i=1:3] sprintf('data/sweep-%s-ppc1.dat', word(scs, i)) u 1:($5 > 0.5 ? $3 : 1/0) w p pt 7 ps 1.5 lc i \
        title sprintf("%s (p = %.2f)", word(scs, i), value('p_diss_'.word(scs, i))), \
+     for [i=1:3] sprintf('data/sweep-%s-ppc1.dat', word(scs, i)) u 1:($5 > 0.5 ? 1/0 : $3) w p pt 6 ps 1.5 lc i notitle, \
      for [i=1:3] exp(value('c_diss_'.word(scs, i))) * x**value('p_diss_'.word(scs, i)) w l dt 2 lc i notitle
 unset multiplot

@@ -3,7 +3,7 @@ load gpdir.'/common.gp'
 ids = ''; labs = ''
 do for [h in "8 4 2 1"] {
   id = value('sw_fig6_h'.h.'_ppc1')
-  if (strlen(id) > 0) { ids = ids.' '.id; labs = labs.' "h = '.h.'"' }
+  if (strlen(id) > 0) { ids = ids.' '.id; labs = labs.' "h = '.h.value('sw_fig6_h'.h.'_ppc1_note').'"' }
 }
 set title "Fig. 6(b): transverse laminate ({/Symbol a} = 90), 1 particle per cell"
 sc = 'fig6'; xmax = 0.6

@@ -1,6 +1,6 @@
 # Fig. 7(c): displacement trajectories at delta = 0.35 (h = 2)
-W = 1300; Hgt = 420
+W = 1300; Hgt = 380
 load gpdir.'/common.gp'
-id = pic_fig7; endd = pic_fig7_end; d = 0.35; s = 15
+hw = pic_fig7_hw; id = pic_fig7; endd = pic_fig7_end; d = 0.35; s = 10
 ttl = sprintf("Fig. 7(c): Mode I, displacements at {/Symbol d} = 0.35, scaled by %g (%s)", s, id)
 load gpdir.'/trajectories.gp'

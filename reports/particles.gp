@@ -8,6 +8,7 @@ set cblabel "{/Symbol l}"
 set xlabel "x"
 set ylabel "y"
 unset key
+unset grid
 if (!exists("x0")) { x0 = -8; x1 = 196; y0 = -4; y1 = 36 }
 set xrange [x0:x1]
 set yrange [y0:y1]
@@ -16,7 +17,7 @@ do for [i=1:words(ds)] {
   f = snap(id, d)
   set title sprintf("{/Symbol d} = %.2f", d)
   if (exists_file(f)) {
-    plot f u 3:4:(hw):(hw):7 w boxxy fs solid 1.0 noborder lc palette
+    plot f u 3:4:(1.04*hw):(1.04*hw):7 w boxxy fs solid 1.0 noborder lc palette
   } else {
     set label 1 sprintf("no picture: the run ended at {/Symbol d} = %.3g", endd) at graph 0.5,0.5 center
     plot 1/0

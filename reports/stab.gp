@@ -10,6 +10,9 @@ set yrange [*:2]
 set arrow 1 from 1, graph 0 to 1, graph 1 nohead dt 2 lc rgb '#888888'
 set arrow 2 from 0.1/dt_crit8, graph 0 to 0.1/dt_crit8, graph 1 nohead dt 3 lc rgb '#4444aa'
 set label 2 "paper's dt = 0.1" at 0.1/dt_crit8, graph 0.95 offset 0.5,0 font ',10'
+set arrow 3 from 1/sqrt(2), graph 0 to 1/sqrt(2), graph 1 nohead dt 2 lc rgb '#cc6666'
+set label 3 "h/(c{/Symbol \326}2)" at 1/sqrt(2), graph 0.5 right offset -0.5,0 font ',10' tc rgb '#cc6666'
+set label 4 "h/c" at 1, graph 0.5 right offset -0.5,0 font ',10' tc rgb '#888888'
 set key top left
 set title "outcome of each run (blown up: drawn at the top)"
 plot 'data/stab.dat' u 1:($3 == 0 ? $4 : 1/0) w p pt 7 ps 2 lc rgb '#2a9d2a' title 'stable', \

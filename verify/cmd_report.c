@@ -85,7 +85,7 @@ typedef struct {
   fig f[MAX_FIGS];
   int nf;
   cJSON *verify;    /* --from DIR/verify.json, or NULL */
-  int sweep_own;    /* 1: our own sweep (not --from) */
+  int sweep_from;   /* sweep points taken from --from */
 } report;
 
 static fig *add_fig(report *R, const char *name, const char *title)
@@ -102,9 +102,9 @@ static fig *add_fig(report *R, const char *name, const char *title)
 
 /* ---- the case list ---- */
 static const char *const sweep_scene[] = {"fig6", "fig7", "fig8"};
-static const double sweep_until[] = {0.6, 0.6, 0.7};
+static const double sweep_until[] = {0.6, 1.2, 1.2};
 #define NSWEEP 3
-static const double stab_ratio[] = {0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.85, 0.9, 1.0, 1.1};
+static const double stab_ratio[] = {0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.72, 0.74, 0.76, 0.78, 0.8, 0.9, 1.0, 1.1};
 #define NSTAB (int)(sizeof stab_ratio / sizeof stab_ratio[0])
 
 static double scene_dt_crit(const rep_ctx *r, const char *scene, double h)
@@ -215,13 +215,15 @@ static void build_cases(report *R)
   ver_report_add(r, "fig8", 2, 1, 0, 0, NULL, NULL, REP_PIC | REP_SNAP, 0);
   /* sweep over h and particles per cell, to a little past separation */
   const int from_n = r->from[0] ? scan_from(R) : 0;
-  R->sweep_own = from_n < 4;
+  R->sweep_from = from_n;
   if (from_n)
     fprintf(stderr, PROG ": %d runs of %s join the h x ppc sweep\n", from_n, r->from);
-  if (R->sweep_own)
-    for (int s = 0; s < NSWEEP; s++)
+  /* the sweep's points that --from does not have are run here */
+  for (int s = 0; s < NSWEEP; s++)
       for (int ppc = 1; ppc <= 9; ppc += ppc == 1 ? 3 : 5)
-        for (double h = 8; h >= (ppc == 1 ? 1 : 2); h /= 2)
+        /* 9 ppc at h = 2 only where it is cheap (fig6 stops at 0.6): inclined runs to 1.2
+         * at h = 2 with 9 ppc cost ~28 CPU-s each, a fifth of the report's budget */
+        for (double h = 8; h >= (ppc == 1 ? 1 : ppc == 9 && s > 0 ? 4 : 2); h /= 2)
           if (find_sweep(r, sweep_scene[s], h, ppc) < 0)
             ver_report_add(r, sweep_scene[s], h, ppc, 0, sweep_until[s], NULL, NULL, REP_SWEEP, 0);
   /* time-step sweep: fig6, h = 8, 1 ppc, to delta 0.5 */
@@ -347,7 +349,7 @@ static void write_sweeps(const rep_ctx *r, FILE *vars)
         const rep_case *c = &r->c[k];
         fprintf(f, "%g,%.6g,%.6g,%.6g,%d,%.0f\n", h, c->curve_err, fabs(c->diss_err), c->cpu_s, c->complete,
                 c->particles);
-        if (ppc == 1 && n < 8) {
+        if (ppc == 1 && n < 8 && c->complete) {
           hh[n] = h;
           ec[n] = c->curve_err;
           ed[n] = fabs(c->diss_err);
@@ -418,8 +420,18 @@ static void write_stab(const rep_ctx *r, FILE *vars)
   free(labs.s);
 }
 
+/* " (stopped at delta = X)" for a run that ended early, else "" (legend labels). */
+static void write_note(FILE *vars, const char *key, const rep_case *c)
+{
+  if (c && c->have && !c->complete)
+    fprintf(vars, "%s_note = \" (stopped at {/Symbol d} = %.3g)\"\n", key, c->delta_end);
+  else
+    fprintf(vars, "%s_note = \"\"\n", key);
+}
+
 static void write_vars_case(FILE *vars, const char *key, const rep_case *c)
 {
+  write_note(vars, key, c);
   fprintf(vars, "%s = \"%s\"\n%s_hw = %.6g\n", key, c ? c->id : "", key, c ? 0.5 * c->h / sqrt(c->ppc) : 1.0);
   fprintf(vars, "%s_end = %.6g\n", key, c && c->have ? c->delta_end : 0.0);
 }
@@ -463,8 +475,10 @@ static void write_data(report *R)
     for (int ppc = 1; ppc <= 9; ppc += ppc == 1 ? 3 : 5)
       for (double h = 8; h >= 1; h /= 2) {
         const int k = find_sweep(r, sweep_scene[s], h, ppc);
-        fprintf(vars, "sw_%s_h%g_ppc%d = \"%s\"\n", sweep_scene[s], h, ppc,
-                k >= 0 && r->c[k].have ? r->c[k].id : "");
+        char key[64];
+        snprintf(key, sizeof key, "sw_%s_h%g_ppc%d", sweep_scene[s], h, ppc);
+        fprintf(vars, "%s = \"%s\"\n", key, k >= 0 && r->c[k].have ? r->c[k].id : "");
+        write_note(vars, key, k >= 0 ? &r->c[k] : NULL);
       }
   for (int i = 0; i < r->n; i++) {
     const rep_case *c = &r->c[i];
@@ -475,6 +489,7 @@ static void write_data(report *R)
         if (*q == '-' || *q == '.' || *q == '=')
           *q = '_';
       fprintf(vars, "%s = \"%s\"\n", key, c->have ? c->id : "");
+      write_note(vars, key, c);
     }
   }
   fclose(vars);
@@ -559,9 +574,11 @@ static void ended(sbuf *b, const rep_case *c)
     sb_printf(b, "the run STOPPED EARLY at delta = %.3g (%s)", c->delta_end, c->error[0] ? c->error : "no message");
 }
 
-/* Band width (in cells) and the mean vertical displacement of the left quarter of the
- * bar, from a snapshot. */
-static void snapshot_stats(const rep_case *c, double delta, double *band, double *uy_left, double *max_lam)
+/* From a snapshot (delta < 0: final.csv): the width in cells of the band of particles
+ * with lambda >= lam_min (their area over the crack length H / sin alpha), the mean
+ * vertical displacement of the left quarter of the bar, and the largest lambda. */
+static void snapshot_stats(const rep_case *c, double delta, double lam_min, double *band, double *uy_left,
+                           double *max_lam)
 {
   *band = *uy_left = *max_lam = NAN;
   if (!c)
@@ -578,7 +595,7 @@ static void snapshot_stats(const rep_case *c, double delta, double *band, double
     int nd = 0, nl = 0;
     double su = 0, ml = 0;
     for (int i = 0; i < n; i++) {
-      if (v[2][i] > 0)
+      if (v[2][i] >= lam_min)
         nd++;
       ml = fmax(ml, v[2][i]);
       if (v[0][i] < 0.25 * c->bar.p.L) {
@@ -640,16 +657,16 @@ static void text_fig6(report *R)
     return;
   sbuf *b = &f->text;
   double band, uy, ml;
-  snapshot_stats(pic, pic ? pic->last_snap : 5.0, &band, &uy, &ml);
+  snapshot_stats(pic, pic ? pic->last_snap : 5.0, 0.5, &band, &uy, &ml);
   sb_printf(b, "Paper: the decohesion stays in a single line of cells; the bar separates there and the left part "
                "moves with the grip. Measured (%s): ", pic ? pic->id : "no run");
   ended(b, pic);
   if (pic && pic->have) {
     sb_printf(b, "; ");
     peak_words(b, pic);
-    sb_printf(b, "; separation detected at delta = %.4g (analytic %.4g). At the last picture the damaged particles "
-                 "(lambda > 0) cover a band %.3g cells wide; the largest lambda is %.3g.",
-              pic->delta_sep, pic->bar.delta_sep, band, ml);
+    sb_printf(b, "; separation detected at delta = %.4g (analytic %.4g). At the last picture the failed particles "
+                 "(lambda >= 0.5) cover %.3g cells' width in all (a band one cell wide gives 1).",
+              pic->delta_sep, pic->bar.delta_sep, band);
   }
 
   f = add_fig(R, "fig6b", "Fig. 6(b): load against deflection for h = 8, 4, 2, 1 (1 particle per cell)");
@@ -662,8 +679,9 @@ static void text_fig6(report *R)
   for (double h = 8; h >= 1; h /= 2) {
     const rep_case *c = sw(r, "fig6", h, 1);
     if (c)
-      sb_printf(b, "h = %g: error %.3g, peak %.4g, softening slope %.4g, dissipation %.4g (analytic %.4g)%s", h,
-                c->curve_err, c->peak_P, c->k_soft, c->D_final, c->bar.D_sep, h > 1 ? "; " : ".");
+      sb_printf(b, "h = %g: error %.3g, peak %.4g, softening slope %.4g, dissipation %.4g (analytic %.4g)%s%s", h,
+                c->curve_err, c->peak_P, c->k_soft, c->D_final, c->bar.D_sep,
+                c->complete ? "" : " (the run STOPPED EARLY)", h > 1 ? "; " : ".");
     else
       sb_printf(b, "h = %g: no run%s", h, h > 1 ? "; " : ".");
   }
@@ -702,10 +720,10 @@ static void text_inclined(report *R, const char *scene)
     if (!f)
       return;
     b = &f->text;
-    snapshot_stats(pic, 0.28, &band, &uy, &ml);
+    snapshot_stats(pic, 0.28, 0.01, &band, &uy, &ml);
     sb_printf(b, "Paper: the decohesion front propagates from the imperfection at close to 60 deg through the fixed "
-                 "grid, in a band about two cells wide. Measured (%s): at delta = 0.28 the particles with lambda > 0 "
-                 "cover a band %.3g cells wide (area / crack length); largest lambda %.3g. ",
+                 "grid, in a band about two cells wide. Measured (%s): at delta = 0.28 the particles with lambda >= "
+                 "0.01 cover a band %.3g cells wide (their area over the crack length); largest lambda %.3g; ",
               pic ? pic->id : "no run", band, ml);
     ended(b, pic);
     sb_printf(b, ".");
@@ -717,14 +735,15 @@ static void text_inclined(report *R, const char *scene)
   if (!f)
     return;
   b = &f->text;
-  snapshot_stats(pic, -1, &band, &uy, &ml);
+  snapshot_stats(pic, -1, 0.5, &band, &uy, &ml);
   sb_printf(b, "Paper: the bar separates along the inclined band; %s Measured: ",
             mode1 ? "the left part moves off with the grip."
                   : "after separation the left part of the bar moves upward (shear transferred before separation).");
   ended(b, pic);
   if (pic && pic->have)
     sb_printf(b, "; at the last written state (delta = %.3g) the left quarter of the bar has moved by uy = %.3g on "
-                 "average and the damaged band is %.3g cells wide. Panels without a picture are past the end of the run.",
+                 "average and the failed particles (lambda >= 0.5) form a band %.3g cells wide. Panels without a "
+                 "picture are past the end of the run.",
               pic->delta_end, uy, band);
   else
     sb_printf(b, ".");
@@ -777,8 +796,11 @@ static void text_conv(report *R)
   sbuf *b = &f->text;
   sb_printf(b, "Paper: a convergence study over h (sec. 4.4). Curve error = RMS of (P - P_analytic) / Pmax over "
                "0 <= delta <= 1.5 max(delta_peak, delta_sep); dissipation error = |D / (U0 H / sin alpha) - 1| at the "
-               "end of the run; orders are least-squares slopes of log error against log h. Runs %s. ",
-            R->sweep_own ? "made by delam report (to delta 0.6, 0.6, 0.7)" : "taken from --from");
+               "end of the run; orders are least-squares slopes of log error against log h over the complete runs. ");
+  if (R->sweep_from)
+    sb_printf(b, "%d of the runs come from %s (each to its own end); ", R->sweep_from, r->from);
+  sb_printf(b, "runs made by delam report go to delta %g (%s), %g (%s), %g (%s). ", sweep_until[0], sweep_scene[0],
+            sweep_until[1], sweep_scene[1], sweep_until[2], sweep_scene[2]);
   for (int s = 0; s < NSWEEP; s++) {
     const conv_fit *cf = &fits[s];
     sb_printf(b, "%s: curve-error order %.2f, dissipation-error order %.2f over %d grids (", sweep_scene[s],
@@ -788,13 +810,28 @@ static void text_conv(report *R)
       const rep_case *c = sw(r, sweep_scene[s], h, 1);
       if (!c)
         continue;
-      sb_printf(b, "%sh = %g: %.3g, %.3g", first ? "" : "; ", h, c->curve_err, fabs(c->diss_err));
+      sb_printf(b, "%sh = %g: %.3g, %.3g%s", first ? "" : "; ", h, c->curve_err, fabs(c->diss_err),
+                c->complete ? "" : " (stopped early, not fitted)");
       first = 0;
     }
     sb_printf(b, ")%s", s + 1 < NSWEEP ? ". " : ".");
   }
-  if (R->verify)
-    sb_printf(b, " The checks of delam verify are listed at the end of this report.");
+  if (R->verify) {
+    const cJSON *x;
+    int first = 1;
+    cJSON_ArrayForEach(x, cJSON_GetObjectItemCaseSensitive(R->verify, "cross"))
+    {
+      const cJSON *nm = cJSON_GetObjectItemCaseSensitive(x, "name"), *sc = cJSON_GetObjectItemCaseSensitive(x, "scene");
+      const cJSON *m = cJSON_GetObjectItemCaseSensitive(x, "measured"), *v = cJSON_GetObjectItemCaseSensitive(x, "verdict");
+      if (!cJSON_IsString(nm) || strncmp(nm->valuestring, "order", 5) || !cJSON_IsNumber(m))
+        continue;
+      sb_printf(b, "%s%s %s %.3g (%s)", first ? " delam verify measured: " : "; ",
+                cJSON_IsString(sc) ? sc->valuestring : "?", nm->valuestring, m->valuedouble,
+                cJSON_IsString(v) ? v->valuestring : "?");
+      first = 0;
+    }
+    sb_printf(b, "%sThe checks of delam verify are listed at the end of this report.", first ? " " : ". ");
+  }
 }
 
 static void text_workprec(report *R)
@@ -864,6 +901,12 @@ static void text_stab(report *R)
     sb_printf(b, "; ");
   }
   sb_printf(b, "largest stable dt / dt_crit %.2f, smallest unstable %.2f.", last_ok, first_bad);
+  /* the 1-D bound of MODEL.md is not the grid's: a 2-D explicit bilinear grid with
+   * lumped mass is bounded by h / (c sqrt 2) (the diagonal mode) */
+  if (last_ok < 1 / sqrt(2.0) && first_bad > 1 / sqrt(2.0))
+    sb_printf(b, " The limit lies between the two, where 1/sqrt(2) = %.3f is: the observed bound is the 2-D one, "
+                 "dt < h / (c sqrt 2), not the 1-D h / c of MODEL.md; the paper's dt = 0.1 keeps a factor %.2f to it.",
+              1 / sqrt(2.0), crit / sqrt(2.0) / 0.1);
 }
 
 static void text_snapback(report *R)
@@ -947,30 +990,32 @@ static void html_escape(FILE *f, const char *s)
   }
 }
 
-/* Every object below node with a "verdict" is one check. */
-static void collect_checks(const cJSON *node, const char *path, FILE *md, FILE *html, int *npass, int *nfail)
+/* Every object below node with a "verdict" and a "measured" value is one check; it is
+ * named by the nearest case "id" above it (or its own scene and "over"). */
+static void collect_checks(const cJSON *node, const char *ctx, FILE *md, FILE *html, int count[3])
 {
   if (!node)
     return;
-  if (cJSON_IsObject(node) && cJSON_GetObjectItemCaseSensitive(node, "verdict")) {
-    const cJSON *v = cJSON_GetObjectItemCaseSensitive(node, "verdict");
-    const char *names[] = {"id", "name", "check", "case", NULL};
-    const char *nm = path;
-    for (int i = 0; names[i]; i++) {
-      const cJSON *x = cJSON_GetObjectItemCaseSensitive(node, names[i]);
-      if (cJSON_IsString(x)) {
-        nm = x->valuestring;
-        break;
-      }
-    }
+  const cJSON *v = cJSON_GetObjectItemCaseSensitive(node, "verdict");
+  const cJSON *id = cJSON_GetObjectItemCaseSensitive(node, "id");
+  if (cJSON_IsObject(node) && v && cJSON_GetObjectItemCaseSensitive(node, "measured")) {
+    const cJSON *nm = cJSON_GetObjectItemCaseSensitive(node, "name");
+    const cJSON *sc = cJSON_GetObjectItemCaseSensitive(node, "scene");
+    const cJSON *over = cJSON_GetObjectItemCaseSensitive(node, "over");
+    char name[256];
+    if (cJSON_IsString(sc) && cJSON_IsString(over))
+      snprintf(name, sizeof name, "%.60s %.80s (over %.20s)", sc->valuestring,
+               cJSON_IsString(nm) ? nm->valuestring : "?", over->valuestring);
+    else
+      snprintf(name, sizeof name, "%.100s %.100s", ctx, cJSON_IsString(nm) ? nm->valuestring : "?");
     char verdict[32];
     if (cJSON_IsString(v))
       snprintf(verdict, sizeof verdict, "%s", v->valuestring);
     else
-      snprintf(verdict, sizeof verdict, "%s", cJSON_IsTrue(v) ? "PASS" : "FAIL");
-    const int pass = !strcmp(verdict, "PASS") || !strcmp(verdict, "pass") || !strcmp(verdict, "ok");
-    *npass += pass;
-    *nfail += !pass;
+      snprintf(verdict, sizeof verdict, "%s", cJSON_IsTrue(v) ? "pass" : "fail");
+    const int k = !strcmp(verdict, "pass") || !strcmp(verdict, "PASS") ? 0
+                  : !strcmp(verdict, "fail") || !strcmp(verdict, "FAIL") ? 1 : 2;
+    count[k]++;
     char val[3][64];
     const char *keys[3] = {"measured", "reference", "tolerance"};
     for (int i = 0; i < 3; i++) {
@@ -982,21 +1027,20 @@ static void collect_checks(const cJSON *node, const char *path, FILE *md, FILE *
       else
         snprintf(val[i], sizeof val[i], "-");
     }
-    fprintf(md, "| %s | %s | %s | %s | %s |\n", nm, val[0], val[1], val[2], verdict);
-    fprintf(html, "<tr class=\"%s\"><td>", pass ? "pass" : "fail");
-    html_escape(html, nm);
-    fprintf(html, "</td><td>%s</td><td>%s</td><td>%s</td><td>%s</td></tr>\n", val[0], val[1], val[2], verdict);
+    fprintf(md, "| %s | %s | %s | %s | %s |\n", name, val[0], val[1], val[2], verdict);
+    fprintf(html, "<tr class=\"%s\"><td>", k == 0 ? "pass" : k == 1 ? "fail" : "known");
+    html_escape(html, name);
+    fprintf(html, "</td><td>%s</td><td>%s</td><td>%s</td><td>", val[0], val[1], val[2]);
+    html_escape(html, verdict);
+    fprintf(html, "</td></tr>\n");
     return;
   }
+  const char *sub = cJSON_IsString(id) ? id->valuestring : ctx;
   const cJSON *ch;
   cJSON_ArrayForEach(ch, node)
   {
-    char sub[256];
-    if (ch->string)
-      snprintf(sub, sizeof sub, "%s%s%s", path, *path ? "/" : "", ch->string);
-    else
-      snprintf(sub, sizeof sub, "%s", path);
-    collect_checks(ch, sub, md, html, npass, nfail);
+    if (cJSON_IsObject(ch) || cJSON_IsArray(ch))
+      collect_checks(ch, sub, md, html, count);
   }
 }
 
@@ -1034,6 +1078,7 @@ static int write_report(report *R, double t_runs, double t_total)
                 "body{font-family:sans-serif;max-width:1100px;margin:auto;padding:1em;line-height:1.4}"
                 "img{max-width:100%%;border:1px solid #ccc}td,th{border:1px solid #ccc;padding:2px 6px;font-size:90%%}"
                 "table{border-collapse:collapse}tr.fail td{background:#fdd}tr.pass td{background:#efe}"
+                "tr.known td{background:#ffd}"
                 "</style></head><body>\n<h1>delam: verification report</h1>\n<p>Schreyer, Sulsky and Zhou (2002), "
                 "&ldquo;Modeling delamination as a strong discontinuity with the material point method&rdquo;: the "
                 "paper's figures reproduced with the delam kernel. Written by <code>delam report</code> on %s: %d runs "
@@ -1052,14 +1097,16 @@ static int write_report(report *R, double t_runs, double t_total)
     fprintf(html, "</p>\n");
   }
   if (R->verify) {
-    int np = 0, nf = 0;
+    int cnt[3] = {0, 0, 0};
     fprintf(md, "## Checks from delam verify (%s/verify.json)\n\n| check | measured | reference | tolerance | verdict |\n"
                 "|---|---|---|---|---|\n", r->from);
     fprintf(html, "<h2>Checks from delam verify</h2>\n<table><tr><th>check</th><th>measured</th><th>reference</th>"
                   "<th>tolerance</th><th>verdict</th></tr>\n");
-    collect_checks(R->verify, "", md, html, &np, &nf);
-    fprintf(md, "\n%d passed, %d failed.\n\n", np, nf);
-    fprintf(html, "</table>\n<p>%d passed, %d failed.</p>\n", np, nf);
+    collect_checks(R->verify, "", md, html, cnt);
+    fprintf(md, "\n%d passed, %d failed, %d at a known limit of the method (the paper reports the same deviation).\n\n",
+            cnt[0], cnt[1], cnt[2]);
+    fprintf(html, "</table>\n<p>%d passed, %d failed, %d at a known limit of the method (the paper reports the "
+                  "same deviation).</p>\n", cnt[0], cnt[1], cnt[2]);
   } else if (r->from[0]) {
     fprintf(md, "(No %s/verify.json: numbers above come from the runs' summary.json files.)\n\n", r->from);
     fprintf(html, "<p>(No verify.json in --from: numbers above come from the runs' summary.json files.)</p>\n");

@@ -135,27 +135,46 @@ int ver_report_find(const rep_ctx *r, const char *id)
   return -1;
 }
 
-static int read_exit_status(const char *dir)
+/* The exit status of a run is kept in DIR/exit-status with the size and mtime of the
+ * delam program that made it: a failed run is reused only while that program is
+ * unchanged (a complete one always). */
+static void exe_stamp(const char *exe, long long *size, long long *mtime)
+{
+  struct stat st;
+  *size = *mtime = -1;
+  if (stat(exe, &st) == 0) {
+    *size = (long long)st.st_size;
+    *mtime = (long long)st.st_mtime;
+  }
+}
+
+static int read_exit_status(const rep_ctx *r, const char *dir, int *same_exe)
 {
   char p[REP_PATH + 32];
   snprintf(p, sizeof p, "%s/exit-status", dir);
   FILE *f = fopen(p, "r");
   int s = -1;
+  long long sz = -2, mt = -2, esz, emt;
+  *same_exe = 0;
   if (f) {
-    if (fscanf(f, "%d", &s) != 1)
+    if (fscanf(f, "%d %lld %lld", &s, &sz, &mt) < 1)
       s = -1;
     fclose(f);
   }
+  exe_stamp(r->exe, &esz, &emt);
+  *same_exe = sz == esz && mt == emt && esz >= 0;
   return s;
 }
 
-static void write_exit_status(const char *dir, int s)
+static void write_exit_status(const rep_ctx *r, const char *dir, int s)
 {
   char p[REP_PATH + 32];
+  long long sz, mt;
+  exe_stamp(r->exe, &sz, &mt);
   snprintf(p, sizeof p, "%s/exit-status", dir);
   FILE *f = fopen(p, "w");
   if (f) {
-    fprintf(f, "%d\n", s);
+    fprintf(f, "%d %lld %lld\n", s, sz, mt);
     fclose(f);
   }
 }
@@ -216,8 +235,9 @@ static int try_reuse(const rep_ctx *r, rep_case *c, const char *dir, int check_s
   snprintf(save, sizeof save, "%s", c->dir);
   snprintf(c->dir, sizeof c->dir, "%s", dir);
   if (ver_report_read_summary(c) == 0) {
-    const int st = read_exit_status(dir);
-    if (c->complete || (c->allow_unstable && st >= 0)) {
+    int same_exe;
+    const int st = read_exit_status(r, dir, &same_exe);
+    if (c->complete || (check_scene && st > 0 && same_exe)) {
       c->have = 1;
       c->reused = 1;
       c->exit_status = c->complete ? 0 : st;
@@ -400,7 +420,7 @@ int ver_report_run_cases(rep_ctx *r)
   for (int i = 0; i < ntodo; i++) {
     rep_case *c = todo[i];
     c->exit_status = status[i];
-    write_exit_status(c->dir, status[i]);
+    write_exit_status(r, c->dir, status[i]);
     keep_scene(r, c);
     if (ver_report_read_summary(c) == 0)
       c->have = 1;
