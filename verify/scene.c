@@ -342,7 +342,7 @@ static char *reader(char *str, int num, void *stream)
   }
   const size_t most = num - 3 < MAX_LINE ? (size_t)(num - 3) : MAX_LINE;
   if (num < 4 || n > most) {
-    fail(c, "a line longer than %zu characters", num < 4 ? 0 : most);
+    fail(c, "a line of %zu characters (allowed: at most %zu)", n, num < 4 ? 0 : most);
     return NULL;
   }
   if (check_line(c, s, n))
@@ -557,11 +557,18 @@ int ver_scene_validate(ver_scene *vs, char *err, size_t errlen)
   /* Sizes first: the checks after them round L / h and H / h to integers. */
   const int hi = kidx("grid", "h");
   key_at(vs, hi, at, sizeof at);
-  const double nx = (sc->L + sc->end_delta + 2.0 * sc->margin) / sc->h + 4.0,
-               ny = (sc->H + 2.0 * sc->margin) / sc->h + 4.0;
+  const double nx = (sc->L + 2.0 * sc->margin) / sc->h + 4.0, ny = (sc->H + 2.0 * sc->margin) / sc->h + 4.0;
   if (!(nx * ny <= MAX_NODES)) {
-    snprintf(err, errlen, "%s: grid.h: %g gives a grid of %.3g x %.3g nodes for bar, grid.margin and run.end_delta "
+    snprintf(err, errlen, "%s: grid.h: %g gives a grid of %.3g x %.3g nodes for bar.L, bar.H and grid.margin "
              "(allowed: at most %.0e nodes)", at, sc->h, nx, ny, MAX_NODES);
+    return 2;
+  }
+  /* The grid also spans the grip's travel, to the left of the bar. */
+  const double nt = sc->end_delta / sc->h;
+  if (!((nx + nt) * ny <= MAX_NODES)) {
+    snprintf(err, errlen, "%s: run.end_delta: %g is %.3g cells of grip travel at grid.h = %g, a grid of %.3g x %.3g "
+             "nodes (allowed: at most %.0e nodes)", key_at(vs, kidx("run", "end_delta"), at, sizeof at),
+             sc->end_delta, nt, sc->h, nx + nt, ny, MAX_NODES);
     return 2;
   }
   /* h divides L and H (as the kernel rounds it), ppc is a square. */
@@ -585,6 +592,14 @@ int ver_scene_validate(ver_scene *vs, char *err, size_t errlen)
              key_at(vs, hi, at, sizeof at), sc->h, sc->ppc, np, MAX_PARTICLES);
     return 2;
   }
+  /* The imperfection is at the particle nearest (x, y): a point of the bar. */
+  if (!(sc->imp_x >= 0 && sc->imp_x <= sc->L) || !(sc->imp_y >= 0 && sc->imp_y <= sc->H)) {
+    const int x = !(sc->imp_x >= 0 && sc->imp_x <= sc->L);
+    snprintf(err, errlen, "%s: imperfection.%s: %g is outside the bar (allowed: 0 <= %s <= bar.%s = %g)",
+             key_at(vs, kidx("imperfection", x ? "x" : "y"), at, sizeof at), x ? "x" : "y", x ? sc->imp_x : sc->imp_y,
+             x ? "x" : "y", x ? "L" : "H", x ? sc->L : sc->H);
+    return 2;
+  }
   const double dtc = mpm_scene_dt_crit(sc);
   if (!(sc->dt < dtc) && !vs->allow_unstable) {
     snprintf(err, errlen, "%s: time.dt: %g is at or above the CFL bound h / c = %.4g (allowed: dt < %.4g, or --allow-unstable)",
@@ -598,11 +613,17 @@ int ver_scene_validate(ver_scene *vs, char *err, size_t errlen)
              sc->speed, sc->dt, sc->end_delta / vdt, MAX_STEPS);
     return 2;
   }
+  /* A row every max(interval, one step): the rows are held in memory until the end. */
   const int ii = kidx("output", "interval");
-  if (!(sc->end_delta / vs->interval <= MAX_ROWS) || !(vs->interval / vdt <= MAX_STEPS)) {
-    snprintf(err, errlen, "%s: output.interval: %g gives %.3g rows to run.end_delta = %g and a row every %.3g steps "
-             "(allowed: at most %.0e rows, and a row every at most %.0e steps)", key_at(vs, ii, at, sizeof at),
-             vs->interval, sc->end_delta / vs->interval, sc->end_delta, vs->interval / vdt, MAX_ROWS, MAX_STEPS);
+  const double rows = sc->end_delta / fmax(vs->interval, vdt);
+  if (!(rows <= MAX_ROWS)) {
+    snprintf(err, errlen, "%s: output.interval: %g gives %.3g rows of load.csv to run.end_delta = %g "
+             "(allowed: at most %.0e rows)", key_at(vs, ii, at, sizeof at), vs->interval, rows, sc->end_delta, MAX_ROWS);
+    return 2;
+  }
+  if (!(vs->interval / vdt <= MAX_STEPS)) {
+    snprintf(err, errlen, "%s: output.interval: %g is %.3g time steps (allowed: at most %.0e)",
+             key_at(vs, ii, at, sizeof at), vs->interval, vs->interval / vdt, MAX_STEPS);
     return 2;
   }
   /* The kernel's own check: every rule it has is above, so this is a backstop. */
