@@ -861,12 +861,14 @@ static void text_workprec(report *R)
   double ups = 0;
   int nu = 0;
   for (int i = 0; i < r->n; i++)
-    if (r->c[i].have && r->c[i].cpu_s > 0.5 && isfinite(r->c[i].updates_per_s)) {
-      ups += r->c[i].updates_per_s;
+    if (r->c[i].have && r->c[i].cpu_s > 0.5 && r->c[i].steps > 0) {
+      /* per CPU second: wall-clock rates depend on what else the machine runs */
+      ups += r->c[i].particles * (double)r->c[i].steps / r->c[i].cpu_s;
       nu++;
     }
   if (nu)
-    sb_printf(b, "The kernel ran at %.3g particle-updates per second on average (runs over 0.5 s, one thread each).",
+    sb_printf(b, "The kernel ran at %.3g particle-updates per CPU second on average (runs over 0.5 s CPU, one thread "
+                 "each).",
               ups / nu);
 }
 
@@ -970,8 +972,9 @@ static void text_scheme(report *R)
   for (int i = 0; ids[i]; i++) {
     const rep_case *c = cs(r, ids[i]);
     if (c)
-      sb_printf(b, "%s: peak %.4g, RMS error %.3g, dissipation %.4g, %s; ", c->id, c->peak_P, c->curve_err,
-                c->D_final, c->complete ? "complete" : "stopped early");
+      sb_printf(b, "%s: peak %.4g, RMS error %.3g, dissipation %.4g (analytic %.4g), %s%s", c->id, c->peak_P,
+                c->curve_err, c->D_final, c->bar.D_sep, c->complete ? "complete" : "stopped early",
+                ids[i + 1] ? "; " : ".");
   }
 }
 

@@ -1,7 +1,8 @@
 /*
  * report_run.c - the runs behind `delam report`: the case table, the result cache
- * (out/report/<case-id>/, reused when its summary.json says "complete": true), and a
- * small process pool that runs `delam run` (or gnuplot) children a few at a time.
+ * (out/report/<case-id>/: reused when its summary.json says "complete": true and the
+ * scene file is unchanged; a failed run only while the delam binary is also the same),
+ * and a small process pool that runs `delam run` (or gnuplot) children a few at a time.
  *
  * Children are started with fork + exec rather than posix_spawn because gnuplot has
  * to run inside the output folder (chdir between the two); each child writes to its
@@ -219,8 +220,8 @@ static void keep_scene(const rep_ctx *r, const rep_case *c)
   free(buf);
 }
 
-/* Uses the results in dir if they are complete (or, for a deliberately unstable run,
- * if the run ended at all).  1 if taken. */
+/* Uses the results in dir if they are complete, or (check_scene: our own cache) if the
+ * same binary on the same scene file failed before.  1 if taken. */
 static int try_reuse(const rep_ctx *r, rep_case *c, const char *dir, int check_scene)
 {
   char p[REP_PATH + 64], q[REP_PATH + 64];
