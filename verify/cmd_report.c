@@ -799,7 +799,8 @@ static void text_conv(report *R)
                "end of the run; orders are least-squares slopes of log error against log h over the complete runs. ");
   if (R->sweep_from)
     sb_printf(b, "%d of the runs come from %s (each to its own end); ", R->sweep_from, r->from);
-  sb_printf(b, "runs made by delam report go to delta %g (%s), %g (%s), %g (%s). ", sweep_until[0], sweep_scene[0],
+  sb_printf(b, "%suns made by delam report go to delta %g (%s), %g (%s), %g (%s). ", R->sweep_from ? "r" : "R",
+            sweep_until[0], sweep_scene[0],
             sweep_until[1], sweep_scene[1], sweep_until[2], sweep_scene[2]);
   for (int s = 0; s < NSWEEP; s++) {
     const conv_fit *cf = &fits[s];
