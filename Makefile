@@ -44,8 +44,10 @@ check-asan: deps $(BUILD_ASAN)/build.ninja
 	  meson test -C $(BUILD_ASAN) --print-errorlogs --suite kernel --suite analytic --suite robustness
 
 # libFuzzer (clang): the scene parser and validator with the kernel sources they link
-# against.  New inputs go to build-fuzz/corpus; fuzz/corpus holds the seeds (keep it
-# small: libFuzzer -merge=1 into it).  Crashes are written as build-fuzz/crash-*.
+# against.  Seeds: data/scenes, data/bad and fuzz/corpus (inputs that reach code those
+# do not; to refresh it, merge build-fuzz/corpus into a copy of the data/ scenes with
+# -merge=1 -use_counters=0 and keep the files added).  New inputs go to
+# build-fuzz/corpus, crashes to build-fuzz/crash-*: turn those into data/bad/ files.
 FUZZ_CC ?= clang
 FUZZ_TIME ?= 60
 FUZZ_SRC = fuzz/fuzz_scene.c verify/scene.c $(wildcard kernel/*.c)
@@ -57,7 +59,7 @@ build-fuzz/fuzz_scene: $(FUZZ_SRC) verify/scene.h kernel/mpm.h
 
 fuzz: deps build-fuzz/fuzz_scene
 	build-fuzz/fuzz_scene -max_total_time=$(FUZZ_TIME) -dict=fuzz/scene.dict -max_len=8192 \
-	  -artifact_prefix=build-fuzz/ -print_final_stats=1 build-fuzz/corpus fuzz/corpus
+	  -artifact_prefix=build-fuzz/ -print_final_stats=1 build-fuzz/corpus fuzz/corpus data/scenes data/bad
 
 report: build
 	$(BUILD)/delam report
