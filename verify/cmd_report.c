@@ -210,7 +210,10 @@ static void build_cases(report *R)
 {
   rep_ctx *r = &R->r;
   /* pictures: each scene's own run (its grid, all its snapshots) */
-  ver_report_add(r, "fig6", 4, 1, 0, 0, NULL, NULL, REP_PIC, 0);
+  /* Fig. 6(a) runs to delta = 5: under USL the gripped end tears once the bar end has
+   * passed the gripped node column (nearly empty node, measured at delta = 2.0 on h = 4);
+   * MUSL does not, so the pictures use it. */
+  ver_report_add(r, "fig6", 4, 1, 0, 0, "time.scheme=musl", NULL, REP_PIC, 0);
   ver_report_add(r, "fig7", 2, 1, 0, 0, NULL, NULL, REP_PIC, 0);
   ver_report_add(r, "fig8", 2, 1, 0, 0, NULL, NULL, REP_PIC | REP_SNAP, 0);
   /* sweep over h and particles per cell, to a little past separation */
