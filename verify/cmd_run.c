@@ -71,7 +71,16 @@ int ver_cmd_run(int argc, char **argv)
     else if (!strcmp(a, "--ppc")) { r = num_arg(a, v, &ppc); i++; }
     else if (!strcmp(a, "--dt")) { r = num_arg(a, v, &dt); i++; }
     else if (!strcmp(a, "--until")) { r = num_arg(a, v, &until); i++; }
-    else if (!strcmp(a, "--threads")) { double t; r = num_arg(a, v, &t); threads = (int)t; i++; }
+    else if (!strcmp(a, "--threads")) {
+      double t;
+      r = num_arg(a, v, &t);
+      if (!r && (t != floor(t) || t > 256)) {
+        fprintf(stderr, "delam run: --threads: '%s' is not a whole number in 1..256\n", v);
+        return 2;
+      }
+      threads = (int)t;
+      i++;
+    }
     else if (!strcmp(a, "--set")) {
       if (!v || nset == 64) { fprintf(stderr, "delam run: --set needs section.key=value\n"); return 2; }
       sets[nset++] = v; i++;
@@ -112,8 +121,9 @@ int ver_cmd_run(int argc, char **argv)
   for (int i = 0; i < nset; i++)
     if (ver_scene_set(&vs, sets[i], err, sizeof err)) { fprintf(stderr, "%s\n", err); return 2; }
   if (until > 0) {
-    vs.sc.end_delta = until;
-    vs.sc.stop_margin = 0;
+    snprintf(buf, sizeof buf, "run.end_delta=%.17g", until);
+    if (ver_scene_set(&vs, buf, err, sizeof err)) { fprintf(stderr, "%s\n", err); return 2; }
+    if (ver_scene_set(&vs, "run.stop_margin=0", err, sizeof err)) { fprintf(stderr, "%s\n", err); return 2; }
   }
   vs.allow_unstable = allow;
   if (ver_scene_validate(&vs, err, sizeof err)) {

@@ -19,6 +19,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <dirent.h>
 #include <sys/stat.h>
 #include <time.h>
 #include <unistd.h>
@@ -221,10 +222,20 @@ int ver_run(const ver_scene *vs, const ver_run_opts *o, ver_summary *u, char *er
       snprintf(err, errlen, "%s: cannot create directory: %s", o->outdir, strerror(errno));
       return 2;
     }
-    /* An old summary must not vouch for the new, unfinished run. */
-    char old[1100];
-    snprintf(old, sizeof old, "%s/summary.json", o->outdir);
-    remove(old);
+    /* An old summary must not vouch for the new, unfinished run, and old snapshots must
+     * not sit beside new results: remove what an earlier run here wrote. */
+    DIR *d = opendir(o->outdir);
+    for (struct dirent *e = d ? readdir(d) : NULL; e; e = readdir(d)) {
+      const char *n = e->d_name;
+      if (!strncmp(n, "snap-d", 6) || !strncmp(n, "final.", 6) || !strcmp(n, "summary.json") ||
+          !strcmp(n, "load.csv") || !strcmp(n, "energy.csv")) {
+        char old[1400];
+        snprintf(old, sizeof old, "%s/%s", o->outdir, n);
+        remove(old);
+      }
+    }
+    if (d)
+      closedir(d);
   }
   mpm_sim *s;
   char kerr[512];
