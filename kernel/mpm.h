@@ -59,7 +59,7 @@ typedef struct {
 
 /* Checks a scene for physical sense; MPM_EINVAL and a message naming the key. */
 mpm_status mpm_scene_check(const mpm_scene *sc, char *err, size_t errlen);
-/* Critical time step h / c, c = sqrt(E1 / rho) (plane-stress bar wave speed). */
+/* Critical time step h / (c sqrt 2), c = sqrt(E1 / rho) (measured; see mpm_sim.c). */
 double mpm_scene_dt_crit(const mpm_scene *sc);
 
 /* ---- material ---- */

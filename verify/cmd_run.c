@@ -29,7 +29,7 @@ static void usage(FILE *f)
     "  --out DIR         output folder (default out/<scene>-h<h>-ppc<n>)\n"
     "  --h H             grid spacing; dt is scaled with it unless --dt is given\n"
     "  --ppc N           particles per cell, a perfect square (1, 4, 9, ...)\n"
-    "  --dt DT           time step (must be below the CFL bound h / c)\n"
+    "  --dt DT           time step (must be below the CFL bound h / (c sqrt 2))\n"
     "  --until DELTA     run to this end displacement exactly (no early stop)\n"
     "  --set S.K=V       set key K of section S, as in the file (repeatable)\n"
     "  --allow-unstable  accept a time step at or above the CFL bound\n"

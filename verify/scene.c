@@ -60,7 +60,7 @@ static const keydef keys[] = {
   {"grid", "h", K_DBL, OFF(h), 1, 0, 0, LO_OPEN, 0, "> 0, dividing L and H"},
   {"grid", "ppc", K_INT, OFF(ppc), 1, 1, 1024, LO_CLOSED | HI_CLOSED, 0, "a perfect square: 1, 4, 9, ..."},
   {"grid", "margin", K_DBL, OFF(margin), 0, 0, 0, LO_CLOSED, 0, ">= 0: empty space around the bar, a length (one cell is always added)"},
-  {"time", "dt", K_DBL, OFF(dt), 1, 0, 0, LO_OPEN, 0, "> 0 and below the CFL bound h / c"},
+  {"time", "dt", K_DBL, OFF(dt), 1, 0, 0, LO_OPEN, 0, "> 0 and below the CFL bound h / (c sqrt 2)"},
   {"time", "scheme", K_SCHEME, OFF(scheme), 0, 0, 0, 0, MPM_SCHEME_USL, "usl (the paper) or musl"},
   {"loading", "speed", K_DBL, OFF(speed), 1, 0, 0, LO_OPEN, 0, "> 0"},
   {"run", "end_delta", K_DBL, OFF(end_delta), 1, 0, 0, LO_OPEN, 0, "> 0"},
@@ -602,7 +602,7 @@ int ver_scene_validate(ver_scene *vs, char *err, size_t errlen)
   }
   const double dtc = mpm_scene_dt_crit(sc);
   if (!(sc->dt < dtc) && !vs->allow_unstable) {
-    snprintf(err, errlen, "%s: time.dt: %g is at or above the CFL bound h / c = %.4g (allowed: dt < %.4g, or --allow-unstable)",
+    snprintf(err, errlen, "%s: time.dt: %g is at or above the CFL bound h / (c sqrt 2) = %.4g (allowed: dt < %.4g, or --allow-unstable)",
              key_at(vs, kidx("time", "dt"), at, sizeof at), sc->dt, dtc, dtc);
     return 2;
   }
