@@ -159,7 +159,8 @@ typedef struct {
 /* ---- the simulation ---- */
 typedef struct {
   mpm_scene sc;            /* copy of the scene                                        */
-  mpm_material mat[2];     /* 0: bar, 1: the imperfection particle                     */
+  mpm_material mat[3];     /* MPM_MAT_BAR, MPM_MAT_IMP (the imperfection), MPM_MAT_HEAD */
+  size_t nhead;            /* particles of the rigid head (p->n - nhead are the bar's)  */
   mpm_particles *p;
   mpm_grid *g;
   mpm_dwork *dw;
@@ -187,6 +188,14 @@ typedef struct {
 } mpm_sim;
 
 enum { MPM_T_SORT = 0, MPM_T_P2G, MPM_T_GRID, MPM_T_G2P, MPM_T_CONST };
+/* Materials.  The head is the loading machine (paper, sec. 4.4: "a rigid head with
+ * large mass"): stress-free particles MPM_HEAD_CELLS cells wide beyond the bar's left
+ * end, whose nodes are all gripped in x.  It keeps the nodes beyond the bar's end from
+ * ever being nearly empty, which under USL tore the gripped end off once a particle
+ * crossed the gripped node line (Fig. 6 at h 4 past delta 2, at h 2 with 9 ppc before
+ * separation).  Head particles are left out of the energies and the snapshots. */
+enum { MPM_MAT_BAR = 0, MPM_MAT_IMP = 1, MPM_MAT_HEAD = 2 };
+#define MPM_HEAD_CELLS 2
 #define MPM_STRIP 4        /* columns of cells per strip (>= 3: see mpm_sort.c)           */
 #define MPM_SORT_EVERY 16  /* steps between sorts                                        */
 

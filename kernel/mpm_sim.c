@@ -4,7 +4,9 @@
  * the imperfection, the boundary-condition node lists; and the energy sums.
  *
  * Loading (CASES.md, Fig. 5): the left end x = 0 is gripped in x only by a rigid head
- * moving at -speed; the right end x = L is held in x, and its mid-height node in y.
+ * moving at -speed, modelled as stress-free particles beyond the end whose nodes are
+ * gripped (mpm.h, MPM_MAT_HEAD); the right end x = L is held in x, and its mid-height
+ * node in y.
  */
 #include <math.h>
 #include <stdio.h>
@@ -113,10 +115,13 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
   /* The grid is only as large as the motion needs: margin all round (at least one
    * cell), and on the left the grip's travel to end_delta besides. */
   const int pad = 1 + (int)ceil(sc->margin / h - 1e-9);
-  const int padl = pad + (int)ceil(sc->end_delta / h - 1e-9);
+  const int padl = pad + MPM_HEAD_CELLS + (int)ceil(sc->end_delta / h - 1e-9);
   s->g = mpm_grid_alloc(padl + cx + pad, cy + 2 * pad, -padl * h, -pad * h, h);
   const int n1 = (int)lround(sqrt((double)sc->ppc));
-  const size_t np = (size_t)cx * (size_t)cy * (size_t)sc->ppc;
+  const size_t nbar = (size_t)cx * (size_t)cy * (size_t)sc->ppc;
+  const size_t nhead = (size_t)MPM_HEAD_CELLS * (size_t)cy * (size_t)sc->ppc;
+  const size_t np = nbar + nhead;
+  const int ngrip = (padl - pad + 1) * (cy + 1);
 #ifdef _OPENMP
   s->nthreads = nthreads > 0 ? nthreads : omp_get_max_threads();
 #else
@@ -126,7 +131,7 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
   s->p = mpm_particles_alloc(np);
   s->dw = mpm_dwork_alloc();
   s->dws = calloc((size_t)s->nthreads, sizeof *s->dws);
-  s->grip = malloc(sizeof(int) * (size_t)(cy + 1));
+  s->grip = malloc(sizeof(int) * (size_t)ngrip);
   s->fixx = malloc(sizeof(int) * (size_t)(cy + 1));
   int ok = s->g && s->p && s->dw && s->dws && s->grip && s->fixx;
   if (ok) {
@@ -153,8 +158,12 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
   const double a = sc->alpha_deg * (3.14159265358979323846 / 180.0);
   const double side = sc->le_mode == MPM_LE_PARTICLE ? h / n1 : h;
   const double Le = side * fmax(fabs(sin(a)), fabs(cos(a)));
-  mpm_material_init(&s->mat[0], sc, sc->snf, Le);
-  mpm_material_init(&s->mat[1], sc, sc->snf * sc->imp_factor, Le);
+  mpm_material_init(&s->mat[MPM_MAT_BAR], sc, sc->snf, Le);
+  mpm_material_init(&s->mat[MPM_MAT_IMP], sc, sc->snf * sc->imp_factor, Le);
+  mpm_material_init(&s->mat[MPM_MAT_HEAD], sc, sc->snf, Le);
+  s->mat[MPM_MAT_HEAD].model = MPM_DCOH_NONE;            /* stress-free: it only carries mass */
+  s->mat[MPM_MAT_HEAD].E1 = s->mat[MPM_MAT_HEAD].E2 = s->mat[MPM_MAT_HEAD].G = 0.0;
+  s->nhead = nhead;
 
   /* Particles at the centres of an n x n subdivision of each cell.  The velocity starts
    * as the quasi-static field of the loading, vx = -speed (L - X) / L, so the grip does
@@ -179,15 +188,30 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
       }
     }
   if (sc->model && sc->imp_factor < 1.0)
-    p->mat[s->imp_index] = 1;
+    p->mat[s->imp_index] = MPM_MAT_IMP;
+  /* The head: the same lattice continued MPM_HEAD_CELLS cells beyond x = 0, moving with
+   * the grip. */
+  for (int j = 0; j < cy * n1; j++)
+    for (int i = -MPM_HEAD_CELLS * n1; i < 0; i++, k++) {
+      p->x[k] = p->x0[k] = (i + 0.5) * d;
+      p->y[k] = p->y0[k] = (j + 0.5) * d;
+      p->vx[k] = -sc->speed;
+      p->m[k] = mp;
+      p->V[k] = d * d;
+      p->mat[k] = MPM_MAT_HEAD;
+    }
 
-  /* Boundary nodes: columns x = 0 (grip) and x = L (fixed), rows 0..H. */
+  /* Boundary nodes: every column from the head's travel to x = 0 is gripped (rows
+   * 0..H); the column x = L is fixed in x, its mid-height node in y as well. */
   const mpm_grid *g = s->g;
-  for (int j = 0; j <= cy; j++) {
-    s->grip[j] = (int)mpm_grid_node(g, padl, j + pad);
+  int q = 0;
+  for (int i = pad; i <= padl; i++)
+    for (int j = 0; j <= cy; j++)
+      s->grip[q++] = (int)mpm_grid_node(g, i, j + pad);
+  for (int j = 0; j <= cy; j++)
     s->fixx[j] = (int)mpm_grid_node(g, padl + cx, j + pad);
-  }
-  s->ngrip = s->nfixx = cy + 1;
+  s->ngrip = ngrip;
+  s->nfixx = cy + 1;
   s->fixy = s->fixx[cy / 2];
   mpm_sim_sort(s);
   *out = s;
@@ -204,6 +228,8 @@ void mpm_sim_energy(const mpm_sim *s, mpm_energy *e)
   const mpm_particles *p = s->p;
   double ke = 0.0, se = 0.0, wc = 0.0, dd = 0.0;
   for (size_t i = 0; i < p->n; i++) {
+    if (p->mat[i] == MPM_MAT_HEAD)
+      continue; /* the machine, not the specimen */
     const mpm_material *m = &s->mat[p->mat[i]];
     ke += 0.5 * p->m[i] * (p->vx[i] * p->vx[i] + p->vy[i] * p->vy[i]);
     /* plane-stress compliance: exx = (sxx - nu syy)/E, eyy = (syy - nu sxx)/E, gxy = sxy/G */

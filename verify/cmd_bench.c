@@ -52,6 +52,10 @@ static void prestress(mpm_sim *s, double sigma)
   mpm_particles *p = s->p;
   const double exx = sigma / sc->E, eyy = -sc->nu * sigma / sc->E;
   for (size_t k = 0; k < p->n; k++) {
+    if (p->mat[k] == MPM_MAT_HEAD) { /* the head moves with the grip, stress-free */
+      p->x[k] = p->x0[k] - sc->L * exx;
+      continue;
+    }
     p->x[k] = p->x0[k] - (sc->L - p->x0[k]) * exx;
     p->y[k] = p->y0[k] + (p->y0[k] - 0.5 * sc->H) * eyy;
     p->sxx[k] = sigma;

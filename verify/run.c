@@ -86,7 +86,8 @@ static int write_snapshot(const mpm_sim *s, const char *dir, const char *stem)
     return -1;
   fprintf(f, "x0,y0,x,y,ux,uy,lambda,sxx,syy,sxy,upn,upt,sep,wcoh\n");
   for (size_t k = 0; k < p->n; k++)
-    fprintf(f, "%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%d,%.9g\n", p->x0[k], p->y0[k],
+    if (p->mat[k] != MPM_MAT_HEAD)
+      fprintf(f, "%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%d,%.9g\n", p->x0[k], p->y0[k],
             p->x[k], p->y[k], p->x[k] - p->x0[k], p->y[k] - p->y0[k], p->lam[k], p->sxx[k], p->syy[k],
             p->sxy[k], p->upn[k], p->upt[k], p->sep[k], p->wcoh[k]);
   if (commit_file(f, tmp))
@@ -95,22 +96,26 @@ static int write_snapshot(const mpm_sim *s, const char *dir, const char *stem)
   snprintf(name, sizeof name, "%s.vtk", stem);
   if (!(f = open_tmp(dir, name, tmp, sizeof tmp)))
     return -1;
+  const size_t nb = p->n - s->nhead; /* the bar's particles; the head is the machine */
   fprintf(f, "# vtk DataFile Version 3.0\ndelam particles %s t=%g\nASCII\nDATASET POLYDATA\nPOINTS %zu double\n",
-          stem, s->t, p->n);
+          stem, s->t, nb);
   for (size_t k = 0; k < p->n; k++)
-    fprintf(f, "%.9g %.9g 0\n", p->x[k], p->y[k]);
-  fprintf(f, "VERTICES %zu %zu\n", p->n, 2 * p->n);
-  for (size_t k = 0; k < p->n; k++)
+    if (p->mat[k] != MPM_MAT_HEAD)
+      fprintf(f, "%.9g %.9g 0\n", p->x[k], p->y[k]);
+  fprintf(f, "VERTICES %zu %zu\n", nb, 2 * nb);
+  for (size_t k = 0; k < nb; k++)
     fprintf(f, "1 %zu\n", k);
-  fprintf(f, "POINT_DATA %zu\nVECTORS displacement double\n", p->n);
+  fprintf(f, "POINT_DATA %zu\nVECTORS displacement double\n", nb);
   for (size_t k = 0; k < p->n; k++)
-    fprintf(f, "%.9g %.9g 0\n", p->x[k] - p->x0[k], p->y[k] - p->y0[k]);
+    if (p->mat[k] != MPM_MAT_HEAD)
+      fprintf(f, "%.9g %.9g 0\n", p->x[k] - p->x0[k], p->y[k] - p->y0[k]);
   const char *fields[] = {"lambda", "sxx", "syy", "sxy"};
   const double *arrs[] = {p->lam, p->sxx, p->syy, p->sxy};
   for (int q = 0; q < 4; q++) {
     fprintf(f, "SCALARS %s double 1\nLOOKUP_TABLE default\n", fields[q]);
     for (size_t k = 0; k < p->n; k++)
-      fprintf(f, "%.9g\n", arrs[q][k]);
+      if (p->mat[k] != MPM_MAT_HEAD)
+        fprintf(f, "%.9g\n", arrs[q][k]);
   }
   return commit_file(f, tmp);
 }
