@@ -38,6 +38,19 @@ static inline int mpm_shape_at(const mpm_grid *g, double x, double y, mpm_shape 
   return 1;
 }
 
+/* The same for a point known to lie inside the grid (the gather passes, after the
+ * scatter has checked every particle). */
+static inline void mpm_shape_inside(const mpm_grid *g, double x, double y, mpm_shape *s)
+{
+  const double fx = (x - g->ox) * g->ih, fy = (y - g->oy) * g->ih;
+  const int i = (int)fx, j = (int)fy;
+  s->n00 = (size_t)i * (size_t)g->nny + (size_t)j;
+  s->wx1 = fx - i;
+  s->wx0 = 1.0 - s->wx1;
+  s->wy1 = fy - j;
+  s->wy0 = 1.0 - s->wy1;
+}
+
 /* The four N and grad N, in the order (i,j), (i+1,j), (i,j+1), (i+1,j+1). */
 static inline void mpm_shape_eval(const mpm_shape *s, double h, double N[4], double Gx[4], double Gy[4])
 {

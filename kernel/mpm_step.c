@@ -277,7 +277,8 @@ static inline void constitutive(const mpm_sim *s, mpm_particles *restrict p, siz
 
 /* eqs. 5-7 and the constitutive update for the particles of strip q.  USL: strain from
  * v^L (px, py).  MUSL: velocities were already updated; strain from v' (fx, fy). */
-static void g2p_strip(mpm_sim *s, int q, int musl, mpm_dwork *dw, g2p_acc *acc)
+static inline __attribute__((always_inline)) void g2p_strip_impl(mpm_sim *s, int q, const int musl,
+                                                                  mpm_dwork *dw, g2p_acc *acc)
 {
   const mpm_grid geo = *s->g, *g = &geo; /* a local copy: no store below can alias it */
   mpm_particles *p = s->p;
@@ -292,7 +293,7 @@ static void g2p_strip(mpm_sim *s, int q, int musl, mpm_dwork *dw, g2p_acc *acc)
   int resort = 0;
   for (size_t k = s->strip_start[q]; k < s->strip_start[q + 1]; k++) {
     mpm_shape sh;
-    mpm_shape_at(g, x[k], y[k], &sh); /* inside: checked by the scatter */
+    mpm_shape_inside(g, x[k], y[k], &sh); /* inside: checked by the scatter */
     const double wx0 = sh.wx0, wx1 = sh.wx1, wy0 = sh.wy0, wy1 = sh.wy1;
     const size_t n00 = sh.n00, n01 = n00 + 1, n10 = n00 + nny, n11 = n10 + 1;
     const double N00 = wx0 * wy0, N10 = wx1 * wy0, N01 = wx0 * wy1, N11 = wx1 * wy1;
@@ -320,6 +321,16 @@ static void g2p_strip(mpm_sim *s, int q, int musl, mpm_dwork *dw, g2p_acc *acc)
   acc->check += check;
 }
 
+/* One copy of the loop per scheme, so that the USL copy reads v^L once for eq. 5 and
+ * eq. 7 (the compiler cannot know at run time that the two pointers agree). */
+static void g2p_strip(mpm_sim *s, int q, int musl, mpm_dwork *dw, g2p_acc *acc)
+{
+  if (musl)
+    g2p_strip_impl(s, q, 1, dw, acc);
+  else
+    g2p_strip_impl(s, q, 0, dw, acc);
+}
+
 /* MUSL first half: eq. 6 only, for the particles of strip q. */
 static void g2p_velocity_strip(mpm_sim *s, int q)
 {
@@ -328,7 +339,7 @@ static void g2p_velocity_strip(mpm_sim *s, int q)
   const size_t nny = (size_t)g->nny;
   for (size_t k = s->strip_start[q]; k < s->strip_start[q + 1]; k++) {
     mpm_shape sh;
-    mpm_shape_at(g, p->x[k], p->y[k], &sh);
+    mpm_shape_inside(g, p->x[k], p->y[k], &sh);
     const size_t n00 = sh.n00, n01 = n00 + 1, n10 = n00 + nny, n11 = n10 + 1;
     const double N00 = sh.wx0 * sh.wy0, N10 = sh.wx1 * sh.wy0, N01 = sh.wx0 * sh.wy1, N11 = sh.wx1 * sh.wy1;
     p->vx[k] += N00 * g->fx[n00] + N10 * g->fx[n10] + N01 * g->fx[n01] + N11 * g->fx[n11];
