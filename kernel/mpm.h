@@ -161,6 +161,7 @@ typedef struct {
   mpm_scene sc;            /* copy of the scene                                        */
   mpm_material mat[3];     /* MPM_MAT_BAR, MPM_MAT_IMP (the imperfection), MPM_MAT_HEAD */
   size_t nhead;            /* particles of the rigid head (p->n - nhead are the bar's)  */
+  double head_dy;          /* the head's vertical displacement (it moves as one body)   */
   mpm_particles *p;
   mpm_grid *g;
   mpm_dwork *dw;

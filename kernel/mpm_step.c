@@ -411,6 +411,34 @@ static mpm_status g2p(mpm_sim *s, char *err, size_t errlen)
   return MPM_OK;
 }
 
+/* The head is rigid: in x it moves with the grip; in y it is free, as one body whose
+ * momentum is the sum its particles received this step (no y constraint, so the bar's
+ * end may rise, as the paper's Fig. 8 shows).  Serial, in particle order: the same sums
+ * whatever the threads. */
+static void head_rigid(mpm_sim *s)
+{
+  if (s->ngrip == 0)
+    return; /* the head is the grip: without one (tests of the bare step) it is left alone */
+  mpm_particles *p = s->p;
+  double m = 0.0, my = 0.0;
+  for (size_t k = 0; k < p->n; k++)
+    if (p->mat[k] == MPM_MAT_HEAD) {
+      m += p->m[k];
+      my += p->m[k] * p->vy[k];
+    }
+  if (!(m > 0.0))
+    return;
+  const double vy = my / m, dx = -s->sc.speed * (s->step + 1) * s->sc.dt;
+  s->head_dy += vy * s->sc.dt;
+  for (size_t k = 0; k < p->n; k++)
+    if (p->mat[k] == MPM_MAT_HEAD) {
+      p->vx[k] = -s->sc.speed;
+      p->vy[k] = vy;
+      p->x[k] = p->x0[k] + dx;
+      p->y[k] = p->y0[k] + s->head_dy;
+    }
+}
+
 mpm_status mpm_sim_step(mpm_sim *s, char *err, size_t errlen)
 {
   double t0 = wall(), t1;
@@ -454,6 +482,7 @@ mpm_status mpm_sim_step(mpm_sim *s, char *err, size_t errlen)
   s->time_split[MPM_T_G2P] += (t1 - t0) - (s->time_split[MPM_T_CONST] - c0);
   if (st != MPM_OK)
     return st;
+  head_rigid(s);
   s->step++;
   s->t = s->step * s->sc.dt;
   return MPM_OK;

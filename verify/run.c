@@ -2,11 +2,17 @@
  * run.c - the time loop of one scene and its outputs.
  *
  * Stop rule: a run answers its question once the bar has separated.  Separation is
- * detected when, after the peak, the load averaged over the bar's longest natural
- * period (4 L / c, so that ringing after a sudden release averages out) falls below
- * run.sep_load times the peak; delta_sep is the centre of that window; the run goes on for run.stop_margin more end
- * displacement (so the opening grows past ubar0 and the dissipation settles), and
- * past the last requested snapshot, and never beyond run.end_delta.
+ * detected in two ways, and the first one counts:
+ *  - kinematically: the separated particles (lambda past the separation threshold,
+ *    eqs. 56-58) cut every row of particles, so no row still holds the bar together;
+ *  - by the load: after the peak, the load averaged over the bar's longest natural
+ *    period (4 L / c, so that ringing after a sudden release averages out) falls below
+ *    run.sep_load times the peak (delta at the centre of that window).
+ * The kinematic test catches inclined bands, where one velocity per cell keeps a few %
+ * of the load on the grip after the band has failed and the load test never fires.
+ * The run goes on for run.stop_margin more end displacement (so the opening grows past
+ * ubar0 and the dissipation settles), and past the last requested snapshot, and never
+ * beyond run.end_delta.
  *
  * Loads are written as averages over each output interval (impulse / time), which is
  * what a load cell reads; the instantaneous reaction rings at the grid's frequencies.
@@ -165,6 +171,8 @@ static int write_summary(const ver_scene *vs, const ver_summary *u, const char *
   cJSON_AddNumberToObject(o, "peak_P", u->peak_P);
   cJSON_AddNumberToObject(o, "delta_peak", u->delta_peak);
   cJSON_AddNumberToObject(o, "delta_sep", u->delta_sep);
+  cJSON_AddNumberToObject(o, "delta_sep_cut", u->delta_sep_cut);
+  cJSON_AddNumberToObject(o, "delta_sep_load", u->delta_sep_load);
   cJSON_AddNumberToObject(o, "k_elastic", u->k_elastic);
   cJSON_AddNumberToObject(o, "D_final", u->D_final);
   cJSON_AddNumberToObject(o, "W_ext_final", u->W_ext_final);
@@ -220,7 +228,7 @@ static double fit_elastic(const row *r, long n, double peak, double delta_peak)
 int ver_run(const ver_scene *vs, const ver_run_opts *o, ver_summary *u, char *err, size_t errlen)
 {
   memset(u, 0, sizeof *u);
-  u->delta_sep = -1;
+  u->delta_sep = u->delta_sep_cut = u->delta_sep_load = -1;
   const mpm_scene *sc = &vs->sc;
   if (o->write_files) {
     if (mkdir_p(o->outdir) != 0) {
@@ -254,10 +262,17 @@ int ver_run(const ver_scene *vs, const ver_run_opts *o, ver_summary *u, char *er
   const long every = (long)fmax(1.0, floor(vs->interval / vdt + 0.5));
   const long nrows_max = nmax / every + 2;
   row *rows = malloc(sizeof(row) * (size_t)nrows_max);
+  /* rows of particles, for the kinematic separation test */
+  const int n1 = (int)lround(sqrt((double)sc->ppc));
+  const double dpy = sc->h / n1;
+  const int nprow = (int)lround(sc->H / dpy);
+  uint8_t *cut = calloc((size_t)nprow, 1);
   /* separation window: 4 L / c in time, in rows */
   const double c = sqrt(sc->E / (1.0 - sc->nu * sc->nu) / sc->rho);
   const long win = (long)fmax(1.0, ceil(4.0 * sc->L / c / (sc->dt * (double)every)));
-  if (!rows) {
+  if (!rows || !cut) {
+    free(rows);
+    free(cut);
     mpm_sim_free(s);
     snprintf(err, errlen, "out of memory for %ld output rows", nrows_max);
     return 1;
@@ -308,15 +323,33 @@ int ver_run(const ver_scene *vs, const ver_run_opts *o, ver_summary *u, char *er
         peak = r->Pg;
         dpeak = delta;
       }
-      if (u->delta_sep < 0 && peak > 0 && nrow >= win && rows[nrow - win].delta > dpeak) {
+      if (u->delta_sep_cut < 0 && s->n_separate > 0) {
+        const mpm_particles *p = s->p;
+        int ncut = 0;
+        memset(cut, 0, (size_t)nprow);
+        for (size_t k = 0; k < p->n; k++)
+          if (p->sep[k] && p->mat[k] != MPM_MAT_HEAD) {
+            const int j = (int)(p->y0[k] / dpy);
+            if (j >= 0 && j < nprow && !cut[j]) {
+              cut[j] = 1;
+              ncut++;
+            }
+          }
+        if (ncut == nprow)
+          u->delta_sep_cut = delta;
+      }
+      if (u->delta_sep_load < 0 && peak > 0 && nrow >= win && rows[nrow - win].delta > dpeak) {
         double mg = 0.0, mf = 0.0;
         for (long i = nrow - win; i < nrow; i++) {
           mg += rows[i].Pg;
           mf += rows[i].Pf;
         }
         if (fmax(fabs(mg), fabs(mf)) / (double)win < sc->sep_load_frac * peak)
-          u->delta_sep = 0.5 * (rows[nrow - win].delta + delta);
+          u->delta_sep_load = 0.5 * (rows[nrow - win].delta + delta);
       }
+      if (u->delta_sep < 0 && (u->delta_sep_cut >= 0 || u->delta_sep_load >= 0))
+        u->delta_sep = u->delta_sep_cut >= 0 && (u->delta_sep_load < 0 || u->delta_sep_cut < u->delta_sep_load)
+                           ? u->delta_sep_cut : u->delta_sep_load;
     }
     if (o->write_files)
       for (int i = 0; i < vs->nsnap; i++)
@@ -378,6 +411,7 @@ int ver_run(const ver_scene *vs, const ver_run_opts *o, ver_summary *u, char *er
     }
   }
   free(rows);
+  free(cut);
   mpm_sim_free(s);
   return rc;
 }

@@ -20,7 +20,9 @@ typedef struct {
 
 typedef struct {
   double peak_P, delta_peak;     /* largest (interval-averaged) grip load and where  */
-  double delta_sep;              /* first delta after the peak with |P| < sep_load * peak; -1 if none */
+  double delta_sep;              /* separation: the first of delta_sep_cut and delta_sep_load; -1 if none */
+  double delta_sep_cut;          /* first delta at which separated particles cut every particle row */
+  double delta_sep_load;         /* first delta after the peak with the windowed |P| < sep_load * peak */
   double k_elastic;              /* least-squares slope of P(delta) for P < 0.6 peak before the peak */
   double D_final, W_ext_final, W_coh_final, KE_final, SE_final;
   double energy_residual;        /* max |W_ext - KE - SE - W_coh| / max(W_ext) over the rows */
