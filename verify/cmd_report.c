@@ -28,6 +28,7 @@
 
 #include "cmd.h"
 #include "report.h"
+#include "run.h"
 #include "scene.h"
 
 #define PROG "delam report"
@@ -444,7 +445,7 @@ static void write_data(report *R)
   rep_ctx *r = &R->r;
   char p[REP_PATH + 32];
   snprintf(p, sizeof p, "%s/data", r->out);
-  ver_report_mkdirs(p);
+  ver_mkdir_p(p);
   FILE *vars = open_data(r, "vars.gp");
   if (!vars)
     return;
@@ -516,7 +517,7 @@ static void run_gnuplot(report *R)
   char gpabs[2 * REP_PATH + 8], logdir[REP_PATH + 16];
   ver_report_abs(r->gpdir, gpabs, sizeof gpabs);
   snprintf(logdir, sizeof logdir, "%s/logs", r->out);
-  ver_report_mkdirs(logdir);
+  ver_mkdir_p(logdir);
   for (int i = 0; i < n; i++) {
     const fig *f = &R->f[i / 2];
     const char *fmt = i % 2 ? "svg" : "png";
@@ -1254,7 +1255,7 @@ int ver_cmd_report(int argc, char **argv)
     fprintf(stderr, PROG ": no scene files in '%s' (run from the repository, or give --scenes)\n", r->scenes);
     return 2;
   }
-  if (ver_report_mkdirs(r->out) != 0 || ver_report_mkdirs(r->cache) != 0) {
+  if (ver_mkdir_p(r->out) != 0 || ver_mkdir_p(r->cache) != 0) {
     fprintf(stderr, PROG ": cannot create %s or %s\n", r->out, r->cache);
     return 2;
   }

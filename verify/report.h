@@ -79,8 +79,7 @@ typedef struct {
   int have_musl;           /* the scene files accept time.scheme=musl           */
 } rep_ctx;
 
-/* report_run.c */
-int ver_report_mkdirs(const char *path);
+
 /* path made absolute against the working folder (not resolved further). */
 void ver_report_abs(const char *path, char *out, size_t len);
 /* Adds a case (id made from the parameters); returns its index or -1 if full. */

@@ -21,6 +21,7 @@
 #include <unistd.h>
 
 #include "report.h"
+#include "run.h"
 #include "scene.h"
 
 double ver_report_now(void)
@@ -39,24 +40,6 @@ void ver_report_abs(const char *path, char *out, size_t len)
     snprintf(out, len, "%.1000s/%.1000s", cwd, path);
 }
 
-/* mkdir -p; 0 on success. */
-int ver_report_mkdirs(const char *path)
-{
-  char buf[REP_PATH];
-  if (snprintf(buf, sizeof buf, "%s", path) >= (int)sizeof buf)
-    return -1;
-  for (char *p = buf + 1; *p; p++) {
-    if (*p != '/')
-      continue;
-    *p = '\0';
-    if (mkdir(buf, 0777) != 0 && errno != EEXIST)
-      return -1;
-    *p = '/';
-  }
-  if (mkdir(buf, 0777) != 0 && errno != EEXIST)
-    return -1;
-  return 0;
-}
 
 /* "decohesion.separation=0.8" -> "-separation0.8" appended to id. */
 static void id_suffix(char *id, size_t len, const char *set)
@@ -412,7 +395,7 @@ int ver_report_run_cases(rep_ctx *r)
     av[k] = NULL;
     argvs[i] = av;
     /* the log sits beside the run's files; the folder must exist before the child opens it */
-    ver_report_mkdirs(c->dir);
+    ver_mkdir_p(c->dir);
     logs[i] = logstore + (size_t)i * (REP_PATH + 16);
     snprintf(logs[i], REP_PATH + 16, "%s/run.log", c->dir);
     names[i] = c->id;

@@ -48,10 +48,13 @@ static double now_cpu(void)
   return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
-static int mkdir_p(const char *dir)
+int ver_mkdir_p(const char *dir)
 {
   char buf[1024];
-  snprintf(buf, sizeof buf, "%s", dir);
+  if (snprintf(buf, sizeof buf, "%s", dir) >= (int)sizeof buf) {
+    errno = ENAMETOOLONG;
+    return -1;
+  }
   for (char *p = buf + 1; *p; p++)
     if (*p == '/') {
       *p = '\0';
@@ -231,7 +234,7 @@ int ver_run(const ver_scene *vs, const ver_run_opts *o, ver_summary *u, char *er
   u->delta_sep = u->delta_sep_cut = u->delta_sep_load = -1;
   const mpm_scene *sc = &vs->sc;
   if (o->write_files) {
-    if (mkdir_p(o->outdir) != 0) {
+    if (ver_mkdir_p(o->outdir) != 0) {
       snprintf(err, errlen, "%s: cannot create directory: %s", o->outdir, strerror(errno));
       return 2;
     }

@@ -35,6 +35,9 @@ typedef struct {
   int status;                    /* mpm_status of the run                            */
 } ver_summary;
 
+/* mkdir -p; 0 or -1 with errno set. */
+int ver_mkdir_p(const char *dir);
+
 /* Runs the scene.  Returns 0 (complete), 1 (the run failed: message in err),
  * 2 (bad input), 130 (stopped by a signal). */
 int ver_run(const ver_scene *vs, const ver_run_opts *o, ver_summary *sum, char *err, size_t errlen);

@@ -1087,20 +1087,6 @@ static void print_table(const vcase *cs, int n, const vcross *x, int nx)
 
 /* ------------------------------------------------------------------ driver */
 
-static int mkdir_p(const char *dir)
-{
-  char buf[1024];
-  snprintf(buf, sizeof buf, "%s", dir);
-  for (char *p = buf + 1; *p; p++)
-    if (*p == '/') {
-      *p = '\0';
-      if (mkdir(buf, 0777) != 0 && errno != EEXIST)
-        return -1;
-      *p = '/';
-    }
-  return (mkdir(buf, 0777) != 0 && errno != EEXIST) ? -1 : 0;
-}
-
 int ver_verify(const ver_verify_opts *o)
 {
   vcase *cs;
@@ -1122,7 +1108,7 @@ int ver_verify(const ver_verify_opts *o)
     free(cs);
     return 0;
   }
-  if (mkdir_p(o->outdir) != 0) {
+  if (ver_mkdir_p(o->outdir) != 0) {
     fprintf(stderr, "delam verify: %s: cannot create: %s\n", o->outdir, strerror(errno));
     free(cs);
     return 2;
