@@ -33,6 +33,13 @@ enum { MPM_DCOH_NONE = 0, MPM_DCOH_MODEL1 = 1, MPM_DCOH_MODEL2 = 2 };
  * re-projected from the updated particle velocities, which keeps nearly empty nodes
  * (tiny m_i, finite f_i) from injecting huge strain increments. */
 enum { MPM_SCHEME_USL = 0, MPM_SCHEME_MUSL = 1 };
+/* The background grid is discarded every step (sec. 2), so it may be laid anywhere.
+ * STRETCH lays it along the bar's mean stretch, x_i = L + (X_i - L)(1 + delta / L): the
+ * gripped and fixed node columns stay on the bar's ends and no particle crosses them
+ * while the bar is loaded.  FIXED is the paper's fixed grid, where the first particle
+ * column crossing the gripped node line (delta = h / (2 sqrt ppc)) meets MPM's
+ * cell-crossing force error and, before separation, fails the gripped end. */
+enum { MPM_GRID_STRETCH = 0, MPM_GRID_FIXED = 1 };
 
 /* ---- scene: everything a run needs, as plain numbers (filled by verify/scene.c) ---- */
 typedef struct {
@@ -50,6 +57,7 @@ typedef struct {
   int ppc;               /* particles per cell, a perfect square (1, 4, 9, ...)        */
   double margin;         /* empty space around the bar (length; the left side adds the grip's travel) */
   int scheme;            /* MPM_SCHEME_USL (paper) or MPM_SCHEME_MUSL                  */
+  int grid_motion;       /* MPM_GRID_STRETCH (default) or MPM_GRID_FIXED              */
   double dt;             /* time step                                                  */
   double speed;          /* grip speed (pulls the left end in -x)                      */
   double end_delta;      /* the run never goes past this end displacement              */
@@ -133,8 +141,9 @@ void mpm_particles_free(mpm_particles *p);
 typedef struct {
   int ncx, ncy;            /* cells in x and y                                         */
   int nnx, nny;            /* nodes in x and y (ncx+1, ncy+1)                          */
-  double ox, oy, h;        /* origin and spacing                                       */
-  double ih;               /* 1 / h                                                    */
+  double ox, oy, h;        /* origin, and the spacing in y (and in x at t = 0)          */
+  double hx;               /* spacing in x now (the grid may follow the bar's stretch) */
+  double ihx, ihy;         /* 1 / hx, 1 / h                                            */
   double *m;               /* nodal mass                                               */
   double *px, *py;         /* momentum, then Lagrangian velocity v^L after the update  */
   double *fx, *fy;         /* internal force, then v^L - v after the update            */
@@ -162,6 +171,7 @@ typedef struct {
   mpm_material mat[3];     /* MPM_MAT_BAR, MPM_MAT_IMP (the imperfection), MPM_MAT_HEAD */
   size_t nhead;            /* particles of the rigid head (p->n - nhead are the bar's)  */
   double head_dy;          /* the head's vertical displacement (it moves as one body)   */
+  double grid_ox0;         /* the grid's x-origin at t = 0                              */
   mpm_particles *p;
   mpm_grid *g;
   mpm_dwork *dw;

@@ -19,8 +19,8 @@ mpm_grid *mpm_grid_alloc(int ncx, int ncy, double ox, double oy, double h)
   g->nny = ncy + 1;
   g->ox = ox;
   g->oy = oy;
-  g->h = h;
-  g->ih = 1.0 / h;
+  g->h = g->hx = h;
+  g->ihx = g->ihy = 1.0 / h;
   const size_t nn = (size_t)g->nnx * (size_t)g->nny;
   g->m = calloc(nn, sizeof(double));
   g->px = calloc(nn, sizeof(double));

@@ -21,7 +21,7 @@ typedef struct {
  * the grid. */
 static inline int mpm_shape_at(const mpm_grid *g, double x, double y, mpm_shape *s)
 {
-  const double fx = (x - g->ox) * g->ih, fy = (y - g->oy) * g->ih;
+  const double fx = (x - g->ox) * g->ihx, fy = (y - g->oy) * g->ihy;
   if (!(fx >= 0.0 && fy >= 0.0 && fx < (double)g->ncx && fy < (double)g->ncy)) {
     s->n00 = 0;
     s->wx0 = s->wy0 = 1.0;
@@ -42,7 +42,7 @@ static inline int mpm_shape_at(const mpm_grid *g, double x, double y, mpm_shape 
  * scatter has checked every particle). */
 static inline void mpm_shape_inside(const mpm_grid *g, double x, double y, mpm_shape *s)
 {
-  const double fx = (x - g->ox) * g->ih, fy = (y - g->oy) * g->ih;
+  const double fx = (x - g->ox) * g->ihx, fy = (y - g->oy) * g->ihy;
   const int i = (int)fx, j = (int)fy;
   s->n00 = (size_t)i * (size_t)g->nny + (size_t)j;
   s->wx1 = fx - i;
@@ -51,7 +51,8 @@ static inline void mpm_shape_inside(const mpm_grid *g, double x, double y, mpm_s
   s->wy0 = 1.0 - s->wy1;
 }
 
-/* The four N and grad N, in the order (i,j), (i+1,j), (i,j+1), (i+1,j+1). */
+/* The four N and grad N on square cells of side h, in the order (i,j), (i+1,j),
+ * (i,j+1), (i+1,j+1).  (The step's loops write the same with hx and hy.) */
 static inline void mpm_shape_eval(const mpm_shape *s, double h, double N[4], double Gx[4], double Gy[4])
 {
   const double ih = 1.0 / h;

@@ -71,6 +71,7 @@ mpm_status mpm_scene_check(const mpm_scene *sc, char *err, size_t errlen)
   if (sc->ppc < 1 || n * n != sc->ppc) BAD("grid.ppc must be a perfect square (1, 4, 9, ...)");
   if (!(sc->margin >= 0.0)) BAD("grid.margin must be >= 0");
   if (sc->scheme != MPM_SCHEME_USL && sc->scheme != MPM_SCHEME_MUSL) BAD("time.scheme must be usl or musl");
+  if (sc->grid_motion != MPM_GRID_STRETCH && sc->grid_motion != MPM_GRID_FIXED) BAD("grid.motion must be stretch or fixed");
   if (!(sc->dt > 0.0)) BAD("time.dt must be > 0");
   if (!(sc->speed > 0.0)) BAD("loading.speed must be > 0");
   if (!(sc->end_delta > 0.0)) BAD("run.end_delta must be > 0");
@@ -210,6 +211,7 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
       s->grip[q++] = (int)mpm_grid_node(g, i, j + pad);
   for (int j = 0; j <= cy; j++)
     s->fixx[j] = (int)mpm_grid_node(g, padl + cx, j + pad);
+  s->grid_ox0 = g->ox;
   s->ngrip = ngrip;
   s->nfixx = cy + 1;
   s->fixy = s->fixx[cy / 2];

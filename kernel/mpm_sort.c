@@ -41,11 +41,11 @@ void mpm_sim_sort(mpm_sim *s)
   mpm_particles *p = s->p;
   const mpm_grid *g = s->g;
   const size_t n = p->n, ncell = (size_t)g->ncx * (size_t)g->ncy;
-  const double ih = 1.0 / g->h;
+  const double ihx = g->ihx, ihy = g->ihy;
   memset(s->count, 0, (ncell + 1) * sizeof(size_t));
   for (size_t k = 0; k < n; k++) {
     /* Outside the grid (caught by the step) or not finite: clamp, only to sort. */
-    double fx = (p->x[k] - g->ox) * ih, fy = (p->y[k] - g->oy) * ih;
+    double fx = (p->x[k] - g->ox) * ihx, fy = (p->y[k] - g->oy) * ihy;
     fx = fx >= 0.0 ? (fx < g->ncx ? fx : g->ncx - 1) : 0.0;
     fy = fy >= 0.0 ? (fy < g->ncy ? fy : g->ncy - 1) : 0.0;
     const uint32_t key = (uint32_t)((size_t)fx * (size_t)g->ncy + (size_t)fy);

@@ -60,7 +60,7 @@ static int p2g_range(const mpm_grid *gg, const mpm_particles *p, size_t a, size_
 {
   const mpm_grid geo = *gg, *g = &geo; /* a local copy: no store below can alias it */
   const size_t nny = (size_t)g->nny;
-  const double ih = g->ih;
+  const double ihx = g->ihx, ihy = g->ihy;
   double *restrict gm = g->m, *restrict gpx = g->px, *restrict gpy = g->py;
   double *restrict gfx = g->fx, *restrict gfy = g->fy;
   const double *restrict x = p->x, *restrict y = p->y, *restrict vx = p->vx, *restrict vy = p->vy;
@@ -75,18 +75,18 @@ static int p2g_range(const mpm_grid *gg, const mpm_particles *p, size_t a, size_
     }
     const double wx0 = sh.wx0, wx1 = sh.wx1, wy0 = sh.wy0, wy1 = sh.wy1;
     const double mm = pm[k], mvx = mm * vx[k], mvy = mm * vy[k];
-    const double Vi = V[k] * ih;
-    const double A = Vi * sxx[k], B = Vi * sxy[k], C = Vi * syy[k];
+    const double Vx = V[k] * ihx, Vy = V[k] * ihy;
+    const double A = Vx * sxx[k], Bx = Vx * sxy[k], By = Vy * sxy[k], C = Vy * syy[k];
     const size_t n00 = sh.n00, n01 = n00 + 1, n10 = n00 + nny, n11 = n10 + 1;
     const double N00 = wx0 * wy0, N10 = wx1 * wy0, N01 = wx0 * wy1, N11 = wx1 * wy1;
     gm[n00] += mm * N00;   gm[n01] += mm * N01;   gm[n10] += mm * N10;   gm[n11] += mm * N11;
     gpx[n00] += mvx * N00; gpx[n01] += mvx * N01; gpx[n10] += mvx * N10; gpx[n11] += mvx * N11;
     gpy[n00] += mvy * N00; gpy[n01] += mvy * N01; gpy[n10] += mvy * N10; gpy[n11] += mvy * N11;
-    /* f_i = -V sigma . G_i with G_i = (+-wy/h, +-wx/h), eq. 3 */
-    gfx[n00] += A * wy0 + B * wx0;   gfy[n00] += B * wy0 + C * wx0;
-    gfx[n10] += -A * wy0 + B * wx1;  gfy[n10] += -B * wy0 + C * wx1;
-    gfx[n01] += A * wy1 - B * wx0;   gfy[n01] += B * wy1 - C * wx0;
-    gfx[n11] += -A * wy1 - B * wx1;  gfy[n11] += -B * wy1 - C * wx1;
+    /* f_i = -V sigma . G_i with G_i = (+-wy/hx, +-wx/hy), eq. 3 */
+    gfx[n00] += A * wy0 + By * wx0;   gfy[n00] += Bx * wy0 + C * wx0;
+    gfx[n10] += -A * wy0 + By * wx1;  gfy[n10] += -Bx * wy0 + C * wx1;
+    gfx[n01] += A * wy1 - By * wx0;   gfy[n01] += Bx * wy1 - C * wx0;
+    gfx[n11] += -A * wy1 - By * wx1;  gfy[n11] += -Bx * wy1 - C * wx1;
   }
   return out;
 }
@@ -282,7 +282,7 @@ static inline __attribute__((always_inline)) void g2p_strip_impl(mpm_sim *s, int
 {
   const mpm_grid geo = *s->g, *g = &geo; /* a local copy: no store below can alias it */
   mpm_particles *p = s->p;
-  const double ih = g->ih, dt = s->sc.dt, ox = g->ox;
+  const double ihx = g->ihx, ihy = g->ihy, dt = s->sc.dt, ox = g->ox;
   const size_t nny = (size_t)g->nny;
   const double *restrict ux = g->px, *restrict uy = g->py;                 /* v^L      */
   const double *restrict dvx = g->fx, *restrict dvy = g->fy;               /* v^L - v  */
@@ -307,13 +307,13 @@ static inline __attribute__((always_inline)) void g2p_strip_impl(mpm_sim *s, int
     /* eq. 7: gradient of the bilinear velocity field */
     const double a00 = sx[n00], a10 = sx[n10], a01 = sx[n01], a11 = sx[n11];
     const double b00 = sy[n00], b10 = sy[n10], b01 = sy[n01], b11 = sy[n11];
-    const double dxux = ih * (wy0 * (a10 - a00) + wy1 * (a11 - a01));
-    const double dyuy = ih * (wx0 * (b01 - b00) + wx1 * (b11 - b10));
-    const double dyux = ih * (wx0 * (a01 - a00) + wx1 * (a11 - a10));
-    const double dxuy = ih * (wy0 * (b10 - b00) + wy1 * (b11 - b01));
+    const double dxux = ihx * (wy0 * (a10 - a00) + wy1 * (a11 - a01));
+    const double dyuy = ihy * (wx0 * (b01 - b00) + wx1 * (b11 - b10));
+    const double dyux = ihy * (wx0 * (a01 - a00) + wx1 * (a11 - a10));
+    const double dxuy = ihx * (wy0 * (b10 - b00) + wy1 * (b11 - b01));
     const double de[3] = {dt * dxux, dt * dyuy, 0.5 * dt * (dyux + dxuy)};
     constitutive(s, p, k, de, dw, acc);
-    const double col = (x[k] - ox) * ih;
+    const double col = (x[k] - ox) * ihx;
     resort |= col < lo || col >= hi + 1;
     check += vx[k] + vy[k] + p->sxx[k] + p->syy[k] + p->sxy[k];
   }
@@ -439,8 +439,23 @@ static void head_rigid(mpm_sim *s)
     }
 }
 
+/* Lays the background grid for this step (MPM_GRID_STRETCH: along the bar's mean
+ * stretch, so that the gripped column stays on the bar's left end, the fixed one on its
+ * right end). */
+static void lay_grid(mpm_sim *s)
+{
+  if (s->sc.grid_motion != MPM_GRID_STRETCH)
+    return;
+  mpm_grid *g = s->g;
+  const double L = s->sc.L, stretch = 1.0 + mpm_sim_delta(s) / L;
+  g->hx = s->sc.h * stretch;
+  g->ihx = 1.0 / g->hx;
+  g->ox = L + (s->grid_ox0 - L) * stretch;
+}
+
 mpm_status mpm_sim_step(mpm_sim *s, char *err, size_t errlen)
 {
+  lay_grid(s);
   double t0 = wall(), t1;
   if (s->resort || s->step % MPM_SORT_EVERY == 0) {
     mpm_sim_sort(s);
