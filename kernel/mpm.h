@@ -177,7 +177,6 @@ typedef struct {
   double grid_ox0;         /* the grid's x-origin at t = 0                              */
   mpm_particles *p;
   mpm_grid *g;
-  mpm_dwork *dw;
   int *grip;   int ngrip;  /* nodes where v^L_x = -speed (left end)                     */
   int *fixx;   int nfixx;  /* nodes where v^L_x = 0 (right end)                         */
   int fixy;                /* the one node where v^L_y = 0 as well                      */
@@ -186,7 +185,6 @@ typedef struct {
   double P_grip, P_fixed;  /* loads (tension positive) of the last step                 */
   double W_ext;            /* accumulated external work                                */
   long n_soften, n_separate, n_bracketed; /* counters of constitutive paths           */
-  int imp_index;           /* the imperfection particle at setup (indices change when sorted) */
   /* sorting and threads (mpm_sort.c): particles sorted by cell, column by column;
    * strips of MPM_STRIP columns of cells are coloured even/odd for the scatter */
   int nthreads;            /* worker threads (OpenMP), fixed at alloc                   */

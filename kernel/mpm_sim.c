@@ -85,7 +85,6 @@ void mpm_sim_free(mpm_sim *s)
     return;
   mpm_particles_free(s->p);
   mpm_grid_free(s->g);
-  mpm_dwork_free(s->dw);
   if (s->dws)
     for (int t = 0; t < s->nthreads; t++)
       mpm_dwork_free(s->dws[t]);
@@ -130,11 +129,10 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
   s->nthreads = 1;
 #endif
   s->p = mpm_particles_alloc(np);
-  s->dw = mpm_dwork_alloc();
   s->dws = calloc((size_t)s->nthreads, sizeof *s->dws);
   s->grip = malloc(sizeof(int) * (size_t)ngrip);
   s->fixx = malloc(sizeof(int) * (size_t)(cy + 1));
-  int ok = s->g && s->p && s->dw && s->dws && s->grip && s->fixx;
+  int ok = s->g && s->p && s->dws && s->grip && s->fixx;
   if (ok) {
     const size_t ncell = (size_t)s->g->ncx * (size_t)s->g->ncy;
     s->nstrip = (s->g->ncx + MPM_STRIP - 1) / MPM_STRIP;
@@ -173,7 +171,7 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
   const double d = h / n1, mp = sc->rho * d * d;
   size_t k = 0;
   double best = INFINITY;
-  s->imp_index = 0;
+  size_t imp = 0;
   for (int j = 0; j < cy * n1; j++)
     for (int i = 0; i < cx * n1; i++, k++) {
       p->x[k] = p->x0[k] = (i + 0.5) * d;
@@ -185,11 +183,11 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
                         (p->y[k] - sc->imp_y) * (p->y[k] - sc->imp_y);
       if (r2 < best - 1e-12) { /* ties go to the lowest index: deterministic */
         best = r2;
-        s->imp_index = (int)k;
+        imp = k;
       }
     }
   if (sc->model && sc->imp_factor < 1.0)
-    p->mat[s->imp_index] = MPM_MAT_IMP;
+    p->mat[imp] = MPM_MAT_IMP;
   /* The head: the same lattice continued MPM_HEAD_CELLS cells beyond x = 0, moving with
    * the grip. */
   for (int j = 0; j < cy * n1; j++)
