@@ -25,29 +25,7 @@
 #include <cmocka.h>
 
 #include "mpm.h"
-
-/* |got - want| <= tol |want| (or <= tol when want == 0), with a readable failure. */
-static void assert_rel(double got, double want, double tol, const char *what)
-{
-  const double err = want == 0.0 ? fabs(got) : fabs(got - want) / fabs(want);
-  if (!(err <= tol))
-    fail_msg("%s: got %.12g, want %.12g (rel err %.3g > %.3g)", what, got, want, err, tol);
-}
-
-static void assert_abs(double got, double want, double tol, const char *what)
-{
-  if (!(fabs(got - want) <= tol))
-    fail_msg("%s: got %.12g, want %.12g (abs err %.3g > %.3g)", what, got, want, fabs(got - want), tol);
-}
-
-static double urand(uint64_t *s)
-{
-  uint64_t z = (*s += 0x9E3779B97F4A7C15ull);
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-  z ^= z >> 31;
-  return (double)(z >> 11) * 0x1.0p-53;
-}
+#include "test_util.h"
 
 /* The Fig. 6 bar (L 192, H 32, E 1024, nu 0.25, rho 1), elastic, h 8, dt 0.1. */
 static mpm_scene fig6_scene(void)

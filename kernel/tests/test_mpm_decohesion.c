@@ -29,23 +29,10 @@
 #include <gsl/gsl_errno.h>
 
 #include "mpm.h"
+#include "test_util.h"
 
 #define PI 3.14159265358979323846
 #define LE 8.0
-
-/* |got - want| <= tol |want| (or <= tol when want == 0), with a readable failure. */
-static void assert_rel(double got, double want, double tol, const char *what)
-{
-  const double err = want == 0.0 ? fabs(got) : fabs(got - want) / fabs(want);
-  if (!(err <= tol))
-    fail_msg("%s: got %.12g, want %.12g (rel err %.3g > %.3g)", what, got, want, err, tol);
-}
-
-static void assert_abs(double got, double want, double tol, const char *what)
-{
-  if (!(fabs(got - want) <= tol))
-    fail_msg("%s: got %.12g, want %.12g (abs err %.3g > %.3g)", what, got, want, fabs(got - want), tol);
-}
 
 static mpm_scene base_scene(int model, double alpha, double snf, double stf, double s0, double q)
 {

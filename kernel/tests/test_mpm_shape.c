@@ -16,33 +16,10 @@
 #include <cmocka.h>
 
 #include "mpm.h"
+#include "test_util.h"
 #include "mpm_shape.h"
 
 #define NPTS 20000
-
-/* |got - want| <= tol |want| (or <= tol when want == 0), with a readable failure. */
-static void assert_rel(double got, double want, double tol, const char *what)
-{
-  const double err = want == 0.0 ? fabs(got) : fabs(got - want) / fabs(want);
-  if (!(err <= tol))
-    fail_msg("%s: got %.17g, want %.17g (rel err %.3g > %.3g)", what, got, want, err, tol);
-}
-
-static void assert_abs(double got, double want, double tol, const char *what)
-{
-  if (!(fabs(got - want) <= tol))
-    fail_msg("%s: got %.17g, want %.17g (abs err %.3g > %.3g)", what, got, want, fabs(got - want), tol);
-}
-
-/* A small deterministic generator (splitmix64), so a failure can be replayed. */
-static double urand(uint64_t *s)
-{
-  uint64_t z = (*s += 0x9E3779B97F4A7C15ull);
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-  z ^= z >> 31;
-  return (double)(z >> 11) * 0x1.0p-53;
-}
 
 /* An off-centre, non-square grid so that row/column mix-ups and origin errors show. */
 static mpm_grid *test_grid(void)

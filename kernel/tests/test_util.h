@@ -1,0 +1,36 @@
+/*
+ * test_util.h - helpers shared by the kernel's cmocka tests: tolerance asserts with a
+ * readable failure, and a small deterministic generator (splitmix64) so that a
+ * failure can be replayed.  Include after <cmocka.h>.
+ */
+#ifndef DELAM_TEST_UTIL_H
+#define DELAM_TEST_UTIL_H
+
+#include <math.h>
+#include <stdint.h>
+
+/* |got - want| <= tol |want| (or <= tol when want == 0). */
+static inline void assert_rel(double got, double want, double tol, const char *what)
+{
+  const double err = want == 0.0 ? fabs(got) : fabs(got - want) / fabs(want);
+  if (!(err <= tol))
+    fail_msg("%s: got %.17g, want %.17g (rel err %.3g > %.3g)", what, got, want, err, tol);
+}
+
+static inline void assert_abs(double got, double want, double tol, const char *what)
+{
+  if (!(fabs(got - want) <= tol))
+    fail_msg("%s: got %.17g, want %.17g (abs err %.3g > %.3g)", what, got, want, fabs(got - want), tol);
+}
+
+/* Uniform in [0, 1). */
+static inline double urand(uint64_t *s)
+{
+  uint64_t z = (*s += 0x9E3779B97F4A7C15ull);
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+  z ^= z >> 31;
+  return (double)(z >> 11) * 0x1.0p-53;
+}
+
+#endif
