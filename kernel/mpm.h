@@ -84,9 +84,13 @@ typedef struct {
   double ubar0;          /* U0 / s0                                                    */
   double Le;             /* effective length V_e / A_d (eq. 41), fixed for the run     */
   double sep_threshold;  /* eqs. 56-58 take over when lambda would pass this           */
+  double fn[3], ft[3];   /* s_nn / snf and s_nt / stf as dot products with (sxx, syy, sxy):
+                            the step's elastic test (all 0 when model = NONE)          */
 } mpm_material;
 
 void mpm_material_init(mpm_material *m, const mpm_scene *sc, double snf, double Le);
+/* Recomputes fn, ft after model, snf or stf changed. */
+void mpm_material_set_test(mpm_material *m);
 
 /* ---- the pure constitutive update (secs. 4.1-4.3) ---- */
 typedef struct {
@@ -129,8 +133,9 @@ typedef struct {
   double *lam;             /* decohesion parameter                                     */
   double *upn, *upt;       /* displacement jump, n and t components                    */
   double *wcoh;            /* traction work on the failure plane so far (energy)       */
-  double *str;             /* remaining strength 1 - lambda^q (eq. 23), 0 once separated:
-                              lets the step test F <= 0 without a pow per particle     */
+  double *str2;            /* remaining strength squared, (1 - lambda^q)^2 (eq. 23), and -1
+                              once separated: lets the step test F <= 0 without a pow
+                              or a branch per particle                                 */
   uint8_t *mat;            /* index into the material table                            */
   uint8_t *sep;            /* 1 once separated                                         */
 } mpm_particles;
@@ -140,16 +145,23 @@ void mpm_particles_free(mpm_particles *p);
 
 /* ---- grid: a regular lattice of (ncx+1) x (ncy+1) nodes, origin (ox, oy), spacing h.
  * Nodes are stored column by column: node (i, j) is at i * nny + j, so the particles,
- * sorted by cell in the same order, walk the nodal arrays forward. ---- */
+ * sorted by cell in the same order, walk the nodes forward.  A node is one 64-byte
+ * record (a cache line): the scatter adds a particle's share of all five values with
+ * one vector operation per node, and a gather reads them back the same way. ---- */
+typedef struct {
+  _Alignas(64) double m;   /* nodal mass                                               */
+  double px, py;           /* momentum, then Lagrangian velocity v^L after the update  */
+  double fx, fy;           /* internal force, then v^L - v after the update (MUSL: then v') */
+  double pad[3];           /* to 64 bytes; always 0                                    */
+} mpm_node;
+
 typedef struct {
   int ncx, ncy;            /* cells in x and y                                         */
   int nnx, nny;            /* nodes in x and y (ncx+1, ncy+1)                          */
   double ox, oy, h;        /* origin, and the spacing in y (and in x at t = 0)          */
   double hx;               /* spacing in x now (the grid may follow the bar's stretch) */
   double ihx, ihy;         /* 1 / hx, 1 / h                                            */
-  double *m;               /* nodal mass                                               */
-  double *px, *py;         /* momentum, then Lagrangian velocity v^L after the update  */
-  double *fx, *fy;         /* internal force, then v^L - v after the update            */
+  mpm_node *nd;            /* the nodes, nnx * nny                                     */
 } mpm_grid;
 
 mpm_grid *mpm_grid_alloc(int ncx, int ncy, double ox, double oy, double h);
@@ -169,6 +181,15 @@ typedef struct {
 } mpm_energy;
 
 /* ---- the simulation ---- */
+/* Particles whose elastic trial left the elastic domain, waiting for the full
+ * decohesion update (mpm_step.c): one list per thread, flushed when full. */
+#define MPM_DEFER 256
+typedef struct {
+  size_t n;
+  size_t k[MPM_DEFER];
+  double de[MPM_DEFER][3];
+} mpm_defer;
+
 typedef struct {
   mpm_scene sc;            /* copy of the scene                                        */
   mpm_material mat[3];     /* MPM_MAT_BAR, MPM_MAT_IMP (the imperfection), MPM_MAT_HEAD */
@@ -189,6 +210,7 @@ typedef struct {
    * strips of MPM_STRIP columns of cells are coloured even/odd for the scatter */
   int nthreads;            /* worker threads (OpenMP), fixed at alloc                   */
   mpm_dwork **dws;         /* one scratch per thread                                   */
+  mpm_defer *defer;        /* one list per thread                                      */
   int nstrip;              /* strips of columns                                        */
   size_t *strip_start;     /* first particle of each strip (nstrip + 1 entries)        */
   uint32_t *key, *perm;    /* per-particle cell key and sort permutation               */

@@ -89,12 +89,36 @@ void mpm_material_init(mpm_material *m, const mpm_scene *sc, double snf, double 
   m->ubar0 = sc->U0 / sc->s0;
   m->Le = Le;
   m->sep_threshold = sc->sep_threshold;
+  mpm_material_set_test(m);
+}
+
+void mpm_material_set_test(mpm_material *m)
+{
+  const int on = m->model != MPM_DCOH_NONE;
+  const double nx = m->nx, ny = m->ny, tx = m->tx, ty = m->ty;
+  m->fn[0] = on ? nx * nx / m->snf : 0.0;
+  m->fn[1] = on ? ny * ny / m->snf : 0.0;
+  m->fn[2] = on ? 2.0 * nx * ny / m->snf : 0.0;
+  m->ft[0] = on ? nx * tx / m->stf : 0.0;
+  m->ft[1] = on ? ny * ty / m->stf : 0.0;
+  m->ft[2] = on ? (nx * ty + ny * tx) / m->stf : 0.0;
 }
 
 /* lambda^q, exact and cheap for the paper's q = 1. */
 static inline double powq(double lam, double q)
 {
   return q == 1.0 ? lam : pow(lam, q);
+}
+
+/* d(lambda^q)/d lambda = q lambda^(q-1): 1 without a pow for q = 1; at lambda = 0 the
+ * limit (infinite for q < 1, 0 for q > 1). */
+static inline double dpowq(double lam, double q)
+{
+  if (q == 1.0)
+    return 1.0;
+  if (lam > 0.0)
+    return q * pow(lam, q - 1.0);
+  return q < 1.0 ? INFINITY : 0.0;
 }
 
 /* Stress in the n-t frame: (s_nn, s_tt, s_nt). */
@@ -156,8 +180,7 @@ static double dphi(double dl, const phi_ctx *c)
   const double gn = sn > 0.0 ? sn / (c->m->snf * c->m->snf) : 0.0;
   const double gt = st / (c->m->stf * c->m->stf);
   const double lq = c->lam + dl;
-  const double dpow = lq > 0.0 ? c->m->q * pow(lq, c->m->q - 1.0) : (c->m->q < 1.0 ? INFINITY : (c->m->q == 1.0 ? 1.0 : 0.0));
-  return -(gn * c->smn + gt * c->smt) / se + dpow;
+  return -(gn * c->smn + gt * c->smt) / se + dpowq(lq, c->m->q);
 }
 
 /* Root of phi in (0, dlmax]: 0 and *dl on success, -1 when none exists
@@ -278,12 +301,7 @@ mpm_status mpm_dcoh_update(const mpm_material *m, const mpm_dstate *in, const do
     const double smtt = m->E2 * k * mn;
     /* 2b of eq. 49; first-order step of eq. 46 where it exists. */
     const double mstar_sm = (m->s0 / se) * (gn * ctx.smn + gt * ctx.smt);
-    double dpow;
-    if (in->lam > 0.0)
-      dpow = m->q * pow(in->lam, m->q - 1.0);
-    else
-      dpow = m->q < 1.0 ? INFINITY : (m->q == 1.0 ? 1.0 : 0.0);
-    const double two_b = -mstar_sm / m->s0 + dpow;
+    const double two_b = -mstar_sm / m->s0 + dpowq(in->lam, m->q);
     const double guess = (two_b < 0.0 && isfinite(two_b)) ? -c / two_b : 0.0;
     const double dlmax = 1.0 - in->lam;
     double dl = 0.0;

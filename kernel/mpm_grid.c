@@ -3,6 +3,7 @@
  * The grid carries no state between steps; it is zeroed at the start of each one.
  */
 #include <stdlib.h>
+#include <string.h>
 
 #include "mpm.h"
 
@@ -22,15 +23,12 @@ mpm_grid *mpm_grid_alloc(int ncx, int ncy, double ox, double oy, double h)
   g->h = g->hx = h;
   g->ihx = g->ihy = 1.0 / h;
   const size_t nn = (size_t)g->nnx * (size_t)g->nny;
-  g->m = calloc(nn, sizeof(double));
-  g->px = calloc(nn, sizeof(double));
-  g->py = calloc(nn, sizeof(double));
-  g->fx = calloc(nn, sizeof(double));
-  g->fy = calloc(nn, sizeof(double));
-  if (!g->m || !g->px || !g->py || !g->fx || !g->fy) {
+  g->nd = aligned_alloc(_Alignof(mpm_node), nn * sizeof(mpm_node));
+  if (!g->nd) {
     mpm_grid_free(g);
     return NULL;
   }
+  memset(g->nd, 0, nn * sizeof(mpm_node));
   return g;
 }
 
@@ -38,10 +36,6 @@ void mpm_grid_free(mpm_grid *g)
 {
   if (!g)
     return;
-  free(g->m);
-  free(g->px);
-  free(g->py);
-  free(g->fx);
-  free(g->fy);
+  free(g->nd);
   free(g);
 }

@@ -89,6 +89,7 @@ void mpm_sim_free(mpm_sim *s)
     for (int t = 0; t < s->nthreads; t++)
       mpm_dwork_free(s->dws[t]);
   free(s->dws);
+  free(s->defer);
   free(s->strip_start);
   free(s->key);
   free(s->perm);
@@ -130,9 +131,10 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
 #endif
   s->p = mpm_particles_alloc(np);
   s->dws = calloc((size_t)s->nthreads, sizeof *s->dws);
+  s->defer = calloc((size_t)s->nthreads, sizeof *s->defer);
   s->grip = malloc(sizeof(int) * (size_t)ngrip);
   s->fixx = malloc(sizeof(int) * (size_t)(cy + 1));
-  int ok = s->g && s->p && s->dws && s->grip && s->fixx;
+  int ok = s->g && s->p && s->dws && s->defer && s->grip && s->fixx;
   if (ok) {
     const size_t ncell = (size_t)s->g->ncx * (size_t)s->g->ncy;
     s->nstrip = (s->g->ncx + MPM_STRIP - 1) / MPM_STRIP;
@@ -162,6 +164,7 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
   mpm_material_init(&s->mat[MPM_MAT_HEAD], sc, sc->snf, Le);
   s->mat[MPM_MAT_HEAD].model = MPM_DCOH_NONE;            /* stress-free: it only carries mass */
   s->mat[MPM_MAT_HEAD].E1 = s->mat[MPM_MAT_HEAD].E2 = s->mat[MPM_MAT_HEAD].G = 0.0;
+  mpm_material_set_test(&s->mat[MPM_MAT_HEAD]);
   s->nhead = nhead;
 
   /* Particles at the centres of an n x n subdivision of each cell.  The velocity starts

@@ -36,6 +36,9 @@
 
 /* Nodes with less mass than this fraction of a particle's are treated as empty. */
 #define MPM_MASS_EPS 1e-12
+/* The inline elastic test sends a particle to the full update from this fraction of
+ * its remaining strength squared on (a rounding margin, far above 1 ulp). */
+#define MPM_TRIAL_SAFE (1.0 - 1e-9)
 
 static double wall(void)
 {
@@ -53,19 +56,48 @@ static int thread_id(void)
 #endif
 }
 
-/* eqs. 2, 3 for the particles [a, b); 1 if one of them is outside the grid.  The array
- * pointers are hoisted into restrict locals: through g-> and p-> every store would make
- * the compiler reload every pointer. */
+/* A node record as one vector (GCC's vector extension; without AVX it is split into
+ * SSE2 pairs, with AVX-512 it is one register).  Elementwise arithmetic rounds exactly
+ * as the scalar code would, so the vector width never changes a result.  memcpy moves
+ * a record in and out without aliasing questions; it compiles to one load or store. */
+typedef double mpm_v8 __attribute__((vector_size(64)));
+enum { LM = 0, LPX = 1, LPY = 2, LFX = 3, LFY = 4 }; /* lanes: the fields of mpm_node */
+
+static inline mpm_v8 node_load(const mpm_node *n)
+{
+  mpm_v8 v;
+  memcpy(&v, n, sizeof v);
+  return v;
+}
+
+static inline void node_add(mpm_node *n, mpm_v8 d)
+{
+  mpm_v8 v;
+  memcpy(&v, n, sizeof v);
+  v += d;
+  memcpy(n, &v, sizeof v);
+}
+
+/* eqs. 2, 3 for the particles [a, b); 1 if one of them is outside the grid.  A
+ * particle adds to each of its four nodes N_i (m, m vx, m vy) and the force
+ * f_i = -V sigma . G_i, G_i = (+-wy / hx, +-wx / hy).  With FX = (V / hx)(sxx, sxy) and
+ * FY = (V / hy)(sxy, syy) in the force lanes, the four shares factor as
+ *   c00 = wx0 T0 + R0,  c10 = wx1 T0 - R0,  T0 = wy0 P + FY,  R0 = wy0 FX,
+ *   c01 = wx0 T1 + R1,  c11 = wx1 T1 - R1,  T1 = wy1 P - FY,  R1 = wy1 FX.
+ * The particles are sorted by cell, so the shares are summed in registers while the
+ * cell stays the same and added to the nodes when it changes. */
 static int p2g_range(const mpm_grid *gg, const mpm_particles *p, size_t a, size_t b)
 {
   const mpm_grid geo = *gg, *g = &geo; /* a local copy: no store below can alias it */
   const size_t nny = (size_t)g->nny;
   const double ihx = g->ihx, ihy = g->ihy;
-  double *restrict gm = g->m, *restrict gpx = g->px, *restrict gpy = g->py;
-  double *restrict gfx = g->fx, *restrict gfy = g->fy;
+  mpm_node *restrict nd = g->nd;
   const double *restrict x = p->x, *restrict y = p->y, *restrict vx = p->vx, *restrict vy = p->vy;
   const double *restrict pm = p->m, *restrict V = p->V;
   const double *restrict sxx = p->sxx, *restrict syy = p->syy, *restrict sxy = p->sxy;
+  const mpm_v8 zero = {0.0};
+  mpm_v8 c00 = zero, c10 = zero, c01 = zero, c11 = zero;
+  size_t cur = SIZE_MAX; /* the cell being summed (its n00); none yet */
   int out = 0;
   for (size_t k = a; k < b; k++) {
     mpm_shape sh;
@@ -73,43 +105,56 @@ static int p2g_range(const mpm_grid *gg, const mpm_particles *p, size_t a, size_
       out = 1;
       continue;
     }
-    const double wx0 = sh.wx0, wx1 = sh.wx1, wy0 = sh.wy0, wy1 = sh.wy1;
-    const double mm = pm[k], mvx = mm * vx[k], mvy = mm * vy[k];
-    const double Vx = V[k] * ihx, Vy = V[k] * ihy;
-    const double A = Vx * sxx[k], Bx = Vx * sxy[k], By = Vy * sxy[k], C = Vy * syy[k];
-    const size_t n00 = sh.n00, n01 = n00 + 1, n10 = n00 + nny, n11 = n10 + 1;
-    const double N00 = wx0 * wy0, N10 = wx1 * wy0, N01 = wx0 * wy1, N11 = wx1 * wy1;
-    gm[n00] += mm * N00;   gm[n01] += mm * N01;   gm[n10] += mm * N10;   gm[n11] += mm * N11;
-    gpx[n00] += mvx * N00; gpx[n01] += mvx * N01; gpx[n10] += mvx * N10; gpx[n11] += mvx * N11;
-    gpy[n00] += mvy * N00; gpy[n01] += mvy * N01; gpy[n10] += mvy * N10; gpy[n11] += mvy * N11;
-    /* f_i = -V sigma . G_i with G_i = (+-wy/hx, +-wx/hy), eq. 3 */
-    gfx[n00] += A * wy0 + By * wx0;   gfy[n00] += Bx * wy0 + C * wx0;
-    gfx[n10] += -A * wy0 + By * wx1;  gfy[n10] += -Bx * wy0 + C * wx1;
-    gfx[n01] += A * wy1 - By * wx0;   gfy[n01] += Bx * wy1 - C * wx0;
-    gfx[n11] += -A * wy1 - By * wx1;  gfy[n11] += -Bx * wy1 - C * wx1;
+    if (sh.n00 != cur) {
+      if (cur != SIZE_MAX) {
+        node_add(nd + cur, c00);
+        node_add(nd + cur + nny, c10);
+        node_add(nd + cur + 1, c01);
+        node_add(nd + cur + nny + 1, c11);
+      }
+      c00 = c10 = c01 = c11 = zero;
+      cur = sh.n00;
+    }
+    const double mm = pm[k], Vx = V[k] * ihx, Vy = V[k] * ihy;
+    const mpm_v8 P = {mm, mm * vx[k], mm * vy[k], 0.0, 0.0, 0.0, 0.0, 0.0};
+    const mpm_v8 FX = {0.0, 0.0, 0.0, Vx * sxx[k], Vx * sxy[k], 0.0, 0.0, 0.0};
+    const mpm_v8 FY = {0.0, 0.0, 0.0, Vy * sxy[k], Vy * syy[k], 0.0, 0.0, 0.0};
+    const mpm_v8 T0 = sh.wy0 * P + FY, R0 = sh.wy0 * FX;
+    const mpm_v8 T1 = sh.wy1 * P - FY, R1 = sh.wy1 * FX;
+    c00 += sh.wx0 * T0 + R0;
+    c10 += sh.wx1 * T0 - R0;
+    c01 += sh.wx0 * T1 + R1;
+    c11 += sh.wx1 * T1 - R1;
+  }
+  if (cur != SIZE_MAX) {
+    node_add(nd + cur, c00);
+    node_add(nd + cur + nny, c10);
+    node_add(nd + cur + 1, c01);
+    node_add(nd + cur + nny + 1, c11);
   }
   return out;
 }
 
-/* MUSL: momentum of the updated particle velocities into (vx, vy) for [a, b). */
-static void p2g_momentum_range(const mpm_grid *restrict g, const mpm_particles *restrict p,
-                               double *restrict qx, double *restrict qy, size_t a, size_t b)
+/* MUSL: momentum of the updated particle velocities into the force lanes for [a, b). */
+static void p2g_momentum_range(const mpm_grid *restrict g, const mpm_particles *restrict p, size_t a, size_t b)
 {
   const size_t nny = (size_t)g->nny;
+  mpm_node *restrict nd = g->nd;
   for (size_t k = a; k < b; k++) {
     mpm_shape sh;
     if (!mpm_shape_at(g, p->x[k], p->y[k], &sh))
       continue;
-    const double mvx = p->m[k] * p->vx[k], mvy = p->m[k] * p->vy[k];
+    const mpm_v8 Q = {0.0, 0.0, 0.0, p->m[k] * p->vx[k], p->m[k] * p->vy[k], 0.0, 0.0, 0.0};
     const size_t n00 = sh.n00, n01 = n00 + 1, n10 = n00 + nny, n11 = n10 + 1;
-    const double N00 = sh.wx0 * sh.wy0, N10 = sh.wx1 * sh.wy0, N01 = sh.wx0 * sh.wy1, N11 = sh.wx1 * sh.wy1;
-    qx[n00] += mvx * N00; qx[n01] += mvx * N01; qx[n10] += mvx * N10; qx[n11] += mvx * N11;
-    qy[n00] += mvy * N00; qy[n01] += mvy * N01; qy[n10] += mvy * N10; qy[n11] += mvy * N11;
+    node_add(nd + n00, (sh.wx0 * sh.wy0) * Q);
+    node_add(nd + n10, (sh.wx1 * sh.wy0) * Q);
+    node_add(nd + n01, (sh.wx0 * sh.wy1) * Q);
+    node_add(nd + n11, (sh.wx1 * sh.wy1) * Q);
   }
 }
 
 /* Scatter over the strips, colour by colour (deterministic, no atomics).  which = 0:
- * eqs. 2-3; which = 1: MUSL momentum into (fx, fy). */
+ * eqs. 2-3; which = 1: MUSL momentum into the force lanes (fx, fy). */
 static int scatter(mpm_sim *s, int which)
 {
   mpm_grid *g = s->g;
@@ -123,7 +168,7 @@ static int scatter(mpm_sim *s, int which)
       if (which == 0)
         out |= p2g_range(g, p, s->strip_start[q], s->strip_start[q + 1]);
       else
-        p2g_momentum_range(g, p, g->fx, g->fy, s->strip_start[q], s->strip_start[q + 1]);
+        p2g_momentum_range(g, p, s->strip_start[q], s->strip_start[q + 1]);
     }
   }
   return out;
@@ -139,15 +184,16 @@ static void grid_update(mpm_sim *s)
 #pragma omp parallel for schedule(static) num_threads(s->nthreads)
 #endif
   for (long k = 0; k < nn; k++) {
-    if (g->m[k] > mmin) {
-      const double im = 1.0 / g->m[k];
-      const double dvx = dt * g->fx[k] * im, dvy = dt * g->fy[k] * im;
-      g->px[k] = g->px[k] * im + dvx;
-      g->py[k] = g->py[k] * im + dvy;
-      g->fx[k] = dvx;
-      g->fy[k] = dvy;
+    mpm_node *n = &g->nd[k];
+    if (n->m > mmin) {
+      const double im = 1.0 / n->m;
+      const double dvx = dt * n->fx * im, dvy = dt * n->fy * im;
+      n->px = n->px * im + dvx;
+      n->py = n->py * im + dvy;
+      n->fx = dvx;
+      n->fy = dvy;
     } else {
-      g->px[k] = g->py[k] = g->fx[k] = g->fy[k] = 0.0;
+      n->px = n->py = n->fx = n->fy = 0.0;
     }
   }
   /* Reaction of a constraint: the force that turns the free v^L into the prescribed one,
@@ -156,20 +202,20 @@ static void grid_update(mpm_sim *s)
   double Rg = 0.0, Rf = 0.0;
   for (int q = 0; q < s->ngrip; q++) {
     const int k = s->grip[q];
-    const double jump = vg - g->px[k];
-    Rg += g->m[k] * jump;
-    g->px[k] = vg;
-    g->fx[k] += jump;
+    const double jump = vg - g->nd[k].px;
+    Rg += g->nd[k].m * jump;
+    g->nd[k].px = vg;
+    g->nd[k].fx += jump;
   }
   for (int q = 0; q < s->nfixx; q++) {
     const int k = s->fixx[q];
-    const double jump = -g->px[k];
-    Rf += g->m[k] * jump;
-    g->px[k] = 0.0;
-    g->fx[k] += jump;
+    const double jump = -g->nd[k].px;
+    Rf += g->nd[k].m * jump;
+    g->nd[k].px = 0.0;
+    g->nd[k].fx += jump;
   }
-  g->fy[s->fixy] -= g->py[s->fixy];
-  g->py[s->fixy] = 0.0;
+  g->nd[s->fixy].fy -= g->nd[s->fixy].py;
+  g->nd[s->fixy].py = 0.0;
   s->P_grip = -Rg / dt;
   s->P_fixed = Rf / dt;
   s->W_ext += (Rg / dt) * vg * dt; /* power of the grip's force; the fixed nodes do no work */
@@ -185,15 +231,16 @@ static void grid_musl_velocity(mpm_sim *s)
 #pragma omp parallel for schedule(static) num_threads(s->nthreads)
 #endif
   for (long k = 0; k < nn; k++) {
-    const double im = g->m[k] > mmin ? 1.0 / g->m[k] : 0.0;
-    g->fx[k] *= im;
-    g->fy[k] *= im;
+    mpm_node *n = &g->nd[k];
+    const double im = n->m > mmin ? 1.0 / n->m : 0.0;
+    n->fx *= im;
+    n->fy *= im;
   }
   for (int q = 0; q < s->ngrip; q++)
-    g->fx[s->grip[q]] = -s->sc.speed;
+    g->nd[s->grip[q]].fx = -s->sc.speed;
   for (int q = 0; q < s->nfixx; q++)
-    g->fx[s->fixx[q]] = 0.0;
-  g->fy[s->fixy] = 0.0;
+    g->nd[s->fixx[q]].fx = 0.0;
+  g->nd[s->fixy].fy = 0.0;
 }
 
 /* Names the first particle whose state is not finite. */
@@ -222,113 +269,134 @@ typedef struct {
   double check;    /* sum of the new state: NaN if anything is not finite */
 } g2p_acc;
 
-/* The full decohesion update of particle k (sec. 4), off the hot path. */
-static __attribute__((noinline)) void constitutive_full(const mpm_material *m, mpm_particles *restrict p,
-                                                         size_t k, const double de[3], mpm_dwork *dw,
-                                                         g2p_acc *acc)
+/* The full decohesion update (sec. 4) of the particles in the thread's list, in list
+ * order, off the hot loop; one timing per batch. */
+static __attribute__((noinline)) void constitutive_flush(const mpm_sim *s, mpm_particles *restrict p,
+                                                          mpm_defer *d, mpm_dwork *dw, g2p_acc *acc)
 {
+  if (d->n == 0)
+    return;
   const double t0 = wall();
-  const mpm_dstate in = {p->sxx[k], p->syy[k], p->sxy[k], p->lam[k], p->upn[k], p->upt[k], p->sep[k]};
-  mpm_dstate o;
-  mpm_dinfo info;
-  if (mpm_dcoh_update(m, &in, de, &o, &info, dw) != MPM_OK && !acc->bad) {
-    acc->bad = 1;
-    acc->bad_k = k;
+  double check = 0.0;
+  for (size_t i = 0; i < d->n; i++) {
+    const size_t k = d->k[i];
+    const mpm_material *m = &s->mat[p->mat[k]];
+    const mpm_dstate in = {p->sxx[k], p->syy[k], p->sxy[k], p->lam[k], p->upn[k], p->upt[k], p->sep[k]};
+    mpm_dstate o;
+    mpm_dinfo info;
+    if (mpm_dcoh_update(m, &in, d->de[i], &o, &info, dw) != MPM_OK && (!acc->bad || k < acc->bad_k)) {
+      acc->bad = 1;
+      acc->bad_k = k;
+    }
+    p->sxx[k] = o.sxx;
+    p->syy[k] = o.syy;
+    p->sxy[k] = o.sxy;
+    p->lam[k] = o.lam;
+    p->upn[k] = o.upn;
+    p->upt[k] = o.upt;
+    p->sep[k] = (uint8_t)o.sep;
+    const double str = 1.0 - (m->q == 1.0 ? o.lam : pow(o.lam, m->q));
+    p->str2[k] = o.sep ? -1.0 : str * str;
+    p->wcoh[k] += info.w * p->V[k] / m->Le;
+    acc->soften += info.path == MPM_DPATH_SOFTEN;
+    acc->separate += info.path == MPM_DPATH_SEPARATE;
+    acc->bracketed += info.bracketed;
+    check += o.sxx + o.syy + o.sxy;
   }
-  p->sxx[k] = o.sxx;
-  p->syy[k] = o.syy;
-  p->sxy[k] = o.sxy;
-  p->lam[k] = o.lam;
-  p->upn[k] = o.upn;
-  p->upt[k] = o.upt;
-  p->sep[k] = (uint8_t)o.sep;
-  p->str[k] = o.sep ? 0.0 : 1.0 - (m->q == 1.0 ? o.lam : pow(o.lam, m->q));
-  p->wcoh[k] += info.w * p->V[k] / m->Le;
-  acc->soften += info.path == MPM_DPATH_SOFTEN;
-  acc->separate += info.path == MPM_DPATH_SEPARATE;
-  acc->bracketed += info.bracketed;
+  d->n = 0;
+  acc->check += check;
   acc->tconst += wall() - t0;
 }
 
-/* The constitutive update of particle k with strain increment de (eq. 7 -> sec. 4):
- * the elastic trial inline, the full update only where F > 0 may hold. */
-static inline void constitutive(const mpm_sim *s, mpm_particles *restrict p, size_t k, const double de[3],
-                                mpm_dwork *dw, g2p_acc *acc)
-{
-  const mpm_material *m = &s->mat[p->mat[k]];
-  double *restrict psxx = p->sxx, *restrict psyy = p->syy, *restrict psxy = p->sxy;
-  const double sxx = psxx[k] + m->E1 * de[0] + m->E2 * de[1];
-  const double syy = psyy[k] + m->E2 * de[0] + m->E1 * de[1];
-  const double sxy = psxy[k] + 2.0 * m->G * de[2];
-  if (m->model != MPM_DCOH_NONE) {
-    /* F <= 0 (eq. 23) as se^2 <= (1 - lambda^q)^2, with the strength cached */
-    const double tx = sxx * m->nx + sxy * m->ny, ty = sxy * m->nx + syy * m->ny;
-    const double sn = tx * m->nx + ty * m->ny, st = tx * m->tx + ty * m->ty;
-    const double a = sn > 0.0 ? sn / m->snf : 0.0, b = st / m->stf;
-    if (p->sep[k] || a * a + b * b > p->str[k] * p->str[k]) {
-      constitutive_full(m, p, k, de, dw, acc);
-      return;
-    }
-  }
-  psxx[k] = sxx;
-  psyy[k] = syy;
-  psxy[k] = sxy;
-}
-
-/* eqs. 5-7 and the constitutive update for the particles of strip q.  USL: strain from
- * v^L (px, py).  MUSL: velocities were already updated; strain from v' (fx, fy). */
+/* eqs. 5-7 and the constitutive update for the particles of strip q.  The four node
+ * records give, in one weighted sum each, the interpolated values of every lane (S) and
+ * their x and y derivatives (GX, GY).  USL: strain from v^L (lanes px, py).  MUSL:
+ * velocities were already updated; strain from v' (lanes fx, fy). */
 static inline __attribute__((always_inline)) void g2p_strip_impl(mpm_sim *s, int q, const int musl,
-                                                                  mpm_dwork *dw, g2p_acc *acc)
+                                                                  mpm_defer *d, mpm_dwork *dw, g2p_acc *acc)
 {
   const mpm_grid geo = *s->g, *g = &geo; /* a local copy: no store below can alias it */
-  mpm_particles *p = s->p;
+  const mpm_particles *p = s->p;
   const double ihx = g->ihx, ihy = g->ihy, dt = s->sc.dt, ox = g->ox;
   const size_t nny = (size_t)g->nny;
-  const double *restrict ux = g->px, *restrict uy = g->py;                 /* v^L      */
-  const double *restrict dvx = g->fx, *restrict dvy = g->fy;               /* v^L - v  */
-  const double *restrict sx = musl ? g->fx : g->px, *restrict sy = musl ? g->fy : g->py; /* strain velocity */
-  double *restrict x = p->x, *restrict y = p->y, *restrict vx = p->vx, *restrict vy = p->vy;
+  const int ux = musl ? LFX : LPX, uy = ux + 1; /* the lanes of the strain velocity */
   const int lo = q * MPM_STRIP - 1, hi = (q + 1) * MPM_STRIP; /* safe columns (mpm_sort.c) */
+  const size_t end = s->strip_start[q + 1];
   double check = 0.0;
   int resort = 0;
-  for (size_t k = s->strip_start[q]; k < s->strip_start[q + 1]; k++) {
-    mpm_shape sh;
-    mpm_shape_inside(g, x[k], y[k], &sh); /* inside: checked by the scatter */
-    const double wx0 = sh.wx0, wx1 = sh.wx1, wy0 = sh.wy0, wy1 = sh.wy1;
-    const size_t n00 = sh.n00, n01 = n00 + 1, n10 = n00 + nny, n11 = n10 + 1;
-    const double N00 = wx0 * wy0, N10 = wx1 * wy0, N01 = wx0 * wy1, N11 = wx1 * wy1;
-    /* eq. 5 (and eq. 6 for USL) */
-    x[k] += dt * (N00 * ux[n00] + N10 * ux[n10] + N01 * ux[n01] + N11 * ux[n11]);
-    y[k] += dt * (N00 * uy[n00] + N10 * uy[n10] + N01 * uy[n01] + N11 * uy[n11]);
-    if (!musl) {
-      vx[k] += N00 * dvx[n00] + N10 * dvx[n10] + N01 * dvx[n01] + N11 * dvx[n11];
-      vy[k] += N00 * dvy[n00] + N10 * dvy[n10] + N01 * dvy[n01] + N11 * dvy[n11];
+  /* Chunks of at most MPM_DEFER particles: the list cannot overflow inside one, and the
+   * full updates run after it, outside the restrict-qualified block. */
+  for (size_t c0 = s->strip_start[q]; c0 < end; c0 += MPM_DEFER) {
+    const size_t c1 = end - c0 < MPM_DEFER ? end : c0 + MPM_DEFER;
+    const mpm_node *restrict nd = g->nd;
+    double *restrict x = p->x, *restrict y = p->y, *restrict vx = p->vx, *restrict vy = p->vy;
+    double *restrict sxx = p->sxx, *restrict syy = p->syy, *restrict sxy = p->sxy;
+    const double *restrict str2 = p->str2;
+    const uint8_t *restrict pmat = p->mat;
+    const mpm_material *restrict mat = s->mat;
+    size_t *restrict dk = d->k;
+    double(*restrict dde)[3] = d->de;
+    size_t nd_ = 0;
+    for (size_t k = c0; k < c1; k++) {
+      mpm_shape sh;
+      mpm_shape_inside(g, x[k], y[k], &sh); /* inside: checked by the scatter */
+      const double wx0 = sh.wx0, wx1 = sh.wx1, wy0 = sh.wy0, wy1 = sh.wy1;
+      const size_t n00 = sh.n00, n01 = n00 + 1, n10 = n00 + nny, n11 = n10 + 1;
+      const mpm_v8 a00 = node_load(nd + n00), a10 = node_load(nd + n10);
+      const mpm_v8 a01 = node_load(nd + n01), a11 = node_load(nd + n11);
+      const mpm_v8 S = (wx0 * wy0) * a00 + (wx1 * wy0) * a10 + (wx0 * wy1) * a01 + (wx1 * wy1) * a11;
+      /* eq. 7: gradient of the bilinear field */
+      const mpm_v8 GX = ihx * (wy0 * (a10 - a00) + wy1 * (a11 - a01));
+      const mpm_v8 GY = ihy * (wx0 * (a01 - a00) + wx1 * (a11 - a10));
+      /* eq. 5 (and eq. 6 for USL) */
+      x[k] += dt * S[LPX];
+      y[k] += dt * S[LPY];
+      if (!musl) {
+        vx[k] += S[LFX];
+        vy[k] += S[LFY];
+      }
+      const double de0 = dt * GX[ux], de1 = dt * GY[uy], de2 = 0.5 * dt * (GY[ux] + GX[uy]);
+      /* sec. 4: the elastic trial, kept where F <= 0 (eq. 23), tested as
+       * <s_nn / snf>^2 + (s_nt / stf)^2 <= (1 - lambda^q)^2 with the strength cached
+       * (str2 < 0 once separated: always the full update).  It rounds differently from
+       * the full update, so anything within MPM_TRIAL_SAFE of the surface goes on the
+       * list for the full update, which decides. */
+      const mpm_material *m = &mat[pmat[k]];
+      const double txx = sxx[k] + m->E1 * de0 + m->E2 * de1;
+      const double tyy = syy[k] + m->E2 * de0 + m->E1 * de1;
+      const double txy = sxy[k] + 2.0 * m->G * de2;
+      const double sn = m->fn[0] * txx + m->fn[1] * tyy + m->fn[2] * txy, a = sn > 0.0 ? sn : 0.0;
+      const double b = m->ft[0] * txx + m->ft[1] * tyy + m->ft[2] * txy;
+      if (__builtin_expect(a * a + b * b >= MPM_TRIAL_SAFE * str2[k], 0)) {
+        dk[nd_] = k;
+        dde[nd_][0] = de0;
+        dde[nd_][1] = de1;
+        dde[nd_][2] = de2;
+        nd_++;
+      } else {
+        sxx[k] = txx;
+        syy[k] = tyy;
+        sxy[k] = txy;
+        check += txx + tyy + txy;
+      }
+      const double col = (x[k] - ox) * ihx;
+      resort |= col < lo || col >= hi + 1;
+      check += vx[k] + vy[k];
     }
-    /* eq. 7: gradient of the bilinear velocity field */
-    const double a00 = sx[n00], a10 = sx[n10], a01 = sx[n01], a11 = sx[n11];
-    const double b00 = sy[n00], b10 = sy[n10], b01 = sy[n01], b11 = sy[n11];
-    const double dxux = ihx * (wy0 * (a10 - a00) + wy1 * (a11 - a01));
-    const double dyuy = ihy * (wx0 * (b01 - b00) + wx1 * (b11 - b10));
-    const double dyux = ihy * (wx0 * (a01 - a00) + wx1 * (a11 - a10));
-    const double dxuy = ihx * (wy0 * (b10 - b00) + wy1 * (b11 - b01));
-    const double de[3] = {dt * dxux, dt * dyuy, 0.5 * dt * (dyux + dxuy)};
-    constitutive(s, p, k, de, dw, acc);
-    const double col = (x[k] - ox) * ihx;
-    resort |= col < lo || col >= hi + 1;
-    check += vx[k] + vy[k] + p->sxx[k] + p->syy[k] + p->sxy[k];
+    d->n = nd_;
+    constitutive_flush(s, s->p, d, dw, acc);
   }
   acc->resort |= resort;
   acc->check += check;
 }
 
-/* One copy of the loop per scheme, so that the USL copy reads v^L once for eq. 5 and
- * eq. 7 (the compiler cannot know at run time that the two pointers agree). */
-static void g2p_strip(mpm_sim *s, int q, int musl, mpm_dwork *dw, g2p_acc *acc)
+/* One copy of the loop per scheme, so that each reads only the lanes it needs. */
+static void g2p_strip(mpm_sim *s, int q, int musl, mpm_defer *d, mpm_dwork *dw, g2p_acc *acc)
 {
   if (musl)
-    g2p_strip_impl(s, q, 1, dw, acc);
+    g2p_strip_impl(s, q, 1, d, dw, acc);
   else
-    g2p_strip_impl(s, q, 0, dw, acc);
+    g2p_strip_impl(s, q, 0, d, dw, acc);
 }
 
 /* MUSL first half: eq. 6 only, for the particles of strip q. */
@@ -337,13 +405,15 @@ static void g2p_velocity_strip(mpm_sim *s, int q)
   const mpm_grid *g = s->g;
   mpm_particles *restrict p = s->p;
   const size_t nny = (size_t)g->nny;
+  const mpm_node *restrict nd = g->nd;
   for (size_t k = s->strip_start[q]; k < s->strip_start[q + 1]; k++) {
     mpm_shape sh;
     mpm_shape_inside(g, p->x[k], p->y[k], &sh);
     const size_t n00 = sh.n00, n01 = n00 + 1, n10 = n00 + nny, n11 = n10 + 1;
-    const double N00 = sh.wx0 * sh.wy0, N10 = sh.wx1 * sh.wy0, N01 = sh.wx0 * sh.wy1, N11 = sh.wx1 * sh.wy1;
-    p->vx[k] += N00 * g->fx[n00] + N10 * g->fx[n10] + N01 * g->fx[n01] + N11 * g->fx[n11];
-    p->vy[k] += N00 * g->fy[n00] + N10 * g->fy[n10] + N01 * g->fy[n01] + N11 * g->fy[n11];
+    const mpm_v8 S = (sh.wx0 * sh.wy0) * node_load(nd + n00) + (sh.wx1 * sh.wy0) * node_load(nd + n10) +
+                     (sh.wx0 * sh.wy1) * node_load(nd + n01) + (sh.wx1 * sh.wy1) * node_load(nd + n11);
+    p->vx[k] += S[LFX];
+    p->vy[k] += S[LFY];
   }
 }
 
@@ -358,8 +428,8 @@ static mpm_status g2p(mpm_sim *s, char *err, size_t errlen)
       g2p_velocity_strip(s, q);
     mpm_grid *g = s->g;
     const size_t nn = (size_t)g->nnx * (size_t)g->nny;
-    memset(g->fx, 0, nn * sizeof(double));
-    memset(g->fy, 0, nn * sizeof(double));
+    for (size_t k = 0; k < nn; k++)
+      g->nd[k].fx = g->nd[k].fy = 0.0;
     scatter(s, 1);
     grid_musl_velocity(s);
   }
@@ -370,11 +440,12 @@ static mpm_status g2p(mpm_sim *s, char *err, size_t errlen)
   {
     g2p_acc acc = {0, 0, 0, 0.0, 0, 0, 0, 0.0};
     mpm_dwork *dw = s->dws[thread_id()];
+    mpm_defer *d = &s->defer[thread_id()];
 #ifdef _OPENMP
 #pragma omp for schedule(dynamic, 1)
 #endif
     for (int q = 0; q < s->nstrip; q++)
-      g2p_strip(s, q, musl, dw, &acc);
+      g2p_strip(s, q, musl, d, dw, &acc);
 #ifdef _OPENMP
 #pragma omp critical
 #endif
@@ -465,11 +536,7 @@ mpm_status mpm_sim_step(mpm_sim *s, char *err, size_t errlen)
   }
   mpm_grid *g = s->g;
   const size_t nn = (size_t)g->nnx * (size_t)g->nny;
-  memset(g->m, 0, nn * sizeof(double));
-  memset(g->px, 0, nn * sizeof(double));
-  memset(g->py, 0, nn * sizeof(double));
-  memset(g->fx, 0, nn * sizeof(double));
-  memset(g->fy, 0, nn * sizeof(double));
+  memset(g->nd, 0, nn * sizeof(mpm_node));
   if (scatter(s, 0)) {
     const mpm_particles *p = s->p;
     mpm_status st = MPM_EDOMAIN;

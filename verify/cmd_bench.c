@@ -71,7 +71,7 @@ static size_t bytes_per_particle(const mpm_sim *s)
   const size_t ncell = (size_t)s->g->ncx * (size_t)s->g->ncy;
   const size_t particles = np * (16 * sizeof(double) + 2);         /* mpm_particles  */
   const size_t sorting = np * (sizeof(double) + 1 + 2 * sizeof(uint32_t)) + (ncell + 1) * sizeof(size_t);
-  const size_t grid = nn * 5 * sizeof(double);
+  const size_t grid = nn * sizeof(mpm_node);
   return (particles + sorting + grid + np / 2) / np;
 }
 

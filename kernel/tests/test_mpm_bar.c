@@ -112,7 +112,7 @@ static void momentum_case(int scheme)
   double smax = 0.0;
   for (int k = 0; k < 200; k++) {
     run_steps(s, 1);
-    assert_true(s->g->m[0] == 0.0);
+    assert_true(s->g->nd[0].m == 0.0);
     double px, py;
     mpm_particles_momentum(s->p, &px, &py);
     assert_abs(px, px0, 1e-12 * scale, scheme ? "MUSL: x momentum" : "USL: x momentum");
