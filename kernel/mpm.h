@@ -84,13 +84,19 @@ typedef struct {
   double ubar0;          /* U0 / s0                                                    */
   double Le;             /* effective length V_e / A_d (eq. 41), fixed for the run     */
   double sep_threshold;  /* eqs. 56-58 take over when lambda would pass this           */
+  /* derived (mpm_material_derive), so that the hot paths multiply instead of divide */
+  double isnf, istf;     /* 1 / snf, 1 / stf                                            */
+  double isnf2, istf2;   /* 1 / snf^2, 1 / stf^2                                        */
+  double kL;             /* ubar0 / Le                                                 */
+  double rnn[3], rtt[3], rnt[3]; /* (s_nn, s_tt, s_nt) = r . (sxx, syy, sxy)             */
+  double rxx[3], ryy[3], rxy[3]; /* (sxx, syy, sxy) = r . (s_nn, s_tt, s_nt)             */
   double fn[3], ft[3];   /* s_nn / snf and s_nt / stf as dot products with (sxx, syy, sxy):
                             the step's elastic test (all 0 when model = NONE)          */
 } mpm_material;
 
 void mpm_material_init(mpm_material *m, const mpm_scene *sc, double snf, double Le);
-/* Recomputes fn, ft after model, snf or stf changed. */
-void mpm_material_set_test(mpm_material *m);
+/* Recomputes the derived constants after model, snf, stf, ubar0 or Le changed. */
+void mpm_material_derive(mpm_material *m);
 
 /* ---- the pure constitutive update (secs. 4.1-4.3) ---- */
 typedef struct {
@@ -182,7 +188,8 @@ typedef struct {
 
 /* ---- the simulation ---- */
 /* Particles whose elastic trial left the elastic domain, waiting for the full
- * decohesion update (mpm_step.c): one list per thread, flushed when full. */
+ * decohesion update (mpm_step.c): one list per thread, of at most MPM_DEFER particles
+ * (a chunk of the gather), with each one's strain increment. */
 #define MPM_DEFER 256
 typedef struct {
   size_t n;

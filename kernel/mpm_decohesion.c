@@ -89,13 +89,25 @@ void mpm_material_init(mpm_material *m, const mpm_scene *sc, double snf, double 
   m->ubar0 = sc->U0 / sc->s0;
   m->Le = Le;
   m->sep_threshold = sc->sep_threshold;
-  mpm_material_set_test(m);
+  mpm_material_derive(m);
 }
 
-void mpm_material_set_test(mpm_material *m)
+void mpm_material_derive(mpm_material *m)
 {
   const int on = m->model != MPM_DCOH_NONE;
   const double nx = m->nx, ny = m->ny, tx = m->tx, ty = m->ty;
+  m->isnf = 1.0 / m->snf;
+  m->istf = 1.0 / m->stf;
+  m->isnf2 = m->isnf * m->isnf;
+  m->istf2 = m->istf * m->istf;
+  m->kL = m->ubar0 / m->Le;
+  /* (s_nn, s_tt, s_nt) from (sxx, syy, sxy), and back */
+  m->rnn[0] = nx * nx; m->rnn[1] = ny * ny; m->rnn[2] = 2.0 * nx * ny;
+  m->rtt[0] = tx * tx; m->rtt[1] = ty * ty; m->rtt[2] = 2.0 * tx * ty;
+  m->rnt[0] = nx * tx; m->rnt[1] = ny * ty; m->rnt[2] = nx * ty + ny * tx;
+  m->rxx[0] = nx * nx; m->rxx[1] = tx * tx; m->rxx[2] = 2.0 * nx * tx;
+  m->ryy[0] = ny * ny; m->ryy[1] = ty * ty; m->ryy[2] = 2.0 * ny * ty;
+  m->rxy[0] = nx * ny; m->rxy[1] = tx * ty; m->rxy[2] = nx * ty + ny * tx;
   m->fn[0] = on ? nx * nx / m->snf : 0.0;
   m->fn[1] = on ? ny * ny / m->snf : 0.0;
   m->fn[2] = on ? 2.0 * nx * ny / m->snf : 0.0;
@@ -129,24 +141,24 @@ typedef struct {
 static nt_stress to_nt(const mpm_material *m, double sxx, double syy, double sxy)
 {
   nt_stress s;
-  s.nn = sxx * m->nx * m->nx + syy * m->ny * m->ny + 2.0 * sxy * m->nx * m->ny;
-  s.tt = sxx * m->tx * m->tx + syy * m->ty * m->ty + 2.0 * sxy * m->tx * m->ty;
-  s.nt = sxx * m->nx * m->tx + syy * m->ny * m->ty + sxy * (m->nx * m->ty + m->ny * m->tx);
+  s.nn = m->rnn[0] * sxx + m->rnn[1] * syy + m->rnn[2] * sxy;
+  s.tt = m->rtt[0] * sxx + m->rtt[1] * syy + m->rtt[2] * sxy;
+  s.nt = m->rnt[0] * sxx + m->rnt[1] * syy + m->rnt[2] * sxy;
   return s;
 }
 
 static void from_nt(const mpm_material *m, nt_stress s, mpm_dstate *out)
 {
-  out->sxx = s.nn * m->nx * m->nx + s.tt * m->tx * m->tx + 2.0 * s.nt * m->nx * m->tx;
-  out->syy = s.nn * m->ny * m->ny + s.tt * m->ty * m->ty + 2.0 * s.nt * m->ny * m->ty;
-  out->sxy = s.nn * m->nx * m->ny + s.tt * m->tx * m->ty + s.nt * (m->nx * m->ty + m->ny * m->tx);
+  out->sxx = m->rxx[0] * s.nn + m->rxx[1] * s.tt + m->rxx[2] * s.nt;
+  out->syy = m->ryy[0] * s.nn + m->ryy[1] * s.tt + m->ryy[2] * s.nt;
+  out->sxy = m->rxy[0] * s.nn + m->rxy[1] * s.tt + m->rxy[2] * s.nt;
 }
 
 /* Effective traction, eq. 23, with the Macaulay bracket on sn. */
 static double eff_traction(const mpm_material *m, double sn, double st)
 {
-  const double a = sn > 0.0 ? sn / m->snf : 0.0;
-  const double b = st / m->stf;
+  const double a = sn > 0.0 ? sn * m->isnf : 0.0;
+  const double b = st * m->istf;
   return sqrt(a * a + b * b);
 }
 
@@ -177,8 +189,8 @@ static double dphi(double dl, const phi_ctx *c)
 {
   const double sn = c->sn - dl * c->smn, st = c->st - dl * c->smt;
   const double se = eff_traction(c->m, sn, st);
-  const double gn = sn > 0.0 ? sn / (c->m->snf * c->m->snf) : 0.0;
-  const double gt = st / (c->m->stf * c->m->stf);
+  const double gn = sn > 0.0 ? sn * c->m->isnf2 : 0.0;
+  const double gt = st * c->m->istf2;
   const double lq = c->lam + dl;
   return -(gn * c->smn + gt * c->smt) / se + dpowq(lq, c->m->q);
 }
@@ -291,17 +303,18 @@ mpm_status mpm_dcoh_update(const mpm_material *m, const mpm_dstate *in, const do
     if (c <= 0.0)
       goto done;
     /* Flow direction at the trial state (eqs. 24, 26). */
-    const double gn = tr.nn > 0.0 ? tr.nn / (m->snf * m->snf) : 0.0;
-    const double gt = tr.nt / (m->stf * m->stf);
-    const double mn = m->s0 / se * gn;
-    const double mt = m->model == MPM_DCOH_MODEL2 ? 0.0 : m->s0 / se * gt;
+    const double ise = 1.0 / se, r = m->s0 * ise;
+    const double gn = tr.nn > 0.0 ? tr.nn * m->isnf2 : 0.0;
+    const double gt = tr.nt * m->istf2;
+    const double mn = r * gn;
+    const double mt = m->model == MPM_DCOH_MODEL2 ? 0.0 : r * gt;
     /* Traction (and s_tt) per unit dlambda: C : (ubar0/Le) sym(n (x) m), eqs. 39-41. */
-    const double k = m->ubar0 / m->Le;
+    const double k = m->kL;
     phi_ctx ctx = {m, tr.nn, tr.nt, m->E1 * k * mn, m->G * k * mt, in->lam};
     const double smtt = m->E2 * k * mn;
-    /* 2b of eq. 49; first-order step of eq. 46 where it exists. */
-    const double mstar_sm = (m->s0 / se) * (gn * ctx.smn + gt * ctx.smt);
-    const double two_b = -mstar_sm / m->s0 + dpowq(in->lam, m->q);
+    /* 2b of eq. 49, -(m* : s_m) / s0 + q lambda^(q-1) with m* = (s0 / se)(gn, gt); the
+     * first-order step of eq. 46 where it exists. */
+    const double two_b = -ise * (gn * ctx.smn + gt * ctx.smt) + dpowq(in->lam, m->q);
     const double guess = (two_b < 0.0 && isfinite(two_b)) ? -c / two_b : 0.0;
     const double dlmax = 1.0 - in->lam;
     double dl = 0.0;

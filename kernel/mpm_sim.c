@@ -164,7 +164,7 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
   mpm_material_init(&s->mat[MPM_MAT_HEAD], sc, sc->snf, Le);
   s->mat[MPM_MAT_HEAD].model = MPM_DCOH_NONE;            /* stress-free: it only carries mass */
   s->mat[MPM_MAT_HEAD].E1 = s->mat[MPM_MAT_HEAD].E2 = s->mat[MPM_MAT_HEAD].G = 0.0;
-  mpm_material_set_test(&s->mat[MPM_MAT_HEAD]);
+  mpm_material_derive(&s->mat[MPM_MAT_HEAD]);
   s->nhead = nhead;
 
   /* Particles at the centres of an n x n subdivision of each cell.  The velocity starts

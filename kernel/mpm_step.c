@@ -70,6 +70,17 @@ static inline mpm_v8 node_load(const mpm_node *n)
   return v;
 }
 
+/* The gathers need only (px, py, fx, fy): four doubles inside the record's cache line. */
+typedef double mpm_v4 __attribute__((vector_size(32)));
+enum { GPX = 0, GPY = 1, GFX = 2, GFY = 3 }; /* lanes of the gathered four */
+
+static inline mpm_v4 node_load4(const mpm_node *n)
+{
+  mpm_v4 v;
+  memcpy(&v, &n->px, sizeof v);
+  return v;
+}
+
 static inline void node_add(mpm_node *n, mpm_v8 d)
 {
   mpm_v8 v;
@@ -319,8 +330,9 @@ static inline __attribute__((always_inline)) void g2p_strip_impl(mpm_sim *s, int
   const mpm_particles *p = s->p;
   const double ihx = g->ihx, ihy = g->ihy, dt = s->sc.dt, ox = g->ox;
   const size_t nny = (size_t)g->nny;
-  const int ux = musl ? LFX : LPX, uy = ux + 1; /* the lanes of the strain velocity */
-  const int lo = q * MPM_STRIP - 1, hi = (q + 1) * MPM_STRIP; /* safe columns (mpm_sort.c) */
+  const int ux = musl ? GFX : GPX, uy = ux + 1; /* the lanes of the strain velocity */
+  /* the safe columns [q S - 1, (q + 1) S + 1) of strip q (mpm_sort.c) */
+  const double clo = q * MPM_STRIP - 1, chi = (q + 1) * MPM_STRIP + 1;
   const size_t end = s->strip_start[q + 1];
   double check = 0.0;
   int resort = 0;
@@ -340,20 +352,27 @@ static inline __attribute__((always_inline)) void g2p_strip_impl(mpm_sim *s, int
     for (size_t k = c0; k < c1; k++) {
       mpm_shape sh;
       mpm_shape_inside(g, x[k], y[k], &sh); /* inside: checked by the scatter */
-      const double wx0 = sh.wx0, wx1 = sh.wx1, wy0 = sh.wy0, wy1 = sh.wy1;
+      const double rx = sh.wx1, ry = sh.wy1;
       const size_t n00 = sh.n00, n01 = n00 + 1, n10 = n00 + nny, n11 = n10 + 1;
-      const mpm_v8 a00 = node_load(nd + n00), a10 = node_load(nd + n10);
-      const mpm_v8 a01 = node_load(nd + n01), a11 = node_load(nd + n11);
-      const mpm_v8 S = (wx0 * wy0) * a00 + (wx1 * wy0) * a10 + (wx0 * wy1) * a01 + (wx1 * wy1) * a11;
-      /* eq. 7: gradient of the bilinear field */
-      const mpm_v8 GX = ihx * (wy0 * (a10 - a00) + wy1 * (a11 - a01));
-      const mpm_v8 GY = ihy * (wx0 * (a01 - a00) + wx1 * (a11 - a10));
+      const mpm_v4 a00 = node_load4(nd + n00), a10 = node_load4(nd + n10);
+      const mpm_v4 a01 = node_load4(nd + n01), a11 = node_load4(nd + n11);
+      /* The bilinear field and its gradient (eq. 7) from the same differences:
+       * b0, b1 interpolate along x on the cell's lower and upper edges. */
+      const mpm_v4 d0 = a10 - a00, d1 = a11 - a01;
+      const mpm_v4 b0 = a00 + rx * d0, b1 = a01 + rx * d1, db = b1 - b0;
+      const mpm_v4 S = b0 + ry * db;
+      const mpm_v4 GX = ihx * (d0 + ry * (d1 - d0));
+      const mpm_v4 GY = ihy * db;
       /* eq. 5 (and eq. 6 for USL) */
-      x[k] += dt * S[LPX];
-      y[k] += dt * S[LPY];
+      const double xn = x[k] + dt * S[GPX];
+      x[k] = xn;
+      y[k] += dt * S[GPY];
+      double vxn = vx[k], vyn = vy[k];
       if (!musl) {
-        vx[k] += S[LFX];
-        vy[k] += S[LFY];
+        vxn += S[GFX];
+        vyn += S[GFY];
+        vx[k] = vxn;
+        vy[k] = vyn;
       }
       const double de0 = dt * GX[ux], de1 = dt * GY[uy], de2 = 0.5 * dt * (GY[ux] + GX[uy]);
       /* sec. 4: the elastic trial, kept where F <= 0 (eq. 23), tested as
@@ -379,9 +398,9 @@ static inline __attribute__((always_inline)) void g2p_strip_impl(mpm_sim *s, int
         sxy[k] = txy;
         check += txx + tyy + txy;
       }
-      const double col = (x[k] - ox) * ihx;
-      resort |= col < lo || col >= hi + 1;
-      check += vx[k] + vy[k];
+      const double col = (xn - ox) * ihx;
+      resort |= (col < clo) | (col >= chi);
+      check += vxn + vyn;
     }
     d->n = nd_;
     constitutive_flush(s, s->p, d, dw, acc);
@@ -410,10 +429,10 @@ static void g2p_velocity_strip(mpm_sim *s, int q)
     mpm_shape sh;
     mpm_shape_inside(g, p->x[k], p->y[k], &sh);
     const size_t n00 = sh.n00, n01 = n00 + 1, n10 = n00 + nny, n11 = n10 + 1;
-    const mpm_v8 S = (sh.wx0 * sh.wy0) * node_load(nd + n00) + (sh.wx1 * sh.wy0) * node_load(nd + n10) +
-                     (sh.wx0 * sh.wy1) * node_load(nd + n01) + (sh.wx1 * sh.wy1) * node_load(nd + n11);
-    p->vx[k] += S[LFX];
-    p->vy[k] += S[LFY];
+    const mpm_v4 S = (sh.wx0 * sh.wy0) * node_load4(nd + n00) + (sh.wx1 * sh.wy0) * node_load4(nd + n10) +
+                     (sh.wx0 * sh.wy1) * node_load4(nd + n01) + (sh.wx1 * sh.wy1) * node_load4(nd + n11);
+    p->vx[k] += S[GFX];
+    p->vy[k] += S[GFY];
   }
 }
 
