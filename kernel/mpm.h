@@ -164,6 +164,7 @@ typedef struct {
 typedef struct {
   int ncx, ncy;            /* cells in x and y                                         */
   int nnx, nny;            /* nodes in x and y (ncx+1, ncy+1)                          */
+  double fncx, fncy;       /* ncx, ncy as doubles (the bounds test of every particle)  */
   double ox, oy, h;        /* origin, and the spacing in y (and in x at t = 0)          */
   double hx;               /* spacing in x now (the grid may follow the bar's stretch) */
   double ihx, ihy;         /* 1 / hx, 1 / h                                            */
