@@ -202,6 +202,7 @@ typedef struct {
   mpm_scene sc;            /* copy of the scene                                        */
   mpm_material mat[3];     /* MPM_MAT_BAR, MPM_MAT_IMP (the imperfection), MPM_MAT_HEAD */
   size_t nhead;            /* particles of the rigid head (p->n - nhead are the bar's)  */
+  uint32_t *head;          /* their indices, ascending (rebuilt by each sort)          */
   double head_dy;          /* the head's vertical displacement (it moves as one body)   */
   double grid_ox0;         /* the grid's x-origin at t = 0                              */
   mpm_particles *p;
@@ -239,7 +240,7 @@ enum { MPM_T_SORT = 0, MPM_T_P2G, MPM_T_GRID, MPM_T_G2P, MPM_T_CONST };
 enum { MPM_MAT_BAR = 0, MPM_MAT_IMP = 1, MPM_MAT_HEAD = 2 };
 #define MPM_HEAD_CELLS 2
 #define MPM_STRIP 4        /* columns of cells per strip (>= 3: see mpm_sort.c)           */
-#define MPM_SORT_EVERY 16  /* steps between sorts                                        */
+#define MPM_SORT_EVERY 64  /* steps between sorts                                        */
 
 /* Sorts the particles by cell (stable counting sort) and rebuilds the strips. */
 void mpm_sim_sort(mpm_sim *s);

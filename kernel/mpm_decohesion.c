@@ -312,10 +312,13 @@ mpm_status mpm_dcoh_update(const mpm_material *m, const mpm_dstate *in, const do
     const double k = m->kL;
     phi_ctx ctx = {m, tr.nn, tr.nt, m->E1 * k * mn, m->G * k * mt, in->lam};
     const double smtt = m->E2 * k * mn;
-    /* 2b of eq. 49, -(m* : s_m) / s0 + q lambda^(q-1) with m* = (s0 / se)(gn, gt); the
-     * first-order step of eq. 46 where it exists. */
-    const double two_b = -ise * (gn * ctx.smn + gt * ctx.smt) + dpowq(in->lam, m->q);
-    const double guess = (two_b < 0.0 && isfinite(two_b)) ? -c / two_b : 0.0;
+    /* 2b of eq. 49, -(m* : s_m) / s0 + q lambda^(q-1) with m* = (s0 / se)(gn, gt),
+     * is dpow - Q / se^2 with Q = s0 (ubar0 / Le)(E1 gn^2 + G gt^2); the first-order
+     * step of eq. 46, -c / 2b, where 2b < 0, is then c se^2 / (Q - dpow se^2): one
+     * division, not two in a row. */
+    const double Q = m->s0 * k * (m->E1 * gn * gn + (m->model == MPM_DCOH_MODEL2 ? 0.0 : m->G * gt * gt));
+    const double se2 = se * se, den = Q - dpowq(in->lam, m->q) * se2;
+    const double guess = (den > 0.0 && isfinite(den)) ? c * se2 / den : 0.0;
     const double dlmax = 1.0 - in->lam;
     double dl = 0.0;
     const int ok = dlmax > 0.0 ? solve_dl(&ctx, dlmax, guess, w, info, &dl) : -1;

@@ -90,6 +90,7 @@ void mpm_sim_free(mpm_sim *s)
       mpm_dwork_free(s->dws[t]);
   free(s->dws);
   free(s->defer);
+  free(s->head);
   free(s->strip_start);
   free(s->key);
   free(s->perm);
@@ -132,9 +133,10 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
   s->p = mpm_particles_alloc(np);
   s->dws = calloc((size_t)s->nthreads, sizeof *s->dws);
   s->defer = calloc((size_t)s->nthreads, sizeof *s->defer);
+  s->head = malloc((nhead ? nhead : 1) * sizeof *s->head);
   s->grip = malloc(sizeof(int) * (size_t)ngrip);
   s->fixx = malloc(sizeof(int) * (size_t)(cy + 1));
-  int ok = s->g && s->p && s->dws && s->defer && s->grip && s->fixx;
+  int ok = s->g && s->p && s->dws && s->defer && s->head && s->grip && s->fixx;
   if (ok) {
     const size_t ncell = (size_t)s->g->ncx * (size_t)s->g->ncy;
     s->nstrip = (s->g->ncx + MPM_STRIP - 1) / MPM_STRIP;

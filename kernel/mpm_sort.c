@@ -12,6 +12,7 @@
  * (its even strip, then its odd strip, each in particle order) whatever the threads.
  * A particle that drifts further is caught in the grid-to-particle pass (resort flag).
  */
+#include <assert.h>
 #include <string.h>
 
 #include "mpm.h"
@@ -67,5 +68,10 @@ void mpm_sim_sort(mpm_sim *s)
     permute_d(dbl[f], &s->scratch, s->perm, n);
   permute_u8(&p->mat, &s->scratch8, s->perm, n);
   permute_u8(&p->sep, &s->scratch8, s->perm, n);
+  size_t nh = 0;
+  for (size_t k = 0; k < n; k++)
+    if (p->mat[k] == MPM_MAT_HEAD)
+      s->head[nh++] = (uint32_t)k;
+  assert(nh == s->nhead);
   s->resort = 0;
 }

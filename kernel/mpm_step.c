@@ -327,6 +327,7 @@ static inline __attribute__((always_inline)) void g2p_strip_impl(mpm_sim *s, int
   const double ihx = g->ihx, ihy = g->ihy, dt = s->sc.dt, ox = g->ox;
   const size_t nny = (size_t)g->nny;
   const int ux = musl ? GFX : GPX, uy = ux + 1; /* the lanes of the strain velocity */
+  const double dtihx = dt * ihx, dtihy = dt * ihy;
   /* the safe columns [q S - 1, (q + 1) S + 1) of strip q (mpm_sort.c) */
   const double clo = q * MPM_STRIP - 1, chi = (q + 1) * MPM_STRIP + 1;
   const size_t end = s->strip_start[q + 1];
@@ -356,8 +357,8 @@ static inline __attribute__((always_inline)) void g2p_strip_impl(mpm_sim *s, int
       const mpm_v4 d0 = a10 - a00, d1 = a11 - a01;
       const mpm_v4 b0 = a00 + rx * d0, b1 = a01 + rx * d1, db = b1 - b0;
       const mpm_v4 S = b0 + ry * db;
-      const mpm_v4 GX = ihx * (d0 + ry * (d1 - d0));
-      const mpm_v4 GY = ihy * db;
+      const mpm_v4 GX = dtihx * (d0 + ry * (d1 - d0)); /* dt d/dx */
+      const mpm_v4 GY = dtihy * db;                   /* dt d/dy */
       /* eq. 5 (and eq. 6 for USL) */
       const double xn = x[k] + dt * S[GPX];
       x[k] = xn;
@@ -369,7 +370,7 @@ static inline __attribute__((always_inline)) void g2p_strip_impl(mpm_sim *s, int
         vx[k] = vxn;
         vy[k] = vyn;
       }
-      const double de0 = dt * GX[ux], de1 = dt * GY[uy], de2 = 0.5 * dt * (GY[ux] + GX[uy]);
+      const double de0 = GX[ux], de1 = GY[uy], de2 = 0.5 * (GY[ux] + GX[uy]);
       /* sec. 4: the elastic trial, kept where F <= 0 (eq. 23), tested as
        * <s_nn / snf>^2 + (s_nt / stf)^2 < (1 - lambda^q)^2 with the strength cached
        * (str2 < 0 once separated: always the full update).  It rounds differently from
@@ -501,22 +502,22 @@ static void head_rigid(mpm_sim *s)
     return; /* the head is the grip: without one (tests of the bare step) it is left alone */
   mpm_particles *p = s->p;
   double m = 0.0, my = 0.0;
-  for (size_t k = 0; k < p->n; k++)
-    if (p->mat[k] == MPM_MAT_HEAD) {
-      m += p->m[k];
-      my += p->m[k] * p->vy[k];
-    }
+  for (size_t i = 0; i < s->nhead; i++) {
+    const size_t k = s->head[i];
+    m += p->m[k];
+    my += p->m[k] * p->vy[k];
+  }
   if (!(m > 0.0))
     return;
   const double vy = my / m, dx = -s->sc.speed * (s->step + 1) * s->sc.dt;
   s->head_dy += vy * s->sc.dt;
-  for (size_t k = 0; k < p->n; k++)
-    if (p->mat[k] == MPM_MAT_HEAD) {
-      p->vx[k] = -s->sc.speed;
-      p->vy[k] = vy;
-      p->x[k] = p->x0[k] + dx;
-      p->y[k] = p->y0[k] + s->head_dy;
-    }
+  for (size_t i = 0; i < s->nhead; i++) {
+    const size_t k = s->head[i];
+    p->vx[k] = -s->sc.speed;
+    p->vy[k] = vy;
+    p->x[k] = p->x0[k] + dx;
+    p->y[k] = p->y0[k] + s->head_dy;
+  }
 }
 
 /* Lays the background grid for this step (MPM_GRID_STRETCH: along the bar's mean
