@@ -158,7 +158,8 @@ typedef struct {
   _Alignas(64) double m;   /* nodal mass                                               */
   double px, py;           /* momentum, then Lagrangian velocity v^L after the update  */
   double fx, fy;           /* internal force, then v^L - v after the update (MUSL: then v') */
-  double pad[3];           /* to 64 bytes; always 0                                    */
+  double qx, qy;           /* MUSL: momentum of the updated particle velocities        */
+  double pad;              /* to 64 bytes; always 0                                    */
 } mpm_node;
 
 typedef struct {
@@ -240,7 +241,8 @@ enum { MPM_T_SORT = 0, MPM_T_P2G, MPM_T_GRID, MPM_T_G2P, MPM_T_CONST };
 enum { MPM_MAT_BAR = 0, MPM_MAT_IMP = 1, MPM_MAT_HEAD = 2 };
 #define MPM_HEAD_CELLS 2
 #define MPM_STRIP 4        /* columns of cells per strip (>= 3: see mpm_sort.c)           */
-#define MPM_SORT_EVERY 64  /* steps between sorts                                        */
+#define MPM_SORT_EVERY 64  /* steps between sorts (quasi-static: particles move ~1e-5 h a
+                              step; 16 cost 0.45 ns per particle-step more, measured)  */
 
 /* Sorts the particles by cell (stable counting sort) and rebuilds the strips. */
 void mpm_sim_sort(mpm_sim *s);

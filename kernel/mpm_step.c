@@ -22,6 +22,15 @@
  * Threads: the scatters run strip by strip, even strips then odd (mpm_sort.c); the
  * gathers are independent per particle.  Results are bit-for-bit the same for any
  * number of threads.
+ *
+ * Speed (`delam bench`; README "Performance"), without obscuring the equations:
+ *  - a node is one 64-byte record (mpm_node), so a particle's share of all five nodal
+ *    sums is one vector add per node, and a gather reads (px, py, fx, fy) in one load;
+ *  - particles are sorted by cell, so the scatter sums a cell's shares in registers
+ *    and touches memory once per cell, not once per particle;
+ *  - the gather does the elastic trial inline; the few particles that may soften go on
+ *    a per-thread list and get the full update (mpm_decohesion.c) after each chunk;
+ *  - no allocation, no atomics and no per-particle timing in the loops.
  */
 #include <math.h>
 #include <stdio.h>
@@ -146,30 +155,62 @@ static int p2g_range(const mpm_grid *gg, const mpm_particles *p, size_t a, size_
   return out;
 }
 
-/* MUSL: momentum of the updated particle velocities into the force lanes for [a, b). */
-static void p2g_momentum_range(const mpm_grid *restrict g, const mpm_particles *restrict p, size_t a, size_t b)
+/* MUSL first half, for the particles [a, b): eq. 6 from v^L - v (lanes fx, fy), and
+ * the new momentum m_p v_p N_ip summed into lanes qx, qy.  The pass reads lanes that
+ * it never writes, so one pass does both; as it scatters, it runs by colour. */
+static void musl_velocity_range(const mpm_grid *gg, mpm_particles *p, size_t a, size_t b)
 {
+  const mpm_grid geo = *gg, *g = &geo;
   const size_t nny = (size_t)g->nny;
   mpm_node *restrict nd = g->nd;
+  const double *restrict x = p->x, *restrict y = p->y, *restrict pm = p->m;
+  double *restrict vx = p->vx, *restrict vy = p->vy;
+  const mpm_v8 zero = {0.0};
+  mpm_v8 c00 = zero, c10 = zero, c01 = zero, c11 = zero;
+  size_t cur = SIZE_MAX;
   for (size_t k = a; k < b; k++) {
     mpm_shape sh;
-    if (!mpm_shape_at(g, p->x[k], p->y[k], &sh))
-      continue;
-    const mpm_v8 Q = {0.0, 0.0, 0.0, p->m[k] * p->vx[k], p->m[k] * p->vy[k], 0.0, 0.0, 0.0};
+    mpm_shape_inside(g, x[k], y[k], &sh); /* inside: checked by the first scatter */
+    const double rx = sh.wx1, ry = sh.wy1;
     const size_t n00 = sh.n00, n01 = n00 + 1, n10 = n00 + nny, n11 = n10 + 1;
-    node_add(nd + n00, (sh.wx0 * sh.wy0) * Q);
-    node_add(nd + n10, (sh.wx1 * sh.wy0) * Q);
-    node_add(nd + n01, (sh.wx0 * sh.wy1) * Q);
-    node_add(nd + n11, (sh.wx1 * sh.wy1) * Q);
+    const mpm_v4 a00 = node_load4(nd + n00), a10 = node_load4(nd + n10);
+    const mpm_v4 a01 = node_load4(nd + n01), a11 = node_load4(nd + n11);
+    const mpm_v4 b0 = a00 + rx * (a10 - a00), b1 = a01 + rx * (a11 - a01);
+    const mpm_v4 S = b0 + ry * (b1 - b0);
+    const double vxn = vx[k] + S[GFX], vyn = vy[k] + S[GFY];
+    vx[k] = vxn;
+    vy[k] = vyn;
+    if (sh.n00 != cur) {
+      if (cur != SIZE_MAX) {
+        node_add(nd + cur, c00);
+        node_add(nd + cur + nny, c10);
+        node_add(nd + cur + 1, c01);
+        node_add(nd + cur + nny + 1, c11);
+      }
+      c00 = c10 = c01 = c11 = zero;
+      cur = sh.n00;
+    }
+    const mpm_v8 Q = {0.0, 0.0, 0.0, 0.0, 0.0, pm[k] * vxn, pm[k] * vyn, 0.0};
+    const mpm_v8 Q0 = sh.wy0 * Q, Q1 = sh.wy1 * Q;
+    c00 += sh.wx0 * Q0;
+    c10 += sh.wx1 * Q0;
+    c01 += sh.wx0 * Q1;
+    c11 += sh.wx1 * Q1;
+  }
+  if (cur != SIZE_MAX) {
+    node_add(nd + cur, c00);
+    node_add(nd + cur + nny, c10);
+    node_add(nd + cur + 1, c01);
+    node_add(nd + cur + nny + 1, c11);
   }
 }
 
 /* Scatter over the strips, colour by colour (deterministic, no atomics).  which = 0:
- * eqs. 2-3; which = 1: MUSL momentum into the force lanes (fx, fy). */
+ * eqs. 2-3; which = 1: MUSL velocities and their momentum into lanes (qx, qy). */
 static int scatter(mpm_sim *s, int which)
 {
   mpm_grid *g = s->g;
-  const mpm_particles *p = s->p;
+  mpm_particles *p = s->p;
   int out = 0;
   for (int colour = 0; colour < 2; colour++) {
 #ifdef _OPENMP
@@ -179,7 +220,7 @@ static int scatter(mpm_sim *s, int which)
       if (which == 0)
         out |= p2g_range(g, p, s->strip_start[q], s->strip_start[q + 1]);
       else
-        p2g_momentum_range(g, p, s->strip_start[q], s->strip_start[q + 1]);
+        musl_velocity_range(g, p, s->strip_start[q], s->strip_start[q + 1]);
     }
   }
   return out;
@@ -232,7 +273,7 @@ static void grid_update(mpm_sim *s)
   s->W_ext += (Rg / dt) * vg * dt; /* power of the grip's force; the fixed nodes do no work */
 }
 
-/* MUSL: v' = q / m with the same boundary conditions, in place in (fx, fy). */
+/* MUSL: v' = q / m with the same boundary conditions, into (fx, fy). */
 static void grid_musl_velocity(mpm_sim *s)
 {
   mpm_grid *g = s->g;
@@ -244,8 +285,8 @@ static void grid_musl_velocity(mpm_sim *s)
   for (long k = 0; k < nn; k++) {
     mpm_node *n = &g->nd[k];
     const double im = n->m > mmin ? 1.0 / n->m : 0.0;
-    n->fx *= im;
-    n->fy *= im;
+    n->fx = n->qx * im;
+    n->fy = n->qy * im;
   }
   for (int q = 0; q < s->ngrip; q++)
     g->nd[s->grip[q]].fx = -s->sc.speed;
@@ -414,37 +455,10 @@ static void g2p_strip(mpm_sim *s, int q, int musl, mpm_defer *d, mpm_dwork *dw, 
     g2p_strip_impl(s, q, 0, d, dw, acc);
 }
 
-/* MUSL first half: eq. 6 only, for the particles of strip q. */
-static void g2p_velocity_strip(mpm_sim *s, int q)
-{
-  const mpm_grid *g = s->g;
-  mpm_particles *restrict p = s->p;
-  const size_t nny = (size_t)g->nny;
-  const mpm_node *restrict nd = g->nd;
-  for (size_t k = s->strip_start[q]; k < s->strip_start[q + 1]; k++) {
-    mpm_shape sh;
-    mpm_shape_inside(g, p->x[k], p->y[k], &sh);
-    const size_t n00 = sh.n00, n01 = n00 + 1, n10 = n00 + nny, n11 = n10 + 1;
-    const mpm_v4 S = (sh.wx0 * sh.wy0) * node_load4(nd + n00) + (sh.wx1 * sh.wy0) * node_load4(nd + n10) +
-                     (sh.wx0 * sh.wy1) * node_load4(nd + n01) + (sh.wx1 * sh.wy1) * node_load4(nd + n11);
-    p->vx[k] += S[GFX];
-    p->vy[k] += S[GFY];
-  }
-}
-
 static mpm_status g2p(mpm_sim *s, char *err, size_t errlen)
 {
   const int musl = s->sc.scheme == MPM_SCHEME_MUSL;
   if (musl) {
-#ifdef _OPENMP
-#pragma omp parallel for schedule(dynamic, 1) num_threads(s->nthreads)
-#endif
-    for (int q = 0; q < s->nstrip; q++)
-      g2p_velocity_strip(s, q);
-    mpm_grid *g = s->g;
-    const size_t nn = (size_t)g->nnx * (size_t)g->nny;
-    for (size_t k = 0; k < nn; k++)
-      g->nd[k].fx = g->nd[k].fy = 0.0;
     scatter(s, 1);
     grid_musl_velocity(s);
   }
