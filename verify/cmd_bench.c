@@ -70,18 +70,24 @@ static size_t bytes_per_particle(const mpm_sim *s)
   const size_t np = s->p->n, nn = (size_t)s->g->nnx * (size_t)s->g->nny;
   const size_t ncell = (size_t)s->g->ncx * (size_t)s->g->ncy;
   const size_t particles = np * (16 * sizeof(double) + 2);         /* mpm_particles  */
-  const size_t sorting = np * (sizeof(double) + 1 + 2 * sizeof(uint32_t)) + (ncell + 1) * sizeof(size_t);
+  const size_t sorting = np * (sizeof(double) + 1 + 2 * sizeof(uint32_t)) + (ncell + 1) * sizeof(size_t) +
+                         ((size_t)s->nstrip + 1) * sizeof(size_t);
   const size_t grid = nn * sizeof(mpm_node);
-  return (particles + sorting + grid + np / 2) / np;
+  const size_t other = s->nhead * sizeof(uint32_t) + (size_t)s->nthreads * sizeof(mpm_defer) +
+                       (size_t)(s->ngrip + s->nfixx) * sizeof(int);
+  return (particles + sorting + grid + other + np / 2) / np;
 }
 
 static void usage(FILE *f)
 {
   fprintf(f,
-    "usage: delam bench [--threads N] [--json] [--steps-scale X]\n"
+    "usage: delam bench [--threads N] [--repeat N] [--json] [--steps-scale X]\n"
     "Times fixed cases (Fig. 6 at h = 2 and h = 1, Fig. 7 at h = 2, 4 particles per cell,\n"
     "from 99 %% of the peak stress so decohesion is active) with 1 and 2 threads, or with N.\n"
+    "Each case runs --repeat times from the same start and the fastest run is reported\n"
+    "(the others differ only by what else the machine did meanwhile).\n"
     "  --threads N      only N threads (default: 1 and 2)\n"
+    "  --repeat N       runs per case, the fastest reported (default 3)\n"
     "  --json           one JSON object per line instead of the table\n"
     "  --steps-scale X  multiply the number of steps (default 1)\n"
     "Reproduce outside the bench: /usr/bin/time -v build/delam run data/scenes/fig6.ini \\\n"
@@ -90,7 +96,7 @@ static void usage(FILE *f)
 
 int ver_cmd_bench(int argc, char **argv)
 {
-  int threads = 0, json = 0;
+  int threads = 0, json = 0, repeat = 3;
   double scale = 1.0;
   for (int i = 1; i < argc; i++) {
     if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
@@ -98,15 +104,20 @@ int ver_cmd_bench(int argc, char **argv)
       return 0;
     } else if (!strcmp(argv[i], "--json")) {
       json = 1;
-    } else if (!strcmp(argv[i], "--threads") || !strcmp(argv[i], "--steps-scale")) {
+    } else if (!strcmp(argv[i], "--threads") || !strcmp(argv[i], "--repeat") ||
+               !strcmp(argv[i], "--steps-scale")) {
       char *end;
       const double v = i + 1 < argc ? strtod(argv[i + 1], &end) : NAN;
-      if (!(i + 1 < argc) || *end || !(v > 0) || v > 1024) {
-        fprintf(stderr, "delam bench: %s needs a number > 0\n", argv[i]);
+      const int whole = argv[i][2] != 's';
+      if (!(i + 1 < argc) || *end || !(v > 0) || v > (whole ? 256 : 1024) || (whole && v != floor(v))) {
+        fprintf(stderr, "delam bench: %s needs %s\n", argv[i],
+                whole ? "a whole number in [1, 256]" : "a number in (0, 1024]");
         return 2;
       }
       if (argv[i][2] == 't')
         threads = (int)v;
+      else if (argv[i][2] == 'r')
+        repeat = (int)v;
       else
         scale = v;
       i++;
@@ -152,21 +163,35 @@ int ver_cmd_bench(int argc, char **argv)
         fprintf(stderr, "delam bench: %s\n", err);
         return 2;
       }
-      mpm_sim *s;
-      if (mpm_sim_alloc(&vs.sc, tlist[ti], &s, err, sizeof err) != MPM_OK) {
-        fprintf(stderr, "delam bench: %s\n", err);
-        return 1;
-      }
-      prestress(s, 0.99 * bar.r0);
+      mpm_sim *s = NULL;
       const long steps = (long)(cases[c].steps * scale);
-      const double w0 = now(CLOCK_MONOTONIC), c0 = now(CLOCK_PROCESS_CPUTIME_ID);
-      for (long k = 0; k < steps; k++)
-        if (mpm_sim_step(s, err, sizeof err) != MPM_OK) {
+      double wall = INFINITY, cpu = 0.0;
+      for (int r = 0; r < repeat; r++) {
+        mpm_sim *t;
+        if (mpm_sim_alloc(&vs.sc, tlist[ti], &t, err, sizeof err) != MPM_OK) {
           fprintf(stderr, "delam bench: %s\n", err);
           mpm_sim_free(s);
           return 1;
         }
-      const double wall = now(CLOCK_MONOTONIC) - w0, cpu = now(CLOCK_PROCESS_CPUTIME_ID) - c0;
+        prestress(t, 0.99 * bar.r0);
+        const double w0 = now(CLOCK_MONOTONIC), c0 = now(CLOCK_PROCESS_CPUTIME_ID);
+        for (long k = 0; k < steps; k++)
+          if (mpm_sim_step(t, err, sizeof err) != MPM_OK) {
+            fprintf(stderr, "delam bench: %s\n", err);
+            mpm_sim_free(t);
+            mpm_sim_free(s);
+            return 1;
+          }
+        const double w = now(CLOCK_MONOTONIC) - w0, cu = now(CLOCK_PROCESS_CPUTIME_ID) - c0;
+        if (w < wall) { /* keep the fastest run, with its own time split */
+          wall = w;
+          cpu = cu;
+          mpm_sim_free(s);
+          s = t;
+        } else {
+          mpm_sim_free(t);
+        }
+      }
       const double ups = (double)s->p->n * (double)steps / wall;
       double split = 0.0;
       for (int q = 0; q < 5; q++)
@@ -178,6 +203,7 @@ int ver_cmd_bench(int argc, char **argv)
         cJSON *o = cJSON_CreateObject();
         cJSON_AddStringToObject(o, "case", id);
         cJSON_AddNumberToObject(o, "threads", tlist[ti]);
+        cJSON_AddNumberToObject(o, "repeat", repeat);
         cJSON_AddNumberToObject(o, "particles", (double)s->p->n);
         cJSON_AddNumberToObject(o, "steps", (double)steps);
         cJSON_AddNumberToObject(o, "wall_s", wall);
