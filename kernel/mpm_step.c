@@ -98,14 +98,41 @@ static inline void node_add(mpm_node *n, mpm_v8 d)
   memcpy(n, &v, sizeof v);
 }
 
+/* A cell's four node shares, summed in registers while the sorted particles stay in
+ * the cell (cur: its n00, SIZE_MAX before the first) and added to the nodes when they
+ * leave it (cell_sums_move) or at the end of the range (cell_sums_flush). */
+typedef struct {
+  size_t cur;
+  mpm_v8 c00, c10, c01, c11;
+} cell_sums;
+
+static inline void cell_sums_flush(const cell_sums *c, mpm_node *nd, size_t nny)
+{
+  if (c->cur == SIZE_MAX)
+    return;
+  node_add(nd + c->cur, c->c00);
+  node_add(nd + c->cur + nny, c->c10);
+  node_add(nd + c->cur + 1, c->c01);
+  node_add(nd + c->cur + nny + 1, c->c11);
+}
+
+static inline void cell_sums_move(cell_sums *c, mpm_node *nd, size_t nny, size_t n00)
+{
+  if (n00 == c->cur)
+    return;
+  cell_sums_flush(c, nd, nny);
+  const mpm_v8 zero = {0.0};
+  c->c00 = c->c10 = c->c01 = c->c11 = zero;
+  c->cur = n00;
+}
+
 /* eqs. 2, 3 for the particles [a, b); 1 if one of them is outside the grid.  A
  * particle adds to each of its four nodes N_i (m, m vx, m vy) and the force
  * f_i = -V sigma . G_i, G_i = (+-wy / hx, +-wx / hy).  With FX = (V / hx)(sxx, sxy) and
  * FY = (V / hy)(sxy, syy) in the force lanes, the four shares factor as
  *   c00 = wx0 T0 + R0,  c10 = wx1 T0 - R0,  T0 = wy0 P + FY,  R0 = wy0 FX,
  *   c01 = wx0 T1 + R1,  c11 = wx1 T1 - R1,  T1 = wy1 P - FY,  R1 = wy1 FX.
- * The particles are sorted by cell, so the shares are summed in registers while the
- * cell stays the same and added to the nodes when it changes. */
+ * The particles are sorted by cell, so the shares are summed per cell (cell_sums). */
 static int p2g_range(const mpm_grid *gg, const mpm_particles *p, size_t a, size_t b)
 {
   const mpm_grid geo = *gg, *g = &geo; /* a local copy: no store below can alias it */
@@ -115,9 +142,7 @@ static int p2g_range(const mpm_grid *gg, const mpm_particles *p, size_t a, size_
   const double *restrict x = p->x, *restrict y = p->y, *restrict vx = p->vx, *restrict vy = p->vy;
   const double *restrict pm = p->m, *restrict V = p->V;
   const double *restrict sxx = p->sxx, *restrict syy = p->syy, *restrict sxy = p->sxy;
-  const mpm_v8 zero = {0.0};
-  mpm_v8 c00 = zero, c10 = zero, c01 = zero, c11 = zero;
-  size_t cur = SIZE_MAX; /* the cell being summed (its n00); none yet */
+  cell_sums cs = {.cur = SIZE_MAX};
   int out = 0;
   for (size_t k = a; k < b; k++) {
     mpm_shape sh;
@@ -125,33 +150,19 @@ static int p2g_range(const mpm_grid *gg, const mpm_particles *p, size_t a, size_
       out = 1;
       continue;
     }
-    if (sh.n00 != cur) {
-      if (cur != SIZE_MAX) {
-        node_add(nd + cur, c00);
-        node_add(nd + cur + nny, c10);
-        node_add(nd + cur + 1, c01);
-        node_add(nd + cur + nny + 1, c11);
-      }
-      c00 = c10 = c01 = c11 = zero;
-      cur = sh.n00;
-    }
+    cell_sums_move(&cs, nd, nny, sh.n00);
     const double mm = pm[k], Vx = V[k] * ihx, Vy = V[k] * ihy;
     const mpm_v8 P = {mm, mm * vx[k], mm * vy[k], 0.0, 0.0, 0.0, 0.0, 0.0};
     const mpm_v8 FX = {0.0, 0.0, 0.0, Vx * sxx[k], Vx * sxy[k], 0.0, 0.0, 0.0};
     const mpm_v8 FY = {0.0, 0.0, 0.0, Vy * sxy[k], Vy * syy[k], 0.0, 0.0, 0.0};
     const mpm_v8 T0 = sh.wy0 * P + FY, R0 = sh.wy0 * FX;
     const mpm_v8 T1 = sh.wy1 * P - FY, R1 = sh.wy1 * FX;
-    c00 += sh.wx0 * T0 + R0;
-    c10 += sh.wx1 * T0 - R0;
-    c01 += sh.wx0 * T1 + R1;
-    c11 += sh.wx1 * T1 - R1;
+    cs.c00 += sh.wx0 * T0 + R0;
+    cs.c10 += sh.wx1 * T0 - R0;
+    cs.c01 += sh.wx0 * T1 + R1;
+    cs.c11 += sh.wx1 * T1 - R1;
   }
-  if (cur != SIZE_MAX) {
-    node_add(nd + cur, c00);
-    node_add(nd + cur + nny, c10);
-    node_add(nd + cur + 1, c01);
-    node_add(nd + cur + nny + 1, c11);
-  }
+  cell_sums_flush(&cs, nd, nny);
   return out;
 }
 
@@ -165,9 +176,7 @@ static void musl_velocity_range(const mpm_grid *gg, mpm_particles *p, size_t a, 
   mpm_node *restrict nd = g->nd;
   const double *restrict x = p->x, *restrict y = p->y, *restrict pm = p->m;
   double *restrict vx = p->vx, *restrict vy = p->vy;
-  const mpm_v8 zero = {0.0};
-  mpm_v8 c00 = zero, c10 = zero, c01 = zero, c11 = zero;
-  size_t cur = SIZE_MAX;
+  cell_sums cs = {.cur = SIZE_MAX};
   for (size_t k = a; k < b; k++) {
     mpm_shape sh;
     mpm_shape_inside(g, x[k], y[k], &sh); /* inside: checked by the first scatter */
@@ -180,29 +189,15 @@ static void musl_velocity_range(const mpm_grid *gg, mpm_particles *p, size_t a, 
     const double vxn = vx[k] + S[GFX], vyn = vy[k] + S[GFY];
     vx[k] = vxn;
     vy[k] = vyn;
-    if (sh.n00 != cur) {
-      if (cur != SIZE_MAX) {
-        node_add(nd + cur, c00);
-        node_add(nd + cur + nny, c10);
-        node_add(nd + cur + 1, c01);
-        node_add(nd + cur + nny + 1, c11);
-      }
-      c00 = c10 = c01 = c11 = zero;
-      cur = sh.n00;
-    }
+    cell_sums_move(&cs, nd, nny, sh.n00);
     const mpm_v8 Q = {0.0, 0.0, 0.0, 0.0, 0.0, pm[k] * vxn, pm[k] * vyn, 0.0};
     const mpm_v8 Q0 = sh.wy0 * Q, Q1 = sh.wy1 * Q;
-    c00 += sh.wx0 * Q0;
-    c10 += sh.wx1 * Q0;
-    c01 += sh.wx0 * Q1;
-    c11 += sh.wx1 * Q1;
+    cs.c00 += sh.wx0 * Q0;
+    cs.c10 += sh.wx1 * Q0;
+    cs.c01 += sh.wx0 * Q1;
+    cs.c11 += sh.wx1 * Q1;
   }
-  if (cur != SIZE_MAX) {
-    node_add(nd + cur, c00);
-    node_add(nd + cur + nny, c10);
-    node_add(nd + cur + 1, c01);
-    node_add(nd + cur + nny + 1, c11);
-  }
+  cell_sums_flush(&cs, nd, nny);
 }
 
 /* Scatter over the strips, colour by colour (deterministic, no atomics).  which = 0:
