@@ -31,7 +31,9 @@ static void usage(FILE *f)
     "  --scenes DIR   scene folder (default data/scenes)\n"
     "  --list         print one `delam run ...` line per case and stop (for GNU parallel\n"
     "                 or a cluster array; then `delam verify --merge DIR`)\n"
-    "  --merge DIR    run nothing: check the case folders already in DIR\n"
+    "  --merge DIR    run nothing: check the case folders already in DIR (with --quick or\n"
+    "                 --full: every case of that list, a missing one fails; alone: the\n"
+    "                 cases of either list that DIR holds)\n"
     "  --help         this text\n"
     "exit status: 0 no check failed, 1 a pass-class check failed (or a case crashed),\n"
     "2 bad usage or input\n");
@@ -39,7 +41,7 @@ static void usage(FILE *f)
 
 int ver_cmd_verify(int argc, char **argv)
 {
-  ver_verify_opts o = {0, 0, NULL, "data/scenes", "delam", 0, 0};
+  ver_verify_opts o = {0, 0, NULL, "data/scenes", "delam", 0, 0, 0};
   int quick = 0;
   for (int i = 1; i < argc; i++) {
     const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
@@ -93,6 +95,7 @@ int ver_cmd_verify(int argc, char **argv)
   }
   if (!o.outdir)
     o.outdir = o.full ? "out/verify-full" : "out/verify-quick";
+  o.merge_found = o.merge && !quick && !o.full;
   if (o.jobs == 0) {
     const long n = sysconf(_SC_NPROCESSORS_ONLN);
     o.jobs = n > 0 ? (int)n : 1;

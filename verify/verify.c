@@ -68,6 +68,7 @@ typedef struct {
   /* measured */
   double peak_P, delta_peak, delta_sep, k_elastic, D_final, W_ext_final, energy_residual, delta_end;
   double k_soft, curve_l2, band_width, band_extent, angle;
+  double D_diffuse;  /* dissipation outside the band, over U0 x area (ver_diffuse_share) */
   size_t band_count;
   ver_check chk[NCHECK];
   int nchk;
@@ -503,7 +504,7 @@ static void case_read(const ver_verify_opts *o, vcase *c)
   case_dir(o, c, dir, sizeof dir);
   c->peak_P = c->delta_peak = c->delta_sep = c->k_elastic = NAN;
   c->D_final = c->W_ext_final = c->energy_residual = c->delta_end = NAN;
-  c->k_soft = c->curve_l2 = c->band_width = c->band_extent = c->angle = NAN;
+  c->k_soft = c->curve_l2 = c->band_width = c->band_extent = c->angle = c->D_diffuse = NAN;
   snprintf(path, sizeof path, "%s/summary.json", dir);
   char *txt = slurp(path);
   cJSON *js = txt ? cJSON_Parse(txt) : NULL;
@@ -567,6 +568,8 @@ static void case_read(const ver_verify_opts *o, vcase *c)
     c->band_width = ver_band_width(fc[0], fc[1], fc[6], (size_t)nf, 0.5, sc->alpha_deg, sc->h, sc->ppc, sc->H,
                                    &c->band_extent, &c->band_count);
     c->angle = ver_crack_angle(fc[0], fc[1], fc[6], (size_t)nf, 0.5);
+    if (c->have_ana && c->ana.D_sep > 0.0)
+      c->D_diffuse = ver_diffuse_share(fc[6], (size_t)nf, 0.5) * c->D_final / c->ana.D_sep;
   }
   for (int k = 0; k < 14; k++)
     free(fc[k]);
@@ -917,7 +920,7 @@ static int write_json(const ver_verify_opts *o, const vcase *cs, int n, const vc
                       int rc)
 {
   cJSON *root = cJSON_CreateObject();
-  cJSON_AddStringToObject(root, "mode", o->full ? "full" : "quick");
+  cJSON_AddStringToObject(root, "mode", o->merge_found ? "found" : o->full ? "full" : "quick");
   cJSON_AddStringToObject(root, "dir", o->outdir);
   cJSON_AddBoolToObject(root, "merged", o->merge);
   cJSON_AddNumberToObject(root, "jobs", o->jobs);
@@ -945,6 +948,7 @@ static int write_json(const ver_verify_opts *o, const vcase *cs, int n, const vc
     if (c->error[0])
       cJSON_AddStringToObject(co, "error", c->error);
     cJSON_AddStringToObject(co, "verdict", ver_verdict_name(c->verdict));
+    cJSON_AddItemToObject(co, "D_diffuse", num_or_null(c->D_diffuse));
     if (c->have_ana) {
       cJSON *an = cJSON_AddObjectToObject(co, "analytic");
       cJSON_AddNumberToObject(an, "Pmax", c->ana.Pmax);
@@ -1020,7 +1024,7 @@ static int write_csv(const ver_verify_opts *o, const vcase *cs, int n)
     return -1;
   len += (size_t)snprintf(buf + len, cap - len,
                           "case,scene,variant,h,ppc,verdict,complete,exit_status,wall_s,peak_P,peak_err,"
-                          "k_elastic_err,k_soft,k_soft_err,delta_sep,delta_sep_err,D_final,D_err,W_ext_final,"
+                          "k_elastic_err,k_soft,k_soft_err,delta_sep,delta_sep_err,D_final,D_err,D_diffuse,W_ext_final,"
                           "W_err,energy_residual,band_width,band_extent,crack_angle,curve_l2,n_fail,n_known,error\n");
   for (int i = 0; i < n; i++) {
     const vcase *c = &cs[i];
@@ -1035,12 +1039,12 @@ static int write_csv(const ver_verify_opts *o, const vcase *cs, int n)
       if (*p == '"' || *p == ',' || *p == '\n')
         *p = ' ';
     len += (size_t)snprintf(buf + len, cap - len,
-                            "%s,%s,%s,%g,%d,%s,%d,%d,%.4g,%.9g,%.6g,%.6g,%.9g,%.6g,%.6g,%.6g,%.9g,%.6g,%.9g,%.6g,"
+                            "%s,%s,%s,%g,%d,%s,%d,%d,%.4g,%.9g,%.6g,%.6g,%.9g,%.6g,%.6g,%.6g,%.9g,%.6g,%.4g,%.9g,%.6g,"
                             "%.6g,%.4g,%.4g,%.4g,%.6g,%d,%d,%s\n",
                             c->id, c->scene, c->var.suffix, c->vs.sc.h, c->vs.sc.ppc, ver_verdict_name(c->verdict),
                             c->complete, c->exit_code, c->wall_s, c->peak_P, chk_err(c, "peak_P"),
                             chk_err(c, "k_elastic"), c->k_soft, chk_err(c, "k_soft"), c->delta_sep,
-                            chk_err(c, "delta_sep"), c->D_final, chk_err(c, "D_final"), c->W_ext_final,
+                            chk_err(c, "delta_sep"), c->D_final, chk_err(c, "D_final"), c->D_diffuse, c->W_ext_final,
                             chk_err(c, "W_ext_final"), c->energy_residual, c->band_width, c->band_extent, c->angle,
                             c->curve_l2, nf, nk, err);
     if (len >= cap - 1)
@@ -1066,12 +1070,13 @@ static void print_check(const char *id, const ver_check *k)
 
 static void print_table(const vcase *cs, int n, const vcross *x, int nx)
 {
-  printf("\n%-28s %9s %9s %9s %9s %7s  %s\n", "case", "peak err", "D err", "E resid", "curve L2", "wall s",
-         "verdict");
+  printf("\n%-28s %9s %9s %9s %9s %9s %7s  %s\n", "case", "peak err", "D err", "D diffuse", "E resid",
+         "curve L2", "wall s", "verdict");
   for (int i = 0; i < n; i++) {
     const vcase *c = &cs[i];
-    printf("%-28s %+8.2f%% %+8.2f%% %9.2e %9.4f %7.1f  %s%s%s\n", c->id, 100 * chk_err(c, "peak_P"),
-           100 * chk_err(c, "D_final"), c->energy_residual, c->curve_l2, c->wall_s, VNAME[c->verdict],
+    printf("%-28s %+8.2f%% %+8.2f%% %8.2f%% %9.2e %9.4f %7.1f  %s%s%s\n", c->id, 100 * chk_err(c, "peak_P"),
+           100 * chk_err(c, "D_final"), 100 * c->D_diffuse, c->energy_residual, c->curve_l2, c->wall_s,
+           VNAME[c->verdict],
            c->error[0] ? ": " : "", c->error);
   }
   for (int i = 0; i < nx; i++) {
@@ -1087,13 +1092,59 @@ static void print_table(const vcase *cs, int n, const vcross *x, int nx)
 
 /* ------------------------------------------------------------------ driver */
 
+/* Keeps the cases whose folder DIR holds; their number. */
+static int keep_found(const ver_verify_opts *o, vcase *cs, int n)
+{
+  int m = 0;
+  for (int i = 0; i < n; i++) {
+    char dir[1200];
+    struct stat st;
+    snprintf(dir, sizeof dir, "%s/%s", o->outdir, cs[i].id);
+    if (stat(dir, &st) == 0 && S_ISDIR(st.st_mode))
+      cs[m++] = cs[i];
+  }
+  return m;
+}
+
 int ver_verify(const ver_verify_opts *o)
 {
   vcase *cs;
   int n;
-  const int mk = make_cases(o, &cs, &n);
+  int mk = make_cases(o, &cs, &n);
   if (mk)
     return mk;
+  if (o->merge_found) {
+    /* the cases of both lists (full, then the quick variants) that DIR holds */
+    ver_verify_opts q = *o;
+    q.full = !o->full;
+    vcase *cq;
+    int nq;
+    if ((mk = make_cases(&q, &cq, &nq))) {
+      free(cs);
+      return mk;
+    }
+    vcase *all = realloc(cs, (size_t)(n + nq) * sizeof *cs);
+    if (!all) {
+      free(cs);
+      free(cq);
+      return 2;
+    }
+    cs = all;
+    for (int i = 0; i < nq; i++) {
+      int dup = 0;
+      for (int j = 0; j < n && !dup; j++)
+        dup = !strcmp(cs[j].id, cq[i].id);
+      if (!dup)
+        cs[n++] = cq[i];
+    }
+    free(cq);
+    n = keep_found(o, cs, n);
+    if (n == 0) {
+      fprintf(stderr, "delam verify: %s holds no case folder of the full or the quick list\n", o->outdir);
+      free(cs);
+      return 2;
+    }
+  }
   if (o->list) {
     for (int i = 0; i < n; i++) {
       const vcase *c = &cs[i];

@@ -64,6 +64,12 @@ double ver_band_width(const double *x0, const double *y0, const double *lam, siz
  * points have no preferred direction. */
 double ver_crack_angle(const double *x0, const double *y0, const double *lam, size_t n, double thr);
 
+/* Share of the dissipation that lies outside the band: sum of min(lambda, 1) over the
+ * particles with lambda <= thr, over the sum for all (particles of equal V and Le, as in
+ * every scene).  The diffuse decohesion a peak's overshoot leaves in every particle
+ * column (README, Fig. 6).  0 if nothing decohered. */
+double ver_diffuse_share(const double *lam, size_t n, double thr);
+
 /* a - b for angles of lines (mod 180), in (-90, 90]. */
 double ver_angle_diff(double a_deg, double b_deg);
 
@@ -89,6 +95,8 @@ typedef struct {
   const char *self;      /* path of the delam program, for --list                        */
   int list;              /* 1: print one `delam run` line per case and stop               */
   int merge;             /* 1: do not run; check what DIR already holds                  */
+  int merge_found;       /* with merge: the cases of either list whose folders DIR holds
+                            (neither --quick nor --full given)                           */
 } ver_verify_opts;
 
 /* Runs (or lists, or merges) the sweep.  Returns 0 when no pass-class check failed,

@@ -117,6 +117,18 @@ double ver_band_width(const double *x0, const double *y0, const double *lam, siz
   return area / (len * h);
 }
 
+double ver_diffuse_share(const double *lam, size_t n, double thr)
+{
+  double out = 0.0, all = 0.0;
+  for (size_t i = 0; i < n; i++) {
+    const double l = fmin(fmax(lam[i], 0.0), 1.0);
+    all += l;
+    if (!(lam[i] > thr))
+      out += l;
+  }
+  return all > 0.0 ? out / all : 0.0;
+}
+
 double ver_crack_angle(const double *x0, const double *y0, const double *lam, size_t n, double thr)
 {
   double mx = 0, my = 0;

@@ -5,7 +5,9 @@
 #   sigterm,   a signal stops the run cleanly: exit status 130, summary.json with
 #   sigint     "complete": false, no *.tmp file left behind;
 #   determinism  the same scene run twice gives byte-identical load.csv, energy.csv,
-#              final.csv (and snapshots); summary.json differs only in its timings.
+#              final.csv (and snapshots); summary.json differs only in its timings;
+#              and 1 and 2 threads give the same files;
+#   list-merge `verify --list` lines run by hand, then `verify --merge` checks them.
 # Prints TAP; exits 1 if a check failed.
 set -u
 delam=${1:?usage: check_run.sh path/to/delam}
@@ -86,6 +88,24 @@ for f in load.csv energy.csv final.csv; do
   cmp -s "$tmp/det1/$f" "$tmp/det3/$f" || why="$why $f differs or is missing;"
 done
 result determinism-threads "$why"
+
+# 5. A sweep dispatched by hand: `verify --list` prints runnable lines; two of them run,
+#    then `verify --merge` (no --quick/--full) checks exactly the two folders it finds.
+why=""
+if ! "$delam" verify --quick --list --out "$tmp/sweep" >"$tmp/list" 2>"$tmp/err"; then
+  why="verify --list failed: $(head -c 300 "$tmp/err")"
+else
+  grep -E -- '/fig6-h8-ppc(1|4)$' "$tmp/list" | while read -r line; do
+    ( cd "$here/../.." && eval "$line" >/dev/null 2>&1 ) || echo "# failed: $line"
+  done
+  ( cd "$here/../.." && "$delam" verify --merge "$tmp/sweep" >"$tmp/merge" 2>&1 )
+  rc=$?
+  if [ "$rc" != 0 ]; then why="merge exit status $rc: $(tail -n 1 "$tmp/merge")"
+  elif ! grep -q '^verify: 2 cases' "$tmp/merge"; then why="merge did not find exactly 2 cases: $(tail -n 1 "$tmp/merge")"
+  elif ! grep -q '"mode":[[:space:]]*"found"' "$tmp/sweep/verify.json"; then why="verify.json does not say mode found"
+  fi
+fi
+result list-merge "$why"
 
 echo "1..$n"
 echo "# $((n - fail)) passed, $fail failed"

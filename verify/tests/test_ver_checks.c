@@ -105,6 +105,22 @@ static void test_ver_checks_band_width_vertical(void **state)
   free(x), free(y), free(l);
 }
 
+/* The band: 2 particles at lambda 1.2 (counted as 1) and 0.8; the rest: 10 at 0.02 and
+ * 5 at 0: outside the band 0.2 of 2.0 in all, a share of 0.1. */
+static void test_ver_checks_diffuse_share(void **state)
+{
+  (void)state;
+  double l[17] = {1.2, 0.8};
+  for (int i = 2; i < 12; i++)
+    l[i] = 0.02;
+  assert_rel(ver_diffuse_share(l, 17, 0.5), 0.2 / 2.0, 1e-12, "diffuse share");
+  for (int i = 0; i < 17; i++)
+    l[i] = 0.0;
+  assert_true(ver_diffuse_share(l, 17, 0.5) == 0.0);
+  l[0] = 0.3; /* all decohesion below the threshold: all diffuse */
+  assert_rel(ver_diffuse_share(l, 17, 0.5), 1.0, 1e-12, "all diffuse");
+}
+
 /* Particles on a fine lattice, decohered within a strip of width w about a line
  * at 60 deg through (96, 16): the band's mean width is w / h cells, its angle 60. */
 static void test_ver_checks_band_inclined(void **state)
@@ -243,6 +259,7 @@ int main(void)
     cmocka_unit_test(test_ver_checks_softening_slope_bar),
     cmocka_unit_test(test_ver_checks_band_width_vertical),
     cmocka_unit_test(test_ver_checks_band_inclined),
+    cmocka_unit_test(test_ver_checks_diffuse_share),
     cmocka_unit_test(test_ver_checks_angle_diff_wraps),
     cmocka_unit_test(test_ver_checks_conv_order),
     cmocka_unit_test(test_ver_checks_spread),
