@@ -92,13 +92,14 @@ result determinism-threads "$why"
 # 5. A sweep dispatched by hand: `verify --list` prints runnable lines; two of them run,
 #    then `verify --merge` (no --quick/--full) checks exactly the two folders it finds.
 why=""
-if ! "$delam" verify --quick --list --out "$tmp/sweep" >"$tmp/list" 2>"$tmp/err"; then
+scenes=$(cd "$here/../scenes" && pwd)
+if ! "$delam" verify --quick --list --scenes "$scenes" --out "$tmp/sweep" >"$tmp/list" 2>"$tmp/err"; then
   why="verify --list failed: $(head -c 300 "$tmp/err")"
 else
   grep -E -- '/fig6-h8-ppc(1|4)$' "$tmp/list" | while read -r line; do
-    ( cd "$here/../.." && eval "$line" >/dev/null 2>&1 ) || echo "# failed: $line"
+    eval "$line" >/dev/null 2>&1 || echo "# failed: $line"
   done
-  ( cd "$here/../.." && "$delam" verify --merge "$tmp/sweep" >"$tmp/merge" 2>&1 )
+  "$delam" verify --merge "$tmp/sweep" --scenes "$scenes" >"$tmp/merge" 2>&1
   rc=$?
   if [ "$rc" != 0 ]; then why="merge exit status $rc: $(tail -n 1 "$tmp/merge")"
   elif ! grep -q '^verify: 2 cases' "$tmp/merge"; then why="merge did not find exactly 2 cases: $(tail -n 1 "$tmp/merge")"
