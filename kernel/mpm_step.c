@@ -33,6 +33,7 @@
  *  - no allocation, no atomics and no per-particle timing in the loops.
  */
 #include <math.h>
+#include <stddef.h>
 #include <stdio.h>
 #include <string.h>
 #include <time.h>
@@ -70,14 +71,10 @@ static int thread_id(void)
  * as the scalar code would, so the vector width never changes a result.  memcpy moves
  * a record in and out without aliasing questions; it compiles to one load or store. */
 typedef double mpm_v8 __attribute__((vector_size(64)));
-enum { LM = 0, LPX = 1, LPY = 2, LFX = 3, LFY = 4 }; /* lanes: the fields of mpm_node */
-
-static inline mpm_v8 node_load(const mpm_node *n)
-{
-  mpm_v8 v;
-  memcpy(&v, n, sizeof v);
-  return v;
-}
+/* lanes 0-7 are m, px, py, fx, fy, qx, qy, pad: the vectors below are written in it */
+_Static_assert(sizeof(mpm_node) == 64 && offsetof(mpm_node, px) == 8 && offsetof(mpm_node, fx) == 24 &&
+                   offsetof(mpm_node, qx) == 40,
+               "mpm_node must be the eight lanes m, px, py, fx, fy, qx, qy, pad");
 
 /* The gathers need only (px, py, fx, fy): four doubles inside the record's cache line. */
 typedef double mpm_v4 __attribute__((vector_size(32)));
