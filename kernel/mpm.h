@@ -89,7 +89,6 @@ typedef struct {
   double isnf2, istf2;   /* 1 / snf^2, 1 / stf^2                                        */
   double kL;             /* ubar0 / Le                                                 */
   double rnn[3], rtt[3], rnt[3]; /* (s_nn, s_tt, s_nt) = r . (sxx, syy, sxy)             */
-  double rxx[3], ryy[3], rxy[3]; /* (sxx, syy, sxy) = r . (s_nn, s_tt, s_nt)             */
   double fn[3], ft[3];   /* s_nn / snf and s_nt / stf as dot products with (sxx, syy, sxy):
                             the step's elastic test (all 0 when model = NONE)          */
 } mpm_material;
@@ -124,6 +123,10 @@ void mpm_dwork_free(mpm_dwork *w);
  * on the arguments; w is scratch.  MPM_ENOTFINITE if the result is not finite. */
 mpm_status mpm_dcoh_update(const mpm_material *m, const mpm_dstate *in, const double de[3],
                            mpm_dstate *out, mpm_dinfo *info, mpm_dwork *w);
+
+/* Remaining strength squared, (1 - lambda^q)^2 (eq. 23); -1 once separated
+ * (mpm_particles.str2). */
+double mpm_dcoh_str2(const mpm_material *m, double lam, int sep);
 
 /* Decohesion function F = se - (1 - lambda^q) (eq. 23) at a stress state. */
 double mpm_dcoh_F(const mpm_material *m, double sxx, double syy, double sxy, double lam);
@@ -165,7 +168,6 @@ typedef struct {
 typedef struct {
   int ncx, ncy;            /* cells in x and y                                         */
   int nnx, nny;            /* nodes in x and y (ncx+1, ncy+1)                          */
-  double fncx, fncy;       /* ncx, ncy as doubles (the bounds test of every particle)  */
   double ox, oy, h;        /* origin, and the spacing in y (and in x at t = 0)          */
   double hx;               /* spacing in x now (the grid may follow the bar's stretch) */
   double ihx, ihy;         /* 1 / hx, 1 / h                                            */

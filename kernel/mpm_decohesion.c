@@ -101,19 +101,14 @@ void mpm_material_derive(mpm_material *m)
   m->isnf2 = m->isnf * m->isnf;
   m->istf2 = m->istf * m->istf;
   m->kL = m->ubar0 / m->Le;
-  /* (s_nn, s_tt, s_nt) from (sxx, syy, sxy), and back */
+  /* (s_nn, s_tt, s_nt) from (sxx, syy, sxy); from_nt uses the same numbers back */
   m->rnn[0] = nx * nx; m->rnn[1] = ny * ny; m->rnn[2] = 2.0 * nx * ny;
   m->rtt[0] = tx * tx; m->rtt[1] = ty * ty; m->rtt[2] = 2.0 * tx * ty;
   m->rnt[0] = nx * tx; m->rnt[1] = ny * ty; m->rnt[2] = nx * ty + ny * tx;
-  m->rxx[0] = nx * nx; m->rxx[1] = tx * tx; m->rxx[2] = 2.0 * nx * tx;
-  m->ryy[0] = ny * ny; m->ryy[1] = ty * ty; m->ryy[2] = 2.0 * ny * ty;
-  m->rxy[0] = nx * ny; m->rxy[1] = tx * ty; m->rxy[2] = nx * ty + ny * tx;
-  m->fn[0] = on ? nx * nx / m->snf : 0.0;
-  m->fn[1] = on ? ny * ny / m->snf : 0.0;
-  m->fn[2] = on ? 2.0 * nx * ny / m->snf : 0.0;
-  m->ft[0] = on ? nx * tx / m->stf : 0.0;
-  m->ft[1] = on ? ny * ty / m->stf : 0.0;
-  m->ft[2] = on ? (nx * ty + ny * tx) / m->stf : 0.0;
+  for (int i = 0; i < 3; i++) {
+    m->fn[i] = on ? m->rnn[i] / m->snf : 0.0;
+    m->ft[i] = on ? m->rnt[i] / m->stf : 0.0;
+  }
 }
 
 /* lambda^q, exact and cheap for the paper's q = 1. */
@@ -133,6 +128,12 @@ static inline double dpowq(double lam, double q)
   return q < 1.0 ? INFINITY : 0.0;
 }
 
+double mpm_dcoh_str2(const mpm_material *m, double lam, int sep)
+{
+  const double str = 1.0 - powq(lam, m->q);
+  return sep ? -1.0 : str * str;
+}
+
 /* Stress in the n-t frame: (s_nn, s_tt, s_nt). */
 typedef struct {
   double nn, tt, nt;
@@ -147,11 +148,13 @@ static nt_stress to_nt(const mpm_material *m, double sxx, double syy, double sxy
   return s;
 }
 
+/* The inverse rotation, with the same coefficients: sxx = nx^2 s_nn + tx^2 s_tt +
+ * 2 nx tx s_nt, ... (the factors 2 and 1/2 are exact). */
 static void from_nt(const mpm_material *m, nt_stress s, mpm_dstate *out)
 {
-  out->sxx = m->rxx[0] * s.nn + m->rxx[1] * s.tt + m->rxx[2] * s.nt;
-  out->syy = m->ryy[0] * s.nn + m->ryy[1] * s.tt + m->ryy[2] * s.nt;
-  out->sxy = m->rxy[0] * s.nn + m->rxy[1] * s.tt + m->rxy[2] * s.nt;
+  out->sxx = m->rnn[0] * s.nn + m->rtt[0] * s.tt + (2.0 * m->rnt[0]) * s.nt;
+  out->syy = m->rnn[1] * s.nn + m->rtt[1] * s.tt + (2.0 * m->rnt[1]) * s.nt;
+  out->sxy = (0.5 * m->rnn[2]) * s.nn + (0.5 * m->rtt[2]) * s.tt + m->rnt[2] * s.nt;
 }
 
 /* Effective traction, eq. 23, with the Macaulay bracket on sn. */

@@ -18,8 +18,6 @@ mpm_grid *mpm_grid_alloc(int ncx, int ncy, double ox, double oy, double h)
   g->ncy = ncy;
   g->nnx = ncx + 1;
   g->nny = ncy + 1;
-  g->fncx = ncx;
-  g->fncy = ncy;
   g->ox = ox;
   g->oy = oy;
   g->h = g->hx = h;

@@ -22,7 +22,7 @@ typedef struct {
 static inline int mpm_shape_at(const mpm_grid *g, double x, double y, mpm_shape *s)
 {
   const double fx = (x - g->ox) * g->ihx, fy = (y - g->oy) * g->ihy;
-  if (!(fx >= 0.0 && fy >= 0.0 && fx < g->fncx && fy < g->fncy)) {
+  if (!(fx >= 0.0 && fy >= 0.0 && fx < (double)g->ncx && fy < (double)g->ncy)) {
     s->n00 = 0;
     s->wx0 = s->wy0 = 1.0;
     s->wx1 = s->wy1 = 0.0;

@@ -337,8 +337,7 @@ static __attribute__((noinline)) void constitutive_flush(const mpm_sim *s, mpm_p
     p->upn[k] = o.upn;
     p->upt[k] = o.upt;
     p->sep[k] = (uint8_t)o.sep;
-    const double str = 1.0 - (m->q == 1.0 ? o.lam : pow(o.lam, m->q));
-    p->str2[k] = o.sep ? -1.0 : str * str;
+    p->str2[k] = mpm_dcoh_str2(m, o.lam, o.sep);
     p->wcoh[k] += info.w * p->V[k] / m->Le;
     acc->soften += info.path == MPM_DPATH_SOFTEN;
     acc->separate += info.path == MPM_DPATH_SEPARATE;
