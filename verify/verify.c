@@ -1099,7 +1099,7 @@ static int keep_found(const ver_verify_opts *o, vcase *cs, int n)
   for (int i = 0; i < n; i++) {
     char dir[1200];
     struct stat st;
-    snprintf(dir, sizeof dir, "%s/%s", o->outdir, cs[i].id);
+    case_dir(o, &cs[i], dir, sizeof dir);
     if (stat(dir, &st) == 0 && S_ISDIR(st.st_mode))
       cs[m++] = cs[i];
   }
