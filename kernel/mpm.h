@@ -43,6 +43,10 @@ enum { MPM_SCHEME_USL = 0, MPM_SCHEME_MUSL = 1 };
  * 0.02 %), D doubled under MUSL; so only fig6.ini, run at 4 and 9 ppc on fine grids,
  * uses it. */
 enum { MPM_GRID_FIXED = 0, MPM_GRID_STRETCH = 1 };
+/* Shape functions: LINEAR, the paper's bilinear hats (2 x 2 nodes a particle); GIMP,
+ * uGIMP (Bardenhagen and Kober 2004; 3 x 3 nodes), continuous as a particle crosses a
+ * cell edge (mpm_shape.h). */
+enum { MPM_SHAPE_LINEAR = 0, MPM_SHAPE_GIMP = 1 };
 
 /* ---- scene: everything a run needs, as plain numbers (filled by verify/scene.c) ---- */
 typedef struct {
@@ -61,6 +65,7 @@ typedef struct {
   double margin;         /* empty space around the bar (length; the left side adds the grip's travel) */
   int scheme;            /* MPM_SCHEME_USL (paper) or MPM_SCHEME_MUSL                  */
   int grid_motion;       /* MPM_GRID_FIXED (default, the paper) or MPM_GRID_STRETCH   */
+  int shape;             /* MPM_SHAPE_LINEAR (default, the paper) or MPM_SHAPE_GIMP    */
   double dt;             /* time step                                                  */
   double speed;          /* grip speed (pulls the left end in -x)                      */
   double end_delta;      /* the run never goes past this end displacement              */

@@ -8,6 +8,7 @@
 #ifndef DELAM_MPM_SHAPE_H
 #define DELAM_MPM_SHAPE_H
 
+#include <math.h>
 #include <stddef.h>
 
 #include "mpm.h"
@@ -59,6 +60,59 @@ static inline void mpm_shape_eval(const mpm_shape *s, double h, double N[4], dou
   N[0] = s->wx0 * s->wy0; N[1] = s->wx1 * s->wy0; N[2] = s->wx0 * s->wy1; N[3] = s->wx1 * s->wy1;
   Gx[0] = -ih * s->wy0;   Gx[1] = ih * s->wy0;    Gx[2] = -ih * s->wy1;   Gx[3] = ih * s->wy1;
   Gy[0] = -ih * s->wx0;   Gy[1] = -ih * s->wx1;   Gy[2] = ih * s->wx0;    Gy[3] = ih * s->wx1;
+}
+
+/* ---- uGIMP (Bardenhagen and Kober 2004, undeformed particle domains) ----
+ * A particle is a square of half-side l = h / (2 sqrt ppc) whose weight at node i is
+ * the hat N_i averaged over that square.  In 1-D, with d = x_p - x_i in cells and
+ * lc = l / h (0 < lc <= 1/2):
+ *   |d| < lc             S = 1 - (d^2 + lc^2) / (2 lc)       dS/dx = -d / (lc h)
+ *   lc <= |d| < 1 - lc   S = 1 - |d|                         dS/dx = -sgn(d) / h
+ *   1 - lc <= |d| < 1+lc S = (1 + lc - |d|)^2 / (4 lc)       dS/dx = -sgn(d) (1 + lc - |d|) / (2 lc h)
+ * and 0 beyond.  Weights and gradients are continuous as the particle crosses a cell
+ * edge, which removes the cell-crossing force error of the bilinear hats; with one
+ * particle per cell (lc = 1/2) S is the quadratic B-spline.  The support is 3 nodes:
+ * the nearest node i0 and its two neighbours (|d| < 1 + lc <= 3/2). */
+typedef struct {
+  int i0;          /* first of the three nodes (the nearest node minus one)            */
+  double S[3];     /* weights of nodes i0, i0 + 1, i0 + 2                               */
+  double dS[3];    /* their derivatives d/dx_p, times h (so in 1 / cells)              */
+} mpm_gimp1;
+
+static inline double mpm_gimp_w(double d, double lc, double *ds)
+{
+  const double a = fabs(d), sg = d < 0.0 ? -1.0 : 1.0;
+  if (a < lc) {
+    *ds = -d / lc;
+    return 1.0 - (d * d + lc * lc) / (2.0 * lc);
+  }
+  if (a < 1.0 - lc) {
+    *ds = -sg;
+    return 1.0 - a;
+  }
+  if (a < 1.0 + lc) {
+    const double r = 1.0 + lc - a;
+    *ds = -sg * r / (2.0 * lc);
+    return r * r / (4.0 * lc);
+  }
+  *ds = 0.0;
+  return 0.0;
+}
+
+/* f = (x_p - origin) / h, the position in cells. */
+static inline void mpm_gimp_1d(double f, double lc, mpm_gimp1 *o)
+{
+  const int c = (int)floor(f + 0.5); /* nearest node */
+  o->i0 = c - 1;
+  for (int a = 0; a < 3; a++)
+    o->S[a] = mpm_gimp_w(f - (double)(c - 1 + a), lc, &o->dS[a]);
+}
+
+/* 1 if the particle at (x, y) has its 3 x 3 nodes inside the grid. */
+static inline int mpm_gimp_inside(const mpm_grid *g, double x, double y)
+{
+  const double fx = (x - g->ox) * g->ihx, fy = (y - g->oy) * g->ihy;
+  return fx >= 0.5 && fy >= 0.5 && fx < (double)g->ncx - 0.5 && fy < (double)g->ncy - 0.5;
 }
 
 #endif

@@ -72,6 +72,7 @@ mpm_status mpm_scene_check(const mpm_scene *sc, char *err, size_t errlen)
   if (!(sc->margin >= 0.0)) BAD("grid.margin must be >= 0");
   if (sc->scheme != MPM_SCHEME_USL && sc->scheme != MPM_SCHEME_MUSL) BAD("time.scheme must be usl or musl");
   if (sc->grid_motion != MPM_GRID_STRETCH && sc->grid_motion != MPM_GRID_FIXED) BAD("grid.motion must be stretch or fixed");
+  if (sc->shape != MPM_SHAPE_LINEAR && sc->shape != MPM_SHAPE_GIMP) BAD("grid.shape must be linear or gimp");
   if (!(sc->dt > 0.0)) BAD("time.dt must be > 0");
   if (!(sc->speed > 0.0)) BAD("loading.speed must be > 0");
   if (!(sc->end_delta > 0.0)) BAD("run.end_delta must be > 0");
@@ -135,7 +136,10 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
   s->defer = calloc((size_t)s->nthreads, sizeof *s->defer);
   s->head = malloc((nhead ? nhead : 1) * sizeof *s->head);
   s->grip = malloc(sizeof(int) * (size_t)ngrip);
-  s->fixx = malloc(sizeof(int) * (size_t)(cy + 1));
+  /* uGIMP: the support of the bar's last particles reaches the node column beyond
+   * x = L, which is held too (the fixed support is a wall, like the head on the left). */
+  const int nfixcol = sc->shape == MPM_SHAPE_GIMP ? 2 : 1;
+  s->fixx = malloc(sizeof(int) * (size_t)(nfixcol * (cy + 1)));
   int ok = s->g && s->p && s->dws && s->defer && s->head && s->grip && s->fixx;
   if (ok) {
     const size_t ncell = (size_t)s->g->ncx * (size_t)s->g->ncy;
@@ -212,11 +216,12 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
   for (int i = pad; i <= padl; i++)
     for (int j = 0; j <= cy; j++)
       s->grip[q++] = (int)mpm_grid_node(g, i, j + pad);
-  for (int j = 0; j <= cy; j++)
-    s->fixx[j] = (int)mpm_grid_node(g, padl + cx, j + pad);
+  for (int c = 0; c < nfixcol; c++)
+    for (int j = 0; j <= cy; j++)
+      s->fixx[c * (cy + 1) + j] = (int)mpm_grid_node(g, padl + cx + c, j + pad);
   s->grid_ox0 = g->ox;
   s->ngrip = ngrip;
-  s->nfixx = cy + 1;
+  s->nfixx = nfixcol * (cy + 1);
   s->fixy = s->fixx[cy / 2];
   mpm_sim_sort(s);
   *out = s;

@@ -42,10 +42,10 @@
 #endif
 
 #include "mpm.h"
+#include "mpm_gimp.h"
+#include "mpm_node.h"
 #include "mpm_shape.h"
 
-/* Nodes with less mass than this fraction of a particle's are treated as empty. */
-#define MPM_MASS_EPS 1e-12
 /* The inline elastic test sends a particle to the full update from this fraction of
  * its remaining strength squared on (a rounding margin, far above 1 ulp). */
 #define MPM_TRIAL_SAFE (1.0 - 1e-9)
@@ -64,35 +64,6 @@ static int thread_id(void)
 #else
   return 0;
 #endif
-}
-
-/* A node record as one vector (GCC's vector extension; without AVX it is split into
- * SSE2 pairs, with AVX-512 it is one register).  Elementwise arithmetic rounds exactly
- * as the scalar code would, so the vector width never changes a result.  memcpy moves
- * a record in and out without aliasing questions; it compiles to one load or store. */
-typedef double mpm_v8 __attribute__((vector_size(64)));
-/* lanes 0-7 are m, px, py, fx, fy, qx, qy, pad: the vectors below are written in it */
-_Static_assert(sizeof(mpm_node) == 64 && offsetof(mpm_node, px) == 8 && offsetof(mpm_node, fx) == 24 &&
-                   offsetof(mpm_node, qx) == 40,
-               "mpm_node must be the eight lanes m, px, py, fx, fy, qx, qy, pad");
-
-/* The gathers need only (px, py, fx, fy): four doubles inside the record's cache line. */
-typedef double mpm_v4 __attribute__((vector_size(32)));
-enum { GPX = 0, GPY = 1, GFX = 2, GFY = 3 }; /* lanes of the gathered four */
-
-static inline mpm_v4 node_load4(const mpm_node *n)
-{
-  mpm_v4 v;
-  memcpy(&v, &n->px, sizeof v);
-  return v;
-}
-
-static inline void node_add(mpm_node *n, mpm_v8 d)
-{
-  mpm_v8 v;
-  memcpy(&v, n, sizeof v);
-  v += d;
-  memcpy(n, &v, sizeof v);
 }
 
 /* A cell's four node shares, summed in registers while the sorted particles stay in
@@ -203,16 +174,23 @@ static int scatter(mpm_sim *s, int which)
 {
   mpm_grid *g = s->g;
   mpm_particles *p = s->p;
+  const int gimp = s->sc.shape == MPM_SHAPE_GIMP;
+  double lcx = 0.0, lcy = 0.0;
+  if (gimp)
+    mpm_gimp_lc(s, &lcx, &lcy);
   int out = 0;
   for (int colour = 0; colour < 2; colour++) {
 #ifdef _OPENMP
 #pragma omp parallel for schedule(dynamic, 1) reduction(| : out) num_threads(s->nthreads)
 #endif
     for (int q = colour; q < s->nstrip; q += 2) {
+      const size_t a = s->strip_start[q], b = s->strip_start[q + 1];
       if (which == 0)
-        out |= p2g_range(g, p, s->strip_start[q], s->strip_start[q + 1]);
+        out |= gimp ? mpm_gimp_p2g_range(g, p, a, b, lcx, lcy) : p2g_range(g, p, a, b);
+      else if (gimp)
+        mpm_gimp_musl_range(g, p, a, b, lcx, lcy);
       else
-        musl_velocity_range(g, p, s->strip_start[q], s->strip_start[q + 1]);
+        musl_velocity_range(g, p, a, b);
     }
   }
   return out;
@@ -304,6 +282,7 @@ static int name_nonfinite(const mpm_sim *s, char *err, size_t errlen)
   return 0;
 }
 
+
 typedef struct {
   long soften, separate, bracketed;
   double tconst;   /* seconds in the full constitutive update */
@@ -352,7 +331,8 @@ static __attribute__((noinline)) void constitutive_flush(const mpm_sim *s, mpm_p
  * their x and y derivatives (GX, GY).  USL: strain from v^L (lanes px, py).  MUSL:
  * velocities were already updated; strain from v' (lanes fx, fy). */
 static inline __attribute__((always_inline)) void g2p_strip_impl(mpm_sim *s, int q, const int musl,
-                                                                  mpm_defer *d, mpm_dwork *dw, g2p_acc *acc)
+                                                                  const int gimp, mpm_defer *d, mpm_dwork *dw,
+                                                                  g2p_acc *acc)
 {
   const mpm_grid geo = *s->g, *g = &geo; /* a local copy: no store below can alias it */
   const mpm_particles *p = s->p;
@@ -360,8 +340,13 @@ static inline __attribute__((always_inline)) void g2p_strip_impl(mpm_sim *s, int
   const size_t nny = (size_t)g->nny;
   const int ux = musl ? GFX : GPX, uy = ux + 1; /* the lanes of the strain velocity */
   const double dtihx = dt * ihx, dtihy = dt * ihy;
-  /* the safe columns [q S - 1, (q + 1) S + 1) of strip q (mpm_sort.c) */
-  const double clo = q * MPM_STRIP - 1, chi = (q + 1) * MPM_STRIP + 1;
+  /* the safe columns [q S - 1, (q + 1) S + 1) of strip q (mpm_sort.c); half a cell
+   * for uGIMP's wider support (mpm_gimp.c) */
+  const double drift = gimp ? 0.5 : 1.0;
+  const double clo = q * MPM_STRIP - drift, chi = (q + 1) * MPM_STRIP + drift;
+  double lcx = 0.0, lcy = 0.0;
+  if (gimp)
+    mpm_gimp_lc(s, &lcx, &lcy);
   const size_t end = s->strip_start[q + 1];
   int resort = 0;
   /* Chunks of at most MPM_DEFER particles: the list cannot overflow inside one, and the
@@ -378,19 +363,30 @@ static inline __attribute__((always_inline)) void g2p_strip_impl(mpm_sim *s, int
     double(*restrict dde)[3] = d->de;
     size_t nd_ = 0;
     for (size_t k = c0; k < c1; k++) {
-      mpm_shape sh;
-      mpm_shape_inside(g, x[k], y[k], &sh); /* inside: checked by the scatter */
-      const double rx = sh.wx1, ry = sh.wy1;
-      const size_t n00 = sh.n00, n01 = n00 + 1, n10 = n00 + nny, n11 = n10 + 1;
-      const mpm_v4 a00 = node_load4(nd + n00), a10 = node_load4(nd + n10);
-      const mpm_v4 a01 = node_load4(nd + n01), a11 = node_load4(nd + n11);
-      /* The bilinear field and its gradient (eq. 7) from the same differences:
-       * b0, b1 interpolate along x on the cell's lower and upper edges. */
-      const mpm_v4 d0 = a10 - a00, d1 = a11 - a01;
-      const mpm_v4 b0 = a00 + rx * d0, b1 = a01 + rx * d1, db = b1 - b0;
-      const mpm_v4 S = b0 + ry * db;
-      const mpm_v4 GX = dtihx * (d0 + ry * (d1 - d0)); /* dt d/dx */
-      const mpm_v4 GY = dtihy * db;                   /* dt d/dy */
+      mpm_v4 S, GX, GY; /* field, dt d/dx, dt d/dy */
+      if (gimp) {
+        mpm_gimp1 sx, sy;
+        mpm_gimp_1d((x[k] - ox) * ihx, lcx, &sx);
+        mpm_gimp_1d((y[k] - g->oy) * ihy, lcy, &sy);
+        mpm_v4 DX, DY;
+        mpm_gimp_gather(nd, nny, &sx, &sy, &S, &DX, &DY);
+        GX = dtihx * DX;
+        GY = dtihy * DY;
+      } else {
+        mpm_shape sh;
+        mpm_shape_inside(g, x[k], y[k], &sh); /* inside: checked by the scatter */
+        const double rx = sh.wx1, ry = sh.wy1;
+        const size_t n00 = sh.n00, n01 = n00 + 1, n10 = n00 + nny, n11 = n10 + 1;
+        const mpm_v4 a00 = node_load4(nd + n00), a10 = node_load4(nd + n10);
+        const mpm_v4 a01 = node_load4(nd + n01), a11 = node_load4(nd + n11);
+        /* The bilinear field and its gradient (eq. 7) from the same differences:
+         * b0, b1 interpolate along x on the cell's lower and upper edges. */
+        const mpm_v4 d0 = a10 - a00, d1 = a11 - a01;
+        const mpm_v4 b0 = a00 + rx * d0, b1 = a01 + rx * d1, db = b1 - b0;
+        S = b0 + ry * db;
+        GX = dtihx * (d0 + ry * (d1 - d0));
+        GY = dtihy * db;
+      }
       /* eq. 5 (and eq. 6 for USL) */
       const double xn = x[k] + dt * S[GPX];
       x[k] = xn;
@@ -437,18 +433,24 @@ static inline __attribute__((always_inline)) void g2p_strip_impl(mpm_sim *s, int
   acc->resort |= resort;
 }
 
-/* One copy of the loop per scheme, so that each reads only the lanes it needs. */
-static void g2p_strip(mpm_sim *s, int q, int musl, mpm_defer *d, mpm_dwork *dw, g2p_acc *acc)
+/* One copy of the loop per scheme and shape, so that each reads only the lanes it
+ * needs and the bilinear loop stays as it was. */
+static void g2p_strip(mpm_sim *s, int q, int musl, int gimp, mpm_defer *d, mpm_dwork *dw, g2p_acc *acc)
 {
-  if (musl)
-    g2p_strip_impl(s, q, 1, d, dw, acc);
+  if (gimp) {
+    if (musl)
+      g2p_strip_impl(s, q, 1, 1, d, dw, acc);
+    else
+      g2p_strip_impl(s, q, 0, 1, d, dw, acc);
+  } else if (musl)
+    g2p_strip_impl(s, q, 1, 0, d, dw, acc);
   else
-    g2p_strip_impl(s, q, 0, d, dw, acc);
+    g2p_strip_impl(s, q, 0, 0, d, dw, acc);
 }
 
 static mpm_status g2p(mpm_sim *s, char *err, size_t errlen)
 {
-  const int musl = s->sc.scheme == MPM_SCHEME_MUSL;
+  const int musl = s->sc.scheme == MPM_SCHEME_MUSL, gimp = s->sc.shape == MPM_SHAPE_GIMP;
   if (musl) {
     scatter(s, 1);
     grid_musl_velocity(s);
@@ -465,7 +467,7 @@ static mpm_status g2p(mpm_sim *s, char *err, size_t errlen)
 #pragma omp for schedule(dynamic, 1)
 #endif
     for (int q = 0; q < s->nstrip; q++)
-      g2p_strip(s, q, musl, d, dw, &acc);
+      g2p_strip(s, q, musl, gimp, d, dw, &acc);
 #ifdef _OPENMP
 #pragma omp critical
 #endif
@@ -557,7 +559,9 @@ mpm_status mpm_sim_step(mpm_sim *s, char *err, size_t errlen)
     mpm_status st = MPM_EDOMAIN;
     for (size_t k = 0; k < p->n; k++) {
       mpm_shape sh;
-      if (!mpm_shape_at(g, p->x[k], p->y[k], &sh)) {
+      const int in = s->sc.shape == MPM_SHAPE_GIMP ? mpm_gimp_inside(g, p->x[k], p->y[k])
+                                                   : mpm_shape_at(g, p->x[k], p->y[k], &sh);
+      if (!in) {
         st = isfinite(p->x[k]) && isfinite(p->y[k]) ? MPM_EDOMAIN : MPM_ENOTFINITE;
         snprintf(err, errlen, "step %ld: particle at X = %g, Y = %g %s at (%g, %g)%s", s->step, p->x0[k],
                  p->y0[k], st == MPM_EDOMAIN ? "left the grid" : "has a non-finite position", p->x[k],

@@ -167,6 +167,7 @@ static int write_summary(const ver_scene *vs, const ver_summary *u, const char *
   cJSON_AddNumberToObject(o, "dt", vs->sc.dt);
   cJSON_AddStringToObject(o, "Le", vs->sc.le_mode == MPM_LE_PARTICLE ? "particle" : "cell");
   cJSON_AddStringToObject(o, "scheme", vs->sc.scheme == MPM_SCHEME_MUSL ? "musl" : "usl");
+  cJSON_AddStringToObject(o, "shape", vs->sc.shape == MPM_SHAPE_GIMP ? "gimp" : "linear");
   cJSON_AddNumberToObject(o, "separation_threshold", vs->sc.sep_threshold);
   cJSON_AddBoolToObject(o, "complete", u->complete);
   if (errmsg && errmsg[0])

@@ -22,7 +22,7 @@
 
 #include "scene.h"
 
-typedef enum { K_DBL, K_INT, K_LE, K_SCHEME, K_MOTION, K_LIST } ktype;
+typedef enum { K_DBL, K_INT, K_LE, K_SCHEME, K_MOTION, K_SHAPE, K_LIST } ktype;
 
 /* Range kinds: (lo, hi) open, [lo, hi) half open, etc. encoded by flags. */
 enum { LO_OPEN = 1, LO_CLOSED = 2, HI_OPEN = 4, HI_CLOSED = 8 };
@@ -63,6 +63,7 @@ static const keydef keys[] = {
   {"time", "dt", K_DBL, OFF(dt), 1, 0, 0, LO_OPEN, 0, "> 0 and below the CFL bound h / (c sqrt 2)"},
   {"time", "scheme", K_SCHEME, OFF(scheme), 0, 0, 0, 0, MPM_SCHEME_USL, "usl (the paper) or musl"},
   {"grid", "motion", K_MOTION, OFF(grid_motion), 0, 0, 0, 0, MPM_GRID_FIXED, "fixed (the paper) or stretch (follows the bar's mean stretch)"},
+  {"grid", "shape", K_SHAPE, OFF(shape), 0, 0, 0, 0, MPM_SHAPE_LINEAR, "linear (the paper's bilinear hats) or gimp (uGIMP)"},
   {"loading", "speed", K_DBL, OFF(speed), 1, 0, 0, LO_OPEN, 0, "> 0"},
   {"run", "end_delta", K_DBL, OFF(end_delta), 1, 0, 0, LO_OPEN, 0, "> 0"},
   {"run", "stop_margin", K_DBL, OFF(stop_margin), 0, 0, 0, LO_CLOSED, 0.1, ">= 0 (0: run to end_delta)"},
@@ -186,7 +187,7 @@ static int set_key(ver_scene *vs, int ki, const char *value, char *msg, size_t l
     snprintf(msg, len, "%s.%s: empty value (%s)", k->section, k->key, k->allowed);
     return 2;
   }
-  if (k->type == K_LE || k->type == K_SCHEME || k->type == K_MOTION) {
+  if (k->type == K_LE || k->type == K_SCHEME || k->type == K_MOTION || k->type == K_SHAPE) {
     int mode;
     if (k->type == K_LE && !strcmp(value, "cell")) mode = MPM_LE_CELL;
     else if (k->type == K_LE && !strcmp(value, "particle")) mode = MPM_LE_PARTICLE;
@@ -194,6 +195,8 @@ static int set_key(ver_scene *vs, int ki, const char *value, char *msg, size_t l
     else if (k->type == K_SCHEME && !strcmp(value, "musl")) mode = MPM_SCHEME_MUSL;
     else if (k->type == K_MOTION && !strcmp(value, "stretch")) mode = MPM_GRID_STRETCH;
     else if (k->type == K_MOTION && !strcmp(value, "fixed")) mode = MPM_GRID_FIXED;
+    else if (k->type == K_SHAPE && !strcmp(value, "linear")) mode = MPM_SHAPE_LINEAR;
+    else if (k->type == K_SHAPE && !strcmp(value, "gimp")) mode = MPM_SHAPE_GIMP;
     else {
       snprintf(msg, len, "%s.%s: '%s' is not allowed (%s)", k->section, k->key, shown(value, sv, sizeof sv),
                k->allowed);

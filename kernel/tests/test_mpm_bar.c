@@ -84,7 +84,7 @@ static void run_steps(mpm_sim *s, long n)
 /* (a) Without boundary conditions the grid forces sum to zero, so the particles' total
  * momentum is that of the start, to rounding (scale: sum m |v|), under a translating,
  * rotating and random velocity field that also shears and stresses the bar. */
-static void momentum_case(int scheme)
+static void momentum_case(int scheme, int shape)
 {
   mpm_scene sc = fig6_scene();
   sc.L = 16.0;
@@ -93,6 +93,7 @@ static void momentum_case(int scheme)
   sc.ppc = 4;
   sc.margin = 6.0;
   sc.scheme = scheme;
+  sc.shape = shape;
   sc.dt = 0.2 * sqrt(2.0) * mpm_scene_dt_crit(&sc); /* 0.2 h / c, as written for */
   mpm_sim *s = make_sim(&sc, 1);
   mpm_particles *p = s->p;
@@ -137,13 +138,15 @@ static void momentum_case(int scheme)
 static void test_mpm_bar_momentum_usl(void **state)
 {
   (void)state;
-  momentum_case(MPM_SCHEME_USL);
+  momentum_case(MPM_SCHEME_USL, MPM_SHAPE_LINEAR);
+  momentum_case(MPM_SCHEME_USL, MPM_SHAPE_GIMP);
 }
 
 static void test_mpm_bar_momentum_musl(void **state)
 {
   (void)state;
-  momentum_case(MPM_SCHEME_MUSL);
+  momentum_case(MPM_SCHEME_MUSL, MPM_SHAPE_LINEAR);
+  momentum_case(MPM_SCHEME_MUSL, MPM_SHAPE_GIMP);
 }
 
 /* Shared by (b), (c), (d): the elastic Fig. 6 bar pulled to delta = 0.1 (1000 steps),
@@ -155,10 +158,11 @@ typedef struct {
   double KE0;
 } elastic_run;
 
-static void run_elastic(int scheme, int ppc, elastic_run *r)
+static void run_elastic(int scheme, int ppc, int shape, elastic_run *r)
 {
   mpm_scene sc = fig6_scene();
   sc.scheme = scheme;
+  sc.shape = shape;
   sc.ppc = ppc;
   mpm_sim *s = make_sim(&sc, 1);
   mpm_energy e0;
@@ -198,16 +202,16 @@ static void lsq(const double *x, const double *y, int n, double *slope, double *
 
 /* (b) stiffness E H / L = 1024 * 32 / 192 = 170.67 within 1 % (grip and fixed end),
  * and (d) energy: W_ext + KE(0) = KE + SE within 1 %, SE = k delta^2 / 2 within 2 %. */
-static void elastic_case(int scheme, int ppc)
+static void elastic_case(int scheme, int ppc, int shape)
 {
   const double k_exact = 1024.0 * 32.0 / 192.0, d_end = 0.1;
   elastic_run r;
-  run_elastic(scheme, ppc, &r);
+  run_elastic(scheme, ppc, shape, &r);
   double kg, ig, kf, iff;
   lsq(r.delta, r.Pg, NWIN, &kg, &ig);
   lsq(r.delta, r.Pf, NWIN, &kf, &iff);
   char what[96];
-  snprintf(what, sizeof what, "scheme %d ppc %d: grip stiffness vs E H / L", scheme, ppc);
+  snprintf(what, sizeof what, "scheme %d ppc %d shape %d: grip stiffness vs E H / L", scheme, ppc, shape);
   assert_rel(kg, k_exact, 0.01, what);
   snprintf(what, sizeof what, "scheme %d ppc %d: fixed-end stiffness vs E H / L", scheme, ppc);
   assert_rel(kf, k_exact, 0.01, what);
@@ -223,9 +227,11 @@ static void elastic_case(int scheme, int ppc)
 static void test_mpm_bar_elastic_stiffness_energy(void **state)
 {
   (void)state;
-  elastic_case(MPM_SCHEME_USL, 4);
-  elastic_case(MPM_SCHEME_USL, 1);
-  elastic_case(MPM_SCHEME_MUSL, 4);
+  elastic_case(MPM_SCHEME_USL, 4, MPM_SHAPE_LINEAR);
+  elastic_case(MPM_SCHEME_USL, 1, MPM_SHAPE_LINEAR);
+  elastic_case(MPM_SCHEME_MUSL, 4, MPM_SHAPE_LINEAR);
+  elastic_case(MPM_SCHEME_USL, 1, MPM_SHAPE_GIMP);
+  elastic_case(MPM_SCHEME_MUSL, 4, MPM_SHAPE_GIMP);
 }
 
 /* Fig. 6 with decohesion (Model 1, alpha 90, q 1, imperfection 0.9 at the centre),
@@ -237,13 +243,14 @@ static void test_mpm_bar_elastic_stiffness_energy(void **state)
  *   dissipation D = U0 H = 12 (lambda ~ 1 over one band of cells, Le = h);
  *   energy balance W_ext + KE(0) = KE + SE + W_coh, to 1 % of W_ext;
  *   the separated bar carries (almost) nothing: |P| < 3 % of the peak at the end. */
-static void fig6_decohesion_case(int scheme)
+static void fig6_decohesion_case(int scheme, int shape)
 {
   mpm_scene sc = fig6_scene();
   sc.model = MPM_DCOH_MODEL1;
   sc.imp_factor = 0.9;
   sc.end_delta = 0.45;
   sc.scheme = scheme;
+  sc.shape = shape;
   mpm_sim *s = make_sim(&sc, 1);
   mpm_energy e0, e;
   mpm_sim_energy(s, &e0);
@@ -258,17 +265,17 @@ static void fig6_decohesion_case(int scheme)
   mpm_sim_energy(s, &e);
   const double H = sc.H, UF = sc.q * sc.U0 / (sc.q + 1.0);
   char what[96];
-  snprintf(what, sizeof what, "scheme %d: peak load vs snf H", scheme);
+  snprintf(what, sizeof what, "scheme %d shape %d: peak load vs snf H", scheme, shape);
   assert_rel(Pmax, sc.snf * H, 0.03, what);
-  snprintf(what, sizeof what, "scheme %d: W_ext vs UF H", scheme);
+  snprintf(what, sizeof what, "scheme %d shape %d: W_ext vs UF H", scheme, shape);
   assert_rel(e.W_ext, UF * H, 0.02, what);
-  snprintf(what, sizeof what, "scheme %d: W_coh vs UF H", scheme);
+  snprintf(what, sizeof what, "scheme %d shape %d: W_coh vs UF H", scheme, shape);
   assert_rel(e.W_coh, UF * H, 0.02, what);
-  snprintf(what, sizeof what, "scheme %d: dissipation vs U0 H", scheme);
+  snprintf(what, sizeof what, "scheme %d shape %d: dissipation vs U0 H", scheme, shape);
   assert_rel(e.D, sc.U0 * H, 0.02, what);
-  snprintf(what, sizeof what, "scheme %d: W_ext + KE0 - (KE + SE + W_coh)", scheme);
+  snprintf(what, sizeof what, "scheme %d shape %d: W_ext + KE0 - (KE + SE + W_coh)", scheme, shape);
   assert_abs(e.W_ext + e0.KE - (e.KE + e.SE + e.W_coh), 0.0, 0.01 * e.W_ext, what);
-  snprintf(what, sizeof what, "scheme %d: load after separation", scheme);
+  snprintf(what, sizeof what, "scheme %d shape %d: load after separation", scheme, shape);
   assert_abs(Pend, 0.0, 0.03 * Pmax, what);
   assert_true(s->n_separate >= (long)(H / sc.h)); /* at least one band across the bar */
   mpm_sim_free(s);
@@ -277,8 +284,10 @@ static void fig6_decohesion_case(int scheme)
 static void test_mpm_bar_fig6_decohesion_energy(void **state)
 {
   (void)state;
-  fig6_decohesion_case(MPM_SCHEME_USL);
-  fig6_decohesion_case(MPM_SCHEME_MUSL);
+  fig6_decohesion_case(MPM_SCHEME_USL, MPM_SHAPE_LINEAR);
+  fig6_decohesion_case(MPM_SCHEME_MUSL, MPM_SHAPE_LINEAR);
+  fig6_decohesion_case(MPM_SCHEME_USL, MPM_SHAPE_GIMP);
+  fig6_decohesion_case(MPM_SCHEME_MUSL, MPM_SHAPE_GIMP);
 }
 
 /* (c) nthreads 1 and 2 give bit-identical particle states: the elastic bar, and a
@@ -328,6 +337,10 @@ static void test_mpm_bar_threads_bit_identical(void **state)
   sc.speed = 0.004;
   sc.scheme = MPM_SCHEME_MUSL;
   threads_case(&sc, 1125, "Model 1 bar, softening and separation", &nsoft, &nsep);
+  if (!(nsoft > 0 && nsep > 0))
+    fail_msg("Model 1 bar: %ld softening and %ld separation updates; expected both", nsoft, nsep);
+  sc.shape = MPM_SHAPE_GIMP; /* uGIMP: 3 x 3 nodes a particle, half-cell drift between sorts */
+  threads_case(&sc, 1125, "Model 1 bar, uGIMP, softening and separation", &nsoft, &nsep);
   /* the case did reach decohesion, else the comparison proves little */
   if (!(nsoft > 0 && nsep > 0))
     fail_msg("Model 1 bar: %ld softening and %ld separation updates; expected both", nsoft, nsep);
@@ -382,6 +395,7 @@ static void test_mpm_bar_scene_check(void **state)
   sc = ok; sc.ppc = 0; expect_einval(&sc, "ppc");
   sc = ok; sc.margin = -1.0; expect_einval(&sc, "margin");
   sc = ok; sc.scheme = 2; expect_einval(&sc, "scheme");
+  sc = ok; sc.shape = 2; expect_einval(&sc, "shape");
   sc = ok; sc.dt = 0.0; expect_einval(&sc, "dt");
   sc = ok; sc.speed = 0.0; expect_einval(&sc, "speed");
   sc = ok; sc.end_delta = -0.1; expect_einval(&sc, "end_delta");
