@@ -54,7 +54,7 @@ FUZZ_SRC = fuzz/fuzz_scene.c verify/scene.c $(wildcard kernel/*.c)
 build-fuzz/fuzz_scene: $(FUZZ_SRC) verify/scene.h kernel/mpm.h
 	@mkdir -p build-fuzz/corpus
 	$(FUZZ_CC) -g -O1 -std=c11 -D_POSIX_C_SOURCE=200809L -Wall -Wextra -Wno-unknown-pragmas \
-	  -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined -Ikernel -Iverify \
+	  -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined -Ikernel -Ianalytic -Iverify \
 	  $(FUZZ_SRC) -linih -lgsl -lm -o $@
 
 fuzz: deps build-fuzz/fuzz_scene

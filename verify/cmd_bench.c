@@ -21,6 +21,7 @@
 
 #include "ana.h"
 #include "cmd.h"
+#include "io.h"
 #include "mpm.h"
 #include "scene.h"
 
@@ -36,13 +37,6 @@ static const bench_case cases[] = {
   {"data/scenes/fig6.ini", 1.0, 4, 2000},
   {"data/scenes/fig7.ini", 2.0, 4, 4000},
 };
-
-static double now(clockid_t c)
-{
-  struct timespec ts;
-  clock_gettime(c, &ts);
-  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
 
 /* Uniform uniaxial stress sigma along x: strains sigma/E and -nu sigma/E, the left end
  * at -delta, the right end fixed, mid-height fixed in y; velocity the loading field. */
@@ -149,17 +143,8 @@ int ver_cmd_bench(int argc, char **argv)
         fprintf(stderr, "delam bench: %s\n", err);
         return 2;
       }
-      ana_params ap;
-      ana_params_default(&ap);
-      ap.alpha_deg = vs.sc.alpha_deg;
-      ap.snf = vs.sc.snf;
-      ap.stf = vs.sc.stf;
-      ap.U0 = vs.sc.U0;
-      ap.s0 = vs.sc.s0;
-      ap.q = vs.sc.q;
-      ap.model = vs.sc.model;
       ana_bar bar;
-      if (ana_bar_init(&ap, &bar, err, (int)sizeof err) != ANA_OK) {
+      if (ver_scene_bar(&vs.sc, &bar, err, sizeof err) != 0) {
         fprintf(stderr, "delam bench: %s\n", err);
         return 2;
       }
@@ -174,7 +159,7 @@ int ver_cmd_bench(int argc, char **argv)
           return 1;
         }
         prestress(t, 0.99 * bar.r0);
-        const double w0 = now(CLOCK_MONOTONIC), c0 = now(CLOCK_PROCESS_CPUTIME_ID);
+        const double w0 = ver_now_wall(), c0 = ver_now_cpu();
         for (long k = 0; k < steps; k++)
           if (mpm_sim_step(t, err, sizeof err) != MPM_OK) {
             fprintf(stderr, "delam bench: %s\n", err);
@@ -182,7 +167,7 @@ int ver_cmd_bench(int argc, char **argv)
             mpm_sim_free(s);
             return 1;
           }
-        const double w = now(CLOCK_MONOTONIC) - w0, cu = now(CLOCK_PROCESS_CPUTIME_ID) - c0;
+        const double w = ver_now_wall() - w0, cu = ver_now_cpu() - c0;
         if (w < wall) { /* keep the fastest run, with its own time split */
           wall = w;
           cpu = cu;

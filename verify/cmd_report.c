@@ -27,9 +27,12 @@
 #include <cjson/cJSON.h>
 
 #include "cmd.h"
+#include "io.h"
+#include "metrics.h"
 #include "report.h"
 #include "run.h"
 #include "scene.h"
+#include "summary.h"
 
 #define PROG "delam report"
 
@@ -115,7 +118,7 @@ static double scene_dt_crit(const rep_ctx *r, const char *scene, double h)
 {
   char path[REP_PATH + 64], err[256];
   ver_scene vs;
-  snprintf(path, sizeof path, "%s/%s.ini", r->scenes, scene);
+  snprintf(path, sizeof path, "%.900s/%.60s.ini", r->scenes, scene);
   if (ver_scene_load(path, &vs, err, sizeof err) != 0)
     return NAN;
   vs.sc.h = h;
@@ -161,32 +164,16 @@ static int scan_from(report *R)
     snprintf(tmp.dir, sizeof tmp.dir, "%.800s/%.200s", r->from, e->d_name);
     if (ver_report_read_summary(&tmp) != 0 || !tmp.complete)
       continue;
-    char p[REP_PATH + 32];
-    snprintf(p, sizeof p, "%s/summary.json", tmp.dir);
-    FILE *f = fopen(p, "r");
-    char buf[8192];
-    const size_t k = f ? fread(buf, 1, sizeof buf - 1, f) : 0;
-    if (f)
-      fclose(f);
-    buf[k] = '\0';
-    cJSON *o = cJSON_Parse(buf);
-    if (!o)
+    ver_summary_doc sd;
+    if (ver_summary_read(tmp.dir, &sd) != 0)
       continue;
-    const cJSON *sc = cJSON_GetObjectItemCaseSensitive(o, "scene");
-    const cJSON *le = cJSON_GetObjectItemCaseSensitive(o, "Le");
-    const cJSON *st = cJSON_GetObjectItemCaseSensitive(o, "separation_threshold");
-    const cJSON *h = cJSON_GetObjectItemCaseSensitive(o, "h");
-    const cJSON *ppc = cJSON_GetObjectItemCaseSensitive(o, "ppc");
-    const cJSON *dt = cJSON_GetObjectItemCaseSensitive(o, "dt");
-    int ok = cJSON_IsString(sc) && cJSON_IsNumber(h) && cJSON_IsNumber(ppc) && cJSON_IsNumber(dt) &&
-             (!cJSON_IsString(le) || !strcmp(le->valuestring, "cell")) &&
-             (!cJSON_IsNumber(st) || st->valuedouble == 0.98);
+    int ok = sd.scene[0] && isfinite(sd.h) && sd.ppc > 0 && isfinite(sd.dt) &&
+             (!sd.le[0] || !strcmp(sd.le, "cell")) && (!isfinite(sd.sep_threshold) || sd.sep_threshold == 0.98);
     /* the paper's time step only: dt / h as in the scene file */
     if (ok) {
-      const double crit = scene_dt_crit(r, sc->valuestring, h->valuedouble);
-      const double ref = scene_dt_crit(r, sc->valuestring, 8.0);
-      ok = isfinite(crit) && fabs(dt->valuedouble / crit - 0.1 / ref) < 1e-6 &&
-           find_sweep(r, sc->valuestring, h->valuedouble, ppc->valueint) < 0;
+      const double crit = scene_dt_crit(r, sd.scene, sd.h);
+      const double ref = scene_dt_crit(r, sd.scene, 8.0);
+      ok = isfinite(crit) && fabs(sd.dt / crit - 0.1 / ref) < 1e-6 && find_sweep(r, sd.scene, sd.h, sd.ppc) < 0;
     }
     if (ok) {
       rep_case *c = &r->c[r->n++];
@@ -194,9 +181,9 @@ static int scan_from(report *R)
       snprintf(c->id, sizeof c->id, "%.80s", e->d_name);
       if (ver_report_find(r, c->id) != r->n - 1)
         snprintf(c->id, sizeof c->id, "%.80s@verify", e->d_name);
-      snprintf(c->scene, sizeof c->scene, "%.31s", sc->valuestring);
-      c->h = h->valuedouble;
-      c->ppc = ppc->valueint;
+      snprintf(c->scene, sizeof c->scene, "%.31s", sd.scene);
+      c->h = sd.h;
+      c->ppc = sd.ppc;
       c->role = REP_SWEEP;
       c->have = c->reused = 1;
       c->exit_status = 0;
@@ -204,7 +191,6 @@ static int scan_from(report *R)
       c->curve_err = c->max_dev = c->diss_err = c->k_soft = c->drop_width = NAN;
       n++;
     }
-    cJSON_Delete(o);
   }
   closedir(d);
   return n;
@@ -367,8 +353,8 @@ static void write_sweeps(const rep_ctx *r, FILE *vars)
       if (ppc == 1) {
         conv_fit *cf = &fits[s];
         cf->n = n;
-        cf->p_curve = ver_report_order(hh, ec, n, &cf->c_curve);
-        cf->p_diss = ver_report_order(hh, ed, n, &cf->c_diss);
+        cf->p_curve = ver_conv_order(hh, ec, (size_t)n, &cf->c_curve);
+        cf->p_diss = ver_conv_order(hh, ed, (size_t)n, &cf->c_diss);
         fprintf(vars, "p_curve_%s = %.6g\nc_curve_%s = %.6g\np_diss_%s = %.6g\nc_diss_%s = %.6g\n",
                 sweep_scene[s], isfinite(cf->p_curve) ? cf->p_curve : 0, sweep_scene[s],
                 isfinite(cf->c_curve) ? cf->c_curve : -50, sweep_scene[s],
@@ -582,7 +568,7 @@ static void ended(sbuf *b, const rep_case *c)
 }
 
 /* From a snapshot (delta < 0: final.csv): the width in cells of the band of particles
- * with lambda >= lam_min (their area over the crack length H / sin alpha), the mean
+ * with lambda > lam_min (ver_band_width: their area over the crack length), the mean
  * vertical displacement of the left quarter of the bar, and the largest lambda. */
 static void snapshot_stats(const rep_case *c, double delta, double lam_min, double *band, double *uy_left,
                            double *max_lam)
@@ -595,28 +581,26 @@ static void snapshot_stats(const rep_case *c, double delta, double lam_min, doub
     snprintf(p, sizeof p, "%s/final.csv", c->dir);
   else
     snprintf(p, sizeof p, "%s/snap-d%.3f.csv", c->dir, delta);
-  const char *cols[3] = {"x0", "uy", "lambda"};
-  double *v[3];
-  const int n = ver_report_snapshot(p, cols, 3, v);
+  static const char *const cols[4] = {"x0", "y0", "uy", "lambda"};
+  double *v[4];
+  const long n = ver_csv_read(p, cols, 4, v);
   if (n > 0) {
-    int nd = 0, nl = 0;
+    int nl = 0;
     double su = 0, ml = 0;
-    for (int i = 0; i < n; i++) {
-      if (v[2][i] >= lam_min)
-        nd++;
-      ml = fmax(ml, v[2][i]);
+    for (long i = 0; i < n; i++) {
+      ml = fmax(ml, v[3][i]);
       if (v[0][i] < 0.25 * c->bar.p.L) {
-        su += v[1][i];
+        su += v[2][i];
         nl++;
       }
     }
-    const double sa = sin(c->bar.p.alpha_deg * acos(-1.0) / 180.0);
-    /* damaged area / crack length, in cells */
-    *band = nd * (c->h * c->h / c->ppc) / (c->bar.p.H / sa) / c->h;
+    /* damaged area / crack length, in cells (metrics.h) */
+    *band = ver_band_width(v[0], v[1], v[3], (size_t)n, lam_min, c->bar.p.alpha_deg, c->h, c->ppc, c->bar.p.H,
+                           NULL, NULL);
     *uy_left = nl ? su / nl : NAN;
     *max_lam = ml;
   }
-  for (int j = 0; j < 3; j++)
+  for (int j = 0; j < 4; j++)
     free(v[j]);
 }
 
@@ -682,7 +666,7 @@ static void text_fig6(report *R)
   b = &f->text;
   sb_printf(b, "Paper: the load-deflection curves on the refined grids approach the analytic curve "
                "(peak 32, slopes +171 and -171, separation at delta = 0.375). Measured (RMS load error / Pmax over "
-               "0 <= delta <= 1.5 max(delta_peak, delta_sep)): ");
+               "0 < delta <= the analytic separation point, or the peak if that comes later, as in delam verify): ");
   for (double h = 8; h >= 1; h /= 2) {
     const rep_case *c = sw(r, "fig6", h, 1);
     if (c)
@@ -802,7 +786,7 @@ static void text_conv(report *R)
     return;
   sbuf *b = &f->text;
   sb_printf(b, "Paper: a convergence study over h (sec. 4.4). Curve error = RMS of (P - P_analytic) / Pmax over "
-               "0 <= delta <= 1.5 max(delta_peak, delta_sep); dissipation error = |D / (U0 H / sin alpha) - 1| at the "
+               "0 < delta <= the analytic separation point (or the peak, for snapback bars; the definition delam verify uses); dissipation error = |D / (U0 H / sin alpha) - 1| at the "
                "end of the run; orders are least-squares slopes of log error against log h over the complete runs. ");
   if (R->sweep_from)
     sb_printf(b, "%d of the runs come from %s (each to its own end); ", R->sweep_from, r->from);
@@ -1153,20 +1137,11 @@ static cJSON *read_verify(const char *from)
 {
   char p[REP_PATH + 32];
   snprintf(p, sizeof p, "%s/verify.json", from);
-  FILE *f = fopen(p, "rb");
-  if (!f)
+  char *buf = ver_io_slurp(p, NULL, 0);
+  if (!buf)
     return NULL;
-  fseek(f, 0, SEEK_END);
-  const long n = ftell(f);
-  fseek(f, 0, SEEK_SET);
-  char *buf = n > 0 ? malloc((size_t)n + 1) : NULL;
-  cJSON *o = NULL;
-  if (buf && fread(buf, 1, (size_t)n, f) == (size_t)n) {
-    buf[n] = '\0';
-    o = cJSON_Parse(buf);
-  }
+  cJSON *o = cJSON_Parse(buf);
   free(buf);
-  fclose(f);
   if (!o)
     fprintf(stderr, PROG ": %s is not JSON; going on without it\n", p);
   return o;
@@ -1263,10 +1238,10 @@ int ver_cmd_report(int argc, char **argv)
     fprintf(stderr, PROG ": cannot create %s or %s\n", r->out, r->cache);
     return 2;
   }
-  const double t0 = ver_report_now();
+  const double t0 = ver_now_wall();
   build_cases(&R);
   const int missing = ver_report_run_cases(r);
-  const double t_runs = ver_report_now() - t0;
+  const double t_runs = ver_now_wall() - t0;
   for (int i = 0; i < r->n; i++)
     ver_report_measure(r, &r->c[i]);
   write_data(&R);
@@ -1284,11 +1259,11 @@ int ver_cmd_report(int argc, char **argv)
   int bad = missing;
   for (int i = 0; i < R.nf; i++)
     bad += R.f[i].status != 0;
-  const int rc = write_report(&R, t_runs, ver_report_now() - t0);
+  const int rc = write_report(&R, t_runs, ver_now_wall() - t0);
   for (int i = 0; i < R.nf; i++)
     free(R.f[i].text.s);
   cJSON_Delete(R.verify);
   fprintf(stderr, PROG ": %s/index.html and %s/REPORT.md written in %.1f s%s\n", r->out, r->out,
-          ver_report_now() - t0, bad ? " (with missing parts, see above)" : "");
+          ver_now_wall() - t0, bad ? " (with missing parts, see above)" : "");
   return rc ? 1 : bad ? 1 : 0;
 }

@@ -52,14 +52,15 @@ typedef struct {
   long steps;
   double particles;
   char error[256];      /* summary.json "error", if any                                       */
+  double sep_threshold; /* the run's separation threshold (summary.json)                     */
   /* measured here against the analytic bar */
   ana_bar bar;          /* the scene's analytic bar                                          */
   int bar_ok;
-  double curve_err;     /* RMS (P - P_ana) / Pmax over [0, cmp_end] (NaN if no rows)          */
+  double curve_err;     /* RMS (P - P_ana) / Pmax over (0, cmp_end] (ver_curve_l2; NaN if no rows) */
   double max_dev;       /* max |P - P_ana| / Pmax over the same range                         */
-  double cmp_end;       /* the range of the comparison                                        */
+  double cmp_end;       /* the range of the comparison: ver_sep_ref at the run's threshold    */
   double diss_err;      /* D_final / D_sep(analytic) - 1                                      */
-  double k_soft;        /* least-squares softening slope between 0.8 and 0.3 of the peak     */
+  double k_soft;        /* softening slope (ver_softening_slope, 0.8 to 0.2 of the peak)      */
   double drop_width;    /* delta interval in which P fell from 0.9 to 0.1 of its peak; NaN    */
   double max_absP;      /* largest |P| in load.csv (blow-up test)                             */
   int rows;             /* rows of load.csv read                                              */
@@ -94,7 +95,6 @@ int ver_report_run_cases(rep_ctx *r);
  * exit status (-1 if it could not start). */
 void ver_report_spawn_all(char ***argvs, const char *cwd, char **logs, char **names, int n, int jobs,
                           int *status, const char *what);
-double ver_report_now(void);
 
 /* report_data.c */
 /* Reads summary.json of c->dir into *c; 0 if read. */
@@ -103,9 +103,4 @@ int ver_report_read_summary(rep_case *c);
 void ver_report_measure(const rep_ctx *r, rep_case *c);
 /* Load rows of a case: delta and P (malloc'd, caller frees); returns the count. */
 int ver_report_load(const rep_case *c, double **delta, double **P);
-/* Reads columns from a snapshot CSV by header name; returns the row count (0 if none). */
-int ver_report_snapshot(const char *path, const char *const *cols, int ncol, double **out);
-/* Least-squares slope of log y against log x over n points with x, y > 0. */
-double ver_report_order(const double *x, const double *y, int n, double *logc);
-
 #endif

@@ -20,16 +20,10 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "io.h"
 #include "report.h"
 #include "run.h"
 #include "scene.h"
-
-double ver_report_now(void)
-{
-  struct timespec ts;
-  clock_gettime(CLOCK_MONOTONIC, &ts);
-  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
 
 void ver_report_abs(const char *path, char *out, size_t len)
 {
@@ -163,24 +157,12 @@ static void write_exit_status(const rep_ctx *r, const char *dir, int s)
   }
 }
 
-/* Reads a whole (small) file; NULL if it cannot. */
-static char *read_all(const char *path, long *len)
-{
-  FILE *f = fopen(path, "rb");
-  if (!f)
-    return NULL;
-  char *buf = malloc(65536);
-  *len = buf ? (long)fread(buf, 1, 65536, f) : 0;
-  fclose(f);
-  return buf;
-}
-
 /* 1 if the two files have the same bytes (scene files are small). */
 static int same_file(const char *a, const char *b)
 {
-  long la = 0, lb = 0;
-  char *x = read_all(a, &la), *y = read_all(b, &lb);
-  const int same = x && y && la == lb && !memcmp(x, y, (size_t)la);
+  size_t la = 0, lb = 0;
+  char *x = ver_io_slurp(a, &la, VER_SCENE_MAX), *y = ver_io_slurp(b, &lb, VER_SCENE_MAX);
+  const int same = x && y && la == lb && !memcmp(x, y, la);
   free(x);
   free(y);
   return same;
@@ -193,14 +175,7 @@ static void keep_scene(const rep_ctx *r, const rep_case *c)
   char src[REP_PATH + 64], dst[REP_PATH + 32];
   snprintf(src, sizeof src, "%s/%s.ini", r->scenes, c->scene);
   snprintf(dst, sizeof dst, "%s/scene.ini", c->dir);
-  long n = 0;
-  char *buf = read_all(src, &n);
-  FILE *f = buf ? fopen(dst, "wb") : NULL;
-  if (f) {
-    fwrite(buf, 1, (size_t)n, f);
-    fclose(f);
-  }
-  free(buf);
+  ver_io_copy(src, dst);
 }
 
 /* Uses the results in dir if they are complete, or (check_scene: our own cache) if the
@@ -271,7 +246,7 @@ void ver_report_spawn_all(char ***argvs, const char *cwd, char **logs, char **na
   int next = 0, running = 0, done = 0;
   while (done < n) {
     while (running < jobs && next < n) {
-      t0[next] = ver_report_now();
+      t0[next] = ver_now_wall();
       pid[next] = start_child(argvs[next], cwd, logs[next]);
       if (pid[next] < 0) {
         status[next] = -1;
@@ -297,7 +272,7 @@ void ver_report_spawn_all(char ***argvs, const char *cwd, char **logs, char **na
         running--;
         done++;
         fprintf(stderr, "delam report: [%2d/%d] %s %s: %s (%.1f s)\n", done, n, what, names[i],
-                status[i] == 0 ? "ok" : "failed", ver_report_now() - t0[i]);
+                status[i] == 0 ? "ok" : "failed", ver_now_wall() - t0[i]);
       }
   }
   free(pid);

@@ -30,59 +30,20 @@
 #include <time.h>
 #include <unistd.h>
 
-#include <cjson/cJSON.h>
-
+#include "metrics.h"
 #include "run.h"
-
-static double now_wall(void)
-{
-  struct timespec ts;
-  clock_gettime(CLOCK_MONOTONIC, &ts);
-  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
-static double now_cpu(void)
-{
-  struct timespec ts;
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
-int ver_mkdir_p(const char *dir)
-{
-  char buf[1024];
-  if (snprintf(buf, sizeof buf, "%s", dir) >= (int)sizeof buf) {
-    errno = ENAMETOOLONG;
-    return -1;
-  }
-  for (char *p = buf + 1; *p; p++)
-    if (*p == '/') {
-      *p = '\0';
-      if (mkdir(buf, 0777) != 0 && errno != EEXIST)
-        return -1;
-      *p = '/';
-    }
-  return (mkdir(buf, 0777) != 0 && errno != EEXIST) ? -1 : 0;
-}
 
 /* Opens dir/name.tmp for writing; commit_file renames it into place. */
 static FILE *open_tmp(const char *dir, const char *name, char *tmp, size_t len)
 {
-  snprintf(tmp, len, "%s/%s.tmp", dir, name);
-  return fopen(tmp, "w");
+  char path[1100];
+  snprintf(path, sizeof path, "%s/%s", dir, name);
+  return ver_io_open_tmp(path, tmp, len);
 }
 
 static int commit_file(FILE *f, const char *tmp)
 {
-  const int bad = ferror(f);
-  if (fclose(f) != 0 || bad) {
-    remove(tmp);
-    return -1;
-  }
-  char fin[1100];
-  snprintf(fin, sizeof fin, "%s", tmp);
-  fin[strlen(fin) - 4] = '\0';
-  return rename(tmp, fin);
+  return ver_io_commit(f, tmp);
 }
 
 static int write_snapshot(const mpm_sim *s, const char *dir, const char *stem)
@@ -154,79 +115,19 @@ static int write_rows(const row *r, long n, const char *dir)
   return commit_file(f, tmp);
 }
 
-static int write_summary(const ver_scene *vs, const ver_summary *u, const char *dir, const char *errmsg)
-{
-  cJSON *o = cJSON_CreateObject();
-  char id[128];
-  ver_scene_case_id(vs, id, sizeof id);
-  cJSON_AddStringToObject(o, "case", id);
-  cJSON_AddStringToObject(o, "scene", vs->name);
-  cJSON_AddStringToObject(o, "scene_file", vs->path);
-  cJSON_AddNumberToObject(o, "h", vs->sc.h);
-  cJSON_AddNumberToObject(o, "ppc", vs->sc.ppc);
-  cJSON_AddNumberToObject(o, "dt", vs->sc.dt);
-  cJSON_AddStringToObject(o, "Le", vs->sc.le_mode == MPM_LE_PARTICLE ? "particle" : "cell");
-  cJSON_AddStringToObject(o, "scheme", vs->sc.scheme == MPM_SCHEME_MUSL ? "musl" : "usl");
-  cJSON_AddStringToObject(o, "shape", vs->sc.shape == MPM_SHAPE_GIMP ? "gimp" : "linear");
-  cJSON_AddNumberToObject(o, "separation_threshold", vs->sc.sep_threshold);
-  cJSON_AddBoolToObject(o, "complete", u->complete);
-  if (errmsg && errmsg[0])
-    cJSON_AddStringToObject(o, "error", errmsg);
-  cJSON_AddNumberToObject(o, "peak_P", u->peak_P);
-  cJSON_AddNumberToObject(o, "delta_peak", u->delta_peak);
-  cJSON_AddNumberToObject(o, "delta_sep", u->delta_sep);
-  cJSON_AddNumberToObject(o, "delta_sep_cut", u->delta_sep_cut);
-  cJSON_AddNumberToObject(o, "delta_sep_load", u->delta_sep_load);
-  cJSON_AddNumberToObject(o, "k_elastic", u->k_elastic);
-  cJSON_AddNumberToObject(o, "D_final", u->D_final);
-  cJSON_AddNumberToObject(o, "W_ext_final", u->W_ext_final);
-  cJSON_AddNumberToObject(o, "W_coh_final", u->W_coh_final);
-  cJSON_AddNumberToObject(o, "KE_final", u->KE_final);
-  cJSON_AddNumberToObject(o, "SE_final", u->SE_final);
-  cJSON_AddNumberToObject(o, "energy_residual", u->energy_residual);
-  cJSON_AddNumberToObject(o, "delta_end", u->delta_end);
-  cJSON_AddNumberToObject(o, "steps", (double)u->steps);
-  cJSON_AddNumberToObject(o, "particles", (double)u->particles);
-  cJSON_AddNumberToObject(o, "n_soften", (double)u->n_soften);
-  cJSON_AddNumberToObject(o, "n_separate", (double)u->n_separate);
-  cJSON_AddNumberToObject(o, "n_bracketed", (double)u->n_bracketed);
-  cJSON_AddNumberToObject(o, "wall_s", u->wall_s);
-  cJSON_AddNumberToObject(o, "cpu_s", u->cpu_s);
-  cJSON_AddNumberToObject(o, "updates_per_s", u->updates_per_s);
-  char *txt = cJSON_Print(o);
-  cJSON_Delete(o);
-  if (!txt)
-    return -1;
-  char tmp[1100];
-  FILE *f = open_tmp(dir, "summary.json", tmp, sizeof tmp);
-  if (!f) {
-    free(txt);
-    return -1;
-  }
-  fputs(txt, f);
-  fputc('\n', f);
-  free(txt);
-  return commit_file(f, tmp);
-}
-
-/* Least-squares slope through the origin-free line of (delta, P) rows with P below
- * frac * peak, taken before the peak. */
+/* Elastic slope of the written rows (metrics.h, one definition). */
 static double fit_elastic(const row *r, long n, double peak, double delta_peak)
 {
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  long m = 0;
-  for (long i = 0; i < n && r[i].delta < delta_peak; i++) {
-    if (r[i].Pg > 0.6 * peak || r[i].Pg < 0.1 * peak)
-      continue;
-    sx += r[i].delta;
-    sy += r[i].Pg;
-    sxx += r[i].delta * r[i].delta;
-    sxy += r[i].delta * r[i].Pg;
-    m++;
-  }
-  if (m < 3)
+  double *d = malloc(2 * (size_t)(n + 1) * sizeof *d), k = NAN;
+  if (!d)
     return NAN;
-  return (m * sxy - sx * sy) / (m * sxx - sx * sx);
+  for (long i = 0; i < n; i++) {
+    d[i] = r[i].delta;
+    d[n + i] = r[i].Pg;
+  }
+  k = ver_elastic_slope(d, d + n, (size_t)n, peak, delta_peak, VER_ELASTIC_LO, VER_ELASTIC_HI);
+  free(d);
+  return k;
 }
 
 int ver_run(const ver_scene *vs, const ver_run_opts *o, ver_summary *u, char *err, size_t errlen)
@@ -291,7 +192,7 @@ int ver_run(const ver_scene *vs, const ver_run_opts *o, ver_summary *u, char *er
 
   long nrow = 0, acc_n = 0;
   double acc_g = 0.0, acc_f = 0.0, peak = 0.0, dpeak = 0.0;
-  const double w0 = now_wall(), c0 = now_cpu();
+  const double w0 = ver_now_wall(), c0 = ver_now_cpu();
   double next_show = w0 + 0.5;
   int rc = 0;
   err[0] = '\0';
@@ -371,16 +272,16 @@ int ver_run(const ver_scene *vs, const ver_run_opts *o, ver_summary *u, char *er
     if (u->delta_sep >= 0 && sc->stop_margin > 0 && delta >= u->delta_sep + sc->stop_margin &&
         delta >= last_snap)
       break;
-    if (show && (s->step & 255) == 0 && now_wall() > next_show) {
-      next_show = now_wall() + 0.5;
+    if (show && (s->step & 255) == 0 && ver_now_wall() > next_show) {
+      next_show = ver_now_wall() + 0.5;
       fprintf(stderr, "\r%s: delta %.4f / %.4f  step %ld  P %.3f  [%.1f s]   ", id, delta, sc->end_delta,
-              s->step, s->P_grip, now_wall() - w0);
+              s->step, s->P_grip, ver_now_wall() - w0);
     }
   }
   if (show)
     fprintf(stderr, "\r%*s\r", 90, "");
-  u->wall_s = now_wall() - w0;
-  u->cpu_s = now_cpu() - c0;
+  u->wall_s = ver_now_wall() - w0;
+  u->cpu_s = ver_now_cpu() - c0;
   u->steps = s->step;
   u->particles = s->p->n;
   u->updates_per_s = u->wall_s > 0 ? (double)s->p->n * (double)s->step / u->wall_s : 0;
@@ -407,7 +308,7 @@ int ver_run(const ver_scene *vs, const ver_run_opts *o, ver_summary *u, char *er
   u->complete = rc == 0;
   if (o->write_files) {
     if (write_rows(rows, nrow, o->outdir) != 0 || write_snapshot(s, o->outdir, "final") != 0 ||
-        write_summary(vs, u, o->outdir, err) != 0) {
+        ver_summary_write(o->outdir, vs, u, err) != 0) {
       if (!rc)
         snprintf(err, errlen, "%s: cannot write the results: %s", o->outdir, strerror(errno));
       rc = rc ? rc : 1;

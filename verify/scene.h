@@ -10,6 +10,7 @@
 
 #include <stddef.h>
 
+#include "ana.h"
 #include "mpm.h"
 
 #define VER_MAX_SNAP 16
@@ -45,5 +46,8 @@ int ver_scene_set(ver_scene *vs, const char *assignment, char *err, size_t errle
 int ver_scene_validate(ver_scene *vs, char *err, size_t errlen);
 /* Case id, e.g. "fig6-h4-ppc4". */
 void ver_scene_case_id(const ver_scene *vs, char *buf, size_t len);
+/* The closed-form bar of the scene (analytic/ana.h; alpha > 90 folded to 180 - alpha,
+ * the same line).  0, or 2 with the reason in err (scene_bar.c). */
+int ver_scene_bar(const mpm_scene *sc, ana_bar *bar, char *err, size_t len);
 
 #endif

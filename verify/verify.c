@@ -25,7 +25,9 @@
 #include <cjson/cJSON.h>
 
 #include "ana.h"
+#include "io.h"
 #include "run.h"
+#include "summary.h"
 #include "scene.h"
 #include "verify.h"
 
@@ -116,24 +118,6 @@ static int build_scene(const char *path, double h, int ppc, char sets[][128], in
   return ver_scene_validate(vs, err, len);
 }
 
-static int make_ana(const mpm_scene *sc, ana_bar *bar, char *err, size_t len)
-{
-  ana_params p;
-  /* the bar's response depends on the plane's line only: alpha and 180 - alpha agree */
-  p.alpha_deg = sc->alpha_deg > 90.0 ? 180.0 - sc->alpha_deg : sc->alpha_deg;
-  p.snf = sc->snf;
-  p.stf = sc->stf;
-  p.U0 = sc->U0;
-  p.s0 = sc->s0;
-  p.q = sc->q;
-  p.E = sc->E;
-  p.nu = sc->nu;
-  p.L = sc->L;
-  p.H = sc->H;
-  p.model = sc->model;
-  return ana_bar_init(&p, bar, err, (int)len) == ANA_OK ? 0 : 2;
-}
-
 static int is_a90(const vcase *c)
 {
   return fabs(c->vs.sc.alpha_deg - 90.0) < 1e-9;
@@ -163,7 +147,7 @@ static int case_init(vcase *c, const char *path, const char *scene, double h, in
     return 2;
   char aerr[256];
   double mult = 4.0, least = 1.0;
-  if (c->vs.sc.model > 0 && make_ana(&c->vs.sc, &c->ana, aerr, sizeof aerr) == 0) {
+  if (c->vs.sc.model > 0 && ver_scene_bar(&c->vs.sc, &c->ana, aerr, sizeof aerr) == 0) {
     c->have_ana = 1;
     if (!is_a90(c))
       least = 1.2;
@@ -277,13 +261,6 @@ static int make_cases(const ver_verify_opts *o, vcase **out, int *nout)
 
 /* ------------------------------------------------------------------ running */
 
-static double now_wall(void)
-{
-  struct timespec ts;
-  clock_gettime(CLOCK_MONOTONIC, &ts);
-  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
 static void case_dir(const ver_verify_opts *o, const vcase *c, char *buf, size_t len)
 {
   snprintf(buf, len, "%s/%s", o->outdir, c->id);
@@ -363,7 +340,7 @@ static int run_cases(const ver_verify_opts *o, vcase *cs, int n)
       }
       slot_pid[j] = pid;
       slot_case[j] = (int)(c - cs);
-      slot_t0[j] = now_wall();
+      slot_t0[j] = ver_now_wall();
       running++;
       started = 1;
     }
@@ -384,7 +361,7 @@ static int run_cases(const ver_verify_opts *o, vcase *cs, int n)
     if (j == o->jobs)
       continue;
     vcase *c = &cs[slot_case[j]];
-    c->wall_s = now_wall() - slot_t0[j];
+    c->wall_s = ver_now_wall() - slot_t0[j];
     if (WIFEXITED(status))
       c->exit_code = WEXITSTATUS(status);
     else if (WIFSIGNALED(status)) {
@@ -404,97 +381,10 @@ static int run_cases(const ver_verify_opts *o, vcase *cs, int n)
 
 /* ------------------------------------------------------------------ reading */
 
-static char *slurp(const char *path)
-{
-  FILE *f = fopen(path, "rb");
-  if (!f)
-    return NULL;
-  size_t cap = 1 << 16, len = 0;
-  char *buf = malloc(cap);
-  while (buf) {
-    const size_t r = fread(buf + len, 1, cap - len - 1, f);
-    len += r;
-    if (len + 1 < cap)
-      break;
-    char *nb = realloc(buf, cap *= 2);
-    if (!nb) {
-      free(buf);
-      buf = NULL;
-    } else
-      buf = nb;
-  }
-  fclose(f);
-  if (buf)
-    buf[len] = '\0';
-  return buf;
-}
-
-/* Reads a numeric CSV with a header line into ncol column arrays (allocated; free
- * cols[0] .. cols[ncol-1]).  Returns the number of rows, -1 if the file is missing. */
-static long read_csv(const char *path, int ncol, double **cols)
-{
-  char *txt = slurp(path);
-  if (!txt)
-    return -1;
-  size_t cap = 1024;
-  long n = 0;
-  int ok = 1;
-  for (int k = 0; k < ncol; k++)
-    ok &= (cols[k] = malloc(sizeof(double) * cap)) != NULL;
-  char *line = strchr(txt, '\n');
-  while (ok && line && *++line) {
-    char *next = strchr(line, '\n');
-    if (next)
-      *next = '\0';
-    if ((size_t)n == cap) {
-      cap *= 2;
-      for (int k = 0; k < ncol; k++) {
-        double *nc = realloc(cols[k], sizeof(double) * cap);
-        if (!nc)
-          ok = 0;
-        else
-          cols[k] = nc;
-      }
-      if (!ok)
-        break;
-    }
-    char *p = line, *end;
-    int k = 0;
-    for (; k < ncol; k++) {
-      cols[k][n] = strtod(p, &end);
-      if (end == p)
-        break;
-      p = end;
-      if (*p == ',')
-        p++;
-    }
-    if (k == ncol)
-      n++;
-    line = next;
-  }
-  free(txt);
-  return ok ? n : -1;
-}
-
-static double jnum(const cJSON *o, const char *key)
-{
-  const cJSON *v = cJSON_GetObjectItemCaseSensitive(o, key);
-  return cJSON_IsNumber(v) ? v->valuedouble : NAN;
-}
-
-static double ana_load_cb(const void *ctx, double delta)
-{
-  return ana_bar_load_at(ctx, delta);
-}
-
-/* Analytic end displacement where lambda reaches the separation threshold (eqs. 31,
- * 34): where the model is told to separate; delta_sep itself for a threshold of 1. */
+/* Analytic end displacement where lambda reaches the separation threshold. */
 static double sep_ref(const vcase *c)
 {
-  double d = c->ana.delta_sep, P;
-  if (c->vs.sc.sep_threshold < 1.0)
-    ana_bar_softening_point(&c->ana, 1.0 - pow(c->vs.sc.sep_threshold, c->ana.p.q), &d, &P);
-  return d;
+  return ver_sep_ref(&c->ana, c->vs.sc.sep_threshold);
 }
 
 /* Reads what the run left in DIR/<id>/ and measures from it. */
@@ -505,33 +395,29 @@ static void case_read(const ver_verify_opts *o, vcase *c)
   c->peak_P = c->delta_peak = c->delta_sep = c->k_elastic = NAN;
   c->D_final = c->W_ext_final = c->energy_residual = c->delta_end = NAN;
   c->k_soft = c->curve_l2 = c->band_width = c->band_extent = c->angle = c->D_diffuse = NAN;
-  snprintf(path, sizeof path, "%s/summary.json", dir);
-  char *txt = slurp(path);
-  cJSON *js = txt ? cJSON_Parse(txt) : NULL;
-  free(txt);
-  if (js) {
+  ver_summary_doc sd;
+  if (ver_summary_read(dir, &sd) == 0) {
+    const ver_summary *u = &sd.u;
     c->have_summary = 1;
-    c->complete = cJSON_IsTrue(cJSON_GetObjectItemCaseSensitive(js, "complete"));
-    const cJSON *e = cJSON_GetObjectItemCaseSensitive(js, "error");
-    if (cJSON_IsString(e) && !c->error[0])
-      snprintf(c->error, sizeof c->error, "%s", e->valuestring);
-    c->peak_P = jnum(js, "peak_P");
-    c->delta_peak = jnum(js, "delta_peak");
-    c->delta_sep = jnum(js, "delta_sep");
+    c->complete = u->complete;
+    if (sd.error[0] && !c->error[0])
+      snprintf(c->error, sizeof c->error, "%s", sd.error);
+    c->peak_P = u->peak_P;
+    c->delta_peak = u->delta_peak;
+    c->delta_sep = u->delta_sep;
     if (c->delta_sep < 0)
       c->delta_sep = NAN; /* -1: no separation detected before end_delta */
-    c->k_elastic = jnum(js, "k_elastic");
-    c->D_final = jnum(js, "D_final");
-    c->W_ext_final = jnum(js, "W_ext_final");
-    c->energy_residual = jnum(js, "energy_residual");
-    c->delta_end = jnum(js, "delta_end");
+    c->k_elastic = u->k_elastic;
+    c->D_final = u->D_final;
+    c->W_ext_final = u->W_ext_final;
+    c->energy_residual = u->energy_residual;
+    c->delta_end = u->delta_end;
     if (c->exit_code < 0)
-      c->wall_s = jnum(js, "wall_s");
-    cJSON_Delete(js);
+      c->wall_s = u->wall_s;
   }
   if (!c->error[0]) {
     snprintf(path, sizeof path, "%s/error.txt", dir);
-    char *et = slurp(path);
+    char *et = ver_io_slurp(path, NULL, 1 << 16);
     if (et) {
       char *nl = strchr(et, '\n');
       if (nl)
@@ -549,29 +435,30 @@ static void case_read(const ver_verify_opts *o, vcase *c)
   }
   if (c->term_sig && c->have_summary)
     c->complete = 0;
-  /* load.csv: t, delta, P_grip, P_fixed */
-  double *lc[4] = {0};
+  static const char *const lcols[] = {"delta", "P_grip"};
+  double *lc[2];
   snprintf(path, sizeof path, "%s/load.csv", dir);
-  const long nl = read_csv(path, 4, lc);
+  const long nl = ver_csv_read(path, lcols, 2, lc);
   if (nl > 0 && c->have_ana) {
-    c->k_soft = ver_softening_slope(lc[1], lc[2], (size_t)nl, 0.8, 0.2);
-    c->curve_l2 = ver_curve_l2(lc[1], lc[2], (size_t)nl, sep_ref(c), c->ana.Pmax, ana_load_cb, &c->ana);
+    c->k_soft = ver_softening_slope(lc[0], lc[1], (size_t)nl, VER_SOFT_HI, VER_SOFT_LO);
+    c->curve_l2 = ver_curve_err_bar(&c->ana, lc[0], lc[1], (size_t)nl, ver_curve_end(&c->ana, c->vs.sc.sep_threshold), NULL);
   }
-  for (int k = 0; k < 4; k++)
+  for (int k = 0; k < 2; k++)
     free(lc[k]);
-  /* final.csv: x0,y0,x,y,ux,uy,lambda,... (14 columns) */
-  double *fc[14] = {0};
+  static const char *const fcols[] = {"x0", "y0", "lambda"};
+  double *fc[3];
   snprintf(path, sizeof path, "%s/final.csv", dir);
-  const long nf = read_csv(path, 14, fc);
+  const long nf = ver_csv_read(path, fcols, 3, fc);
   if (nf > 0) {
     const mpm_scene *sc = &c->vs.sc;
-    c->band_width = ver_band_width(fc[0], fc[1], fc[6], (size_t)nf, 0.5, sc->alpha_deg, sc->h, sc->ppc, sc->H,
+    const double thr = VER_BAND_LAMBDA;
+    c->band_width = ver_band_width(fc[0], fc[1], fc[2], (size_t)nf, thr, sc->alpha_deg, sc->h, sc->ppc, sc->H,
                                    &c->band_extent, &c->band_count);
-    c->angle = ver_crack_angle(fc[0], fc[1], fc[6], (size_t)nf, 0.5);
+    c->angle = ver_crack_angle(fc[0], fc[1], fc[2], (size_t)nf, thr);
     if (c->have_ana && c->ana.D_sep > 0.0)
-      c->D_diffuse = ver_diffuse_share(fc[6], (size_t)nf, 0.5) * c->D_final / c->ana.D_sep;
+      c->D_diffuse = ver_diffuse_share(fc[2], (size_t)nf, thr) * c->D_final / c->ana.D_sep;
   }
-  for (int k = 0; k < 14; k++)
+  for (int k = 0; k < 3; k++)
     free(fc[k]);
 }
 
@@ -729,8 +616,8 @@ static void check_policy(vcase *c)
   k->tol = ppc1 ? 0.04 : 0.03;
   if (!a90 || lep || snap)
     known(k, 0.0, 0.35);
-  snprintf(k->note, sizeof k->note, "RMS of P - P_ana(delta) / Pmax over rows up to lambda = %g (delta %.4g)",
-           sc->sep_threshold, dref);
+  snprintf(k->note, sizeof k->note, "RMS of P - P_ana(delta) / Pmax over rows up to lambda = %g or the peak "
+           "(delta %.4g)", sc->sep_threshold, ver_curve_end(a, sc->sep_threshold));
 
   /* the angle of a line is defined mod 180: judge the wrapped difference */
   for (int i = 0; i < c->nchk; i++) {
@@ -826,7 +713,7 @@ static int cross_checks(vcase *cs, int n, vcross *x)
     k->lim_hi = INFINITY;
     if (!strcmp(g->name, "order_h")) {
       k->name = "order_h";
-      k->measured = ver_conv_order(g->x, g->y, (size_t)g->n);
+      k->measured = ver_conv_order(g->x, g->y, (size_t)g->n, NULL);
       k->reference = 0.0;
       k->tol = 0.0;
       snprintf(k->note, sizeof k->note, "observed order p of curve_l2 ~ h^p (ppc %g); one-sided: pass if p >= 0",
@@ -901,19 +788,9 @@ static cJSON *check_json(const ver_check *k)
 
 static int write_text(const char *dir, const char *name, const char *text)
 {
-  char tmp[900], fin[900];
-  snprintf(tmp, sizeof tmp, "%s/%s.tmp", dir, name);
-  snprintf(fin, sizeof fin, "%s/%s", dir, name);
-  FILE *f = fopen(tmp, "w");
-  if (!f)
-    return -1;
-  fputs(text, f);
-  const int bad = ferror(f);
-  if (fclose(f) != 0 || bad) {
-    remove(tmp);
-    return -1;
-  }
-  return rename(tmp, fin);
+  char path[1200];
+  snprintf(path, sizeof path, "%s/%s", dir, name);
+  return ver_io_write_atomic(path, text);
 }
 
 static int write_json(const ver_verify_opts *o, const vcase *cs, int n, const vcross *x, int nx, double wall,
@@ -1164,7 +1041,7 @@ int ver_verify(const ver_verify_opts *o)
     free(cs);
     return 2;
   }
-  const double w0 = now_wall();
+  const double w0 = ver_now_wall();
   if (!o->merge) {
     fprintf(stderr, "verify: %d cases, %d at a time, into %s/\n", n, o->jobs, o->outdir);
     if (run_cases(o, cs, n)) {
@@ -1193,7 +1070,7 @@ int ver_verify(const ver_verify_opts *o)
     if (x[i].chk.verdict == VER_FAIL)
       rc = 1;
   print_table(cs, n, x, nx);
-  const double wall = now_wall() - w0;
+  const double wall = ver_now_wall() - w0;
   if (write_json(o, cs, n, x, nx, wall, rc) || write_csv(o, cs, n)) {
     fprintf(stderr, "delam verify: %s: cannot write verify.json / verify.csv: %s\n", o->outdir, strerror(errno));
     rc = rc ? rc : 2;

@@ -1,5 +1,5 @@
 /*
- * test_ver_checks.c - the measuring helpers of `delam verify` (verify_checks.c) on
+ * test_ver_metrics.c - the measured quantities of verify/ (metrics.c, check.c) on
  * synthetic data whose answers are known by construction: exact lines, a made-up
  * load-deflection curve with a known softening slope, particle bands of known width
  * and angle, errors C h^p of known order.  Every degenerate input is hit on purpose.
@@ -15,7 +15,8 @@
 
 #include <cmocka.h>
 
-#include "verify.h"
+#include "check.h"
+#include "metrics.h"
 
 #define PI 3.14159265358979323846
 
@@ -26,7 +27,7 @@ static void assert_rel(double got, double want, double tol, const char *what)
     fail_msg("%s: got %.10g, want %.10g (rel err %.3g > %.3g)", what, got, want, err, tol);
 }
 
-static void test_ver_checks_fit_line_exact(void **state)
+static void test_ver_metrics_fit_line_exact(void **state)
 {
   (void)state;
   double x[5], y[5], s, b;
@@ -46,7 +47,7 @@ static void test_ver_checks_fit_line_exact(void **state)
 /* A bar curve: elastic slope 170.67 to P = 32 at delta 0.1875, then linear softening
  * with slope -170.67 to zero, then zero.  The fit over 0.8-0.2 of the peak must give
  * the softening slope exactly, ignoring the elastic rows and the zero tail. */
-static void test_ver_checks_softening_slope_bar(void **state)
+static void test_ver_metrics_softening_slope_bar(void **state)
 {
   (void)state;
   enum { N = 600 };
@@ -70,7 +71,7 @@ static void test_ver_checks_softening_slope_bar(void **state)
 
 /* A grid of particles on [0,192]x[0,32], h = 4, ppc = 4 (offsets h/4, 3h/4); the band
  * is the cells with x in [96, 100) (alpha 90): width 1 cell, extent 1 cell. */
-static void test_ver_checks_band_width_vertical(void **state)
+static void test_ver_metrics_band_width_vertical(void **state)
 {
   (void)state;
   const double h = 4;
@@ -107,7 +108,7 @@ static void test_ver_checks_band_width_vertical(void **state)
 
 /* The band: 2 particles at lambda 1.2 (counted as 1) and 0.8; the rest: 10 at 0.02 and
  * 5 at 0: outside the band 0.2 of 2.0 in all, a share of 0.1. */
-static void test_ver_checks_diffuse_share(void **state)
+static void test_ver_metrics_diffuse_share(void **state)
 {
   (void)state;
   double l[17] = {1.2, 0.8};
@@ -123,7 +124,7 @@ static void test_ver_checks_diffuse_share(void **state)
 
 /* Particles on a fine lattice, decohered within a strip of width w about a line
  * at 60 deg through (96, 16): the band's mean width is w / h cells, its angle 60. */
-static void test_ver_checks_band_inclined(void **state)
+static void test_ver_metrics_band_inclined(void **state)
 {
   (void)state;
   const double h = 2, a = 60 * PI / 180, nx = sin(a), ny = -cos(a), w = 4.0;
@@ -157,7 +158,7 @@ static void test_ver_checks_band_inclined(void **state)
   free(x), free(y), free(l);
 }
 
-static void test_ver_checks_angle_diff_wraps(void **state)
+static void test_ver_metrics_angle_diff_wraps(void **state)
 {
   (void)state;
   assert_rel(ver_angle_diff(179, 1), -2.0, 1e-12, "179 vs 1");
@@ -166,23 +167,23 @@ static void test_ver_checks_angle_diff_wraps(void **state)
   assert_rel(ver_angle_diff(0, 90), 90.0, 1e-12, "perpendicular: +90");
 }
 
-static void test_ver_checks_conv_order(void **state)
+static void test_ver_metrics_conv_order(void **state)
 {
   (void)state;
   const double h[4] = {8, 4, 2, 1};
   double e[4];
   for (int i = 0; i < 4; i++)
     e[i] = 0.03 * pow(h[i] / 8, 1.5);
-  assert_rel(ver_conv_order(h, e, 4), 1.5, 1e-12, "order 1.5");
-  assert_rel(ver_conv_order(h, e, 2), 1.5, 1e-12, "order from two points");
-  assert_true(isnan(ver_conv_order(h, e, 1)));
+  assert_rel(ver_conv_order(h, e, 4, NULL), 1.5, 1e-12, "order 1.5");
+  assert_rel(ver_conv_order(h, e, 2, NULL), 1.5, 1e-12, "order from two points");
+  assert_true(isnan(ver_conv_order(h, e, 1, NULL)));
   e[2] = 0.0;
-  assert_true(isnan(ver_conv_order(h, e, 4)));
+  assert_true(isnan(ver_conv_order(h, e, 4, NULL)));
   const double hh[3] = {4, 4, 4}, ee[3] = {1, 2, 3};
-  assert_true(isnan(ver_conv_order(hh, ee, 3)));
+  assert_true(isnan(ver_conv_order(hh, ee, 3, NULL)));
 }
 
-static void test_ver_checks_spread(void **state)
+static void test_ver_metrics_spread(void **state)
 {
   (void)state;
   const double v[3] = {12.0, 12.3, 11.7};
@@ -199,7 +200,7 @@ static double line_ref(const void *ctx, double d)
 
 /* Rows that are the reference shifted by a constant c give RMS |c| / scale; rows past
  * delta_end are ignored; comparison is at each interval's midpoint. */
-static void test_ver_checks_curve_l2(void **state)
+static void test_ver_metrics_curve_l2(void **state)
 {
   (void)state;
   enum { N = 100 };
@@ -210,11 +211,11 @@ static void test_ver_checks_curve_l2(void **state)
     P[i] = k * (d[i] - 0.005) + 0.5; /* interval average of k delta, plus 0.5 */
   }
   P[N - 1] = 1e6; /* beyond delta_end */
-  assert_rel(ver_curve_l2(d, P, N, 0.995, 10.0, line_ref, &k), 0.05, 1e-9, "constant offset");
-  assert_true(isnan(ver_curve_l2(d, P, N, 0.0, 10.0, line_ref, &k)));
+  assert_rel(ver_curve_l2(d, P, N, 0.995, 10.0, line_ref, &k, NULL), 0.05, 1e-9, "constant offset");
+  assert_true(isnan(ver_curve_l2(d, P, N, 0.0, 10.0, line_ref, &k, NULL)));
 }
 
-static void test_ver_checks_judge(void **state)
+static void test_ver_metrics_judge(void **state)
 {
   (void)state;
   ver_check c;
@@ -252,19 +253,126 @@ static void test_ver_checks_judge(void **state)
   assert_string_equal(ver_verdict_name(VER_FAIL), "fail");
 }
 
+/* Hand-computed: points (0, 1), (1, 3), (2, 4): mean x 1, mean y 8/3, sxx 2, sxy 3,
+ * slope 3/2, intercept 8/3 - 3/2 = 7/6. */
+static void test_ver_metrics_fit_line_by_hand(void **state)
+{
+  (void)state;
+  const double x[3] = {0, 1, 2}, y[3] = {1, 3, 4};
+  double s, b;
+  assert_int_equal(ver_fit_line(x, y, 3, &s, &b), 0);
+  assert_rel(s, 1.5, 1e-14, "slope 3/2");
+  assert_rel(b, 7.0 / 6.0, 1e-14, "intercept 7/6");
+}
+
+/* Elastic slope: rows (delta, P) = (0.05, 5), (0.1, 10), (0.2, 21), (0.3, 30), (0.4, 50)
+ * with peak 50 at 0.4: the band 0.1 .. 0.6 of the peak (5 .. 30) keeps the first four;
+ * their line: mean x 0.1625, mean y 16.5, sxx 0.036875, sxy 3.725 -> 101.0169...
+ * (3.725 / 0.036875). */
+static void test_ver_metrics_elastic_slope_by_hand(void **state)
+{
+  (void)state;
+  const double d[5] = {0.05, 0.1, 0.2, 0.3, 0.4}, P[5] = {5, 10, 21, 30, 50};
+  assert_rel(ver_elastic_slope(d, P, 5, 50, 0.4, VER_ELASTIC_LO, VER_ELASTIC_HI), 3.725 / 0.036875, 1e-12,
+             "elastic slope");
+  /* fewer than 3 rows in the band */
+  assert_true(isnan(ver_elastic_slope(d, P, 5, 50, 0.15, VER_ELASTIC_LO, VER_ELASTIC_HI)));
+}
+
+/* Softening slope: peak 32 at delta 0.2, then P = 32 - 171 (delta - 0.2) sampled every
+ * 0.02: the 0.8 .. 0.2 band (25.6 .. 6.4) holds only exact points of that line, so the
+ * slope is -171 (the paper's Fig. 6 number). */
+static void test_ver_metrics_softening_paper_line(void **state)
+{
+  (void)state;
+  double d[40], P[40];
+  int n = 0;
+  for (int i = 0; i <= 10; i++, n++) {
+    d[n] = 0.02 * i;
+    P[n] = 160.0 * d[n];
+  }
+  for (int i = 1; n < 40; i++, n++) {
+    d[n] = 0.2 + 0.02 * i;
+    P[n] = fmax(0.0, 32.0 - 171.0 * (d[n] - 0.2));
+  }
+  assert_rel(ver_softening_slope(d, P, (size_t)n, VER_SOFT_HI, VER_SOFT_LO), -171.0, 1e-9, "softening -171");
+  /* the drop: P < 0.9 * 32 = 28.8 first at delta 0.22 (P 28.58), P < 3.2 first at
+   * delta 0.38 (P 1.22): width 0.16 */
+  assert_rel(ver_drop_width(d, P, (size_t)n), 0.16, 1e-9, "drop width");
+}
+
+/* Curve error by hand: rows at delta 0.1, 0.2, 0.3 (intervals from 0), P = 1, 2, 2
+ * against ref(delta) = 10 delta at the midpoints 0.05, 0.15, 0.25: differences 0.5,
+ * 0.5, -0.5; RMS 0.5, largest 0.5; scale 2 -> 0.25, 0.25. */
+static double ten_delta(const void *ctx, double delta)
+{
+  (void)ctx;
+  return 10.0 * delta;
+}
+
+static void test_ver_metrics_curve_by_hand(void **state)
+{
+  (void)state;
+  const double d[3] = {0.1, 0.2, 0.3}, P[3] = {1, 2, 2};
+  double mx;
+  assert_rel(ver_curve_l2(d, P, 3, 0.3, 2.0, ten_delta, NULL, &mx), 0.25, 1e-12, "RMS / scale");
+  assert_rel(mx, 0.25, 1e-12, "max dev / scale");
+  /* only the first two rows: delta_end 0.2 */
+  assert_rel(ver_curve_l2(d, P, 3, 0.2, 1.0, ten_delta, NULL, NULL), 0.5, 1e-12, "two rows");
+}
+
+/* Order with its constant: e = 0.01 h^2 at h = 8, 4, 2 -> p 2, log C = log 0.01. */
+static void test_ver_metrics_order_constant(void **state)
+{
+  (void)state;
+  const double h[3] = {8, 4, 2}, e[3] = {0.64, 0.16, 0.04};
+  double c;
+  assert_rel(ver_conv_order(h, e, 3, &c), 2.0, 1e-12, "order 2");
+  assert_rel(c, log(0.01), 1e-12, "log C");
+}
+
+/* The separation reference at threshold 1 is the analytic delta_sep (fig6: 0.375). */
+static void test_ver_metrics_sep_ref(void **state)
+{
+  (void)state;
+  ana_params p;
+  ana_params_default(&p);
+  ana_bar b;
+  assert_int_equal(ana_bar_init(&p, &b, NULL, 0), ANA_OK);
+  assert_rel(ver_sep_ref(&b, 1.0), b.delta_sep, 0, "threshold 1");
+  assert_true(ver_sep_ref(&b, 0.8) < b.delta_sep);
+  assert_rel(ver_curve_end(&b, 1.0), b.delta_sep, 0, "no snapback: the window ends at separation");
+  /* Fig. 8's bar (Mode II at 60 deg, g = 0.446 < 1): snapback, lambda = 1 before the peak */
+  p.alpha_deg = 60;
+  p.snf = p.s0 = 10; /* data/scenes/fig8.ini: snf = s0 = 10, stf = 1, Model 1 */
+  p.stf = 1;
+  p.model = 1;
+  assert_int_equal(ana_bar_init(&p, &b, NULL, 0), ANA_OK);
+  assert_rel(b.g, 0.446, 2e-3, "fig8 g by eq. 35");
+  assert_true(b.snapback);
+  assert_true(ver_sep_ref(&b, 1.0) < b.delta_peak);
+  assert_rel(ver_curve_end(&b, 1.0), b.delta_peak, 0, "snapback: the window ends at the peak");
+}
+
 int main(void)
 {
   const struct CMUnitTest tests[] = {
-    cmocka_unit_test(test_ver_checks_fit_line_exact),
-    cmocka_unit_test(test_ver_checks_softening_slope_bar),
-    cmocka_unit_test(test_ver_checks_band_width_vertical),
-    cmocka_unit_test(test_ver_checks_band_inclined),
-    cmocka_unit_test(test_ver_checks_diffuse_share),
-    cmocka_unit_test(test_ver_checks_angle_diff_wraps),
-    cmocka_unit_test(test_ver_checks_conv_order),
-    cmocka_unit_test(test_ver_checks_spread),
-    cmocka_unit_test(test_ver_checks_curve_l2),
-    cmocka_unit_test(test_ver_checks_judge),
+    cmocka_unit_test(test_ver_metrics_fit_line_exact),
+    cmocka_unit_test(test_ver_metrics_softening_slope_bar),
+    cmocka_unit_test(test_ver_metrics_band_width_vertical),
+    cmocka_unit_test(test_ver_metrics_band_inclined),
+    cmocka_unit_test(test_ver_metrics_diffuse_share),
+    cmocka_unit_test(test_ver_metrics_angle_diff_wraps),
+    cmocka_unit_test(test_ver_metrics_conv_order),
+    cmocka_unit_test(test_ver_metrics_spread),
+    cmocka_unit_test(test_ver_metrics_curve_l2),
+    cmocka_unit_test(test_ver_metrics_judge),
+    cmocka_unit_test(test_ver_metrics_fit_line_by_hand),
+    cmocka_unit_test(test_ver_metrics_elastic_slope_by_hand),
+    cmocka_unit_test(test_ver_metrics_softening_paper_line),
+    cmocka_unit_test(test_ver_metrics_curve_by_hand),
+    cmocka_unit_test(test_ver_metrics_order_constant),
+    cmocka_unit_test(test_ver_metrics_sep_ref),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -1,0 +1,268 @@
+/*
+ * metrics.c - the measured quantities of verify/ (metrics.h), each defined once.
+ */
+#include <math.h>
+#include <stddef.h>
+#include <stdlib.h>
+
+#include <gsl/gsl_fit.h>
+
+#include "metrics.h"
+
+#define PI 3.14159265358979323846
+
+int ver_fit_line(const double *x, const double *y, size_t n, double *slope, double *icpt)
+{
+  if (n < 2)
+    return -1;
+  double sxx = 0, mx = 0;
+  for (size_t i = 0; i < n; i++)
+    mx += x[i];
+  mx /= (double)n;
+  for (size_t i = 0; i < n; i++)
+    sxx += (x[i] - mx) * (x[i] - mx);
+  if (!(sxx > 0))
+    return -1;
+  double c0, c1, cov00, cov01, cov11, sumsq;
+  gsl_fit_linear(x, 1, y, 1, n, &c0, &c1, &cov00, &cov01, &cov11, &sumsq);
+  *slope = c1;
+  if (icpt)
+    *icpt = c0;
+  return 0;
+}
+
+/* Fits the rows idx[0..m-1]; NaN if fewer than 3. */
+static double fit_rows(const double *x, const double *y, const size_t *idx, size_t m)
+{
+  if (m < 3)
+    return NAN;
+  double *bx = malloc(2 * m * sizeof *bx), s = NAN;
+  if (!bx)
+    return NAN;
+  for (size_t i = 0; i < m; i++) {
+    bx[i] = x[idx[i]];
+    bx[m + i] = y[idx[i]];
+  }
+  if (ver_fit_line(bx, bx + m, m, &s, NULL) != 0)
+    s = NAN;
+  free(bx);
+  return s;
+}
+
+double ver_elastic_slope(const double *delta, const double *P, size_t n, double peak, double delta_peak,
+                         double lo, double hi)
+{
+  size_t *idx = malloc((n + 1) * sizeof *idx), m = 0;
+  if (!idx)
+    return NAN;
+  for (size_t i = 0; i < n && delta[i] < delta_peak; i++)
+    if (P[i] <= hi * peak && P[i] >= lo * peak)
+      idx[m++] = i;
+  const double s = fit_rows(delta, P, idx, m);
+  free(idx);
+  return s;
+}
+
+/* Index of the first largest P; n if none is positive. */
+static size_t peak_index(const double *P, size_t n)
+{
+  size_t ipk = 0;
+  for (size_t i = 1; i < n; i++)
+    if (P[i] > P[ipk])
+      ipk = i;
+  return n > 0 && P[ipk] > 0 ? ipk : n;
+}
+
+double ver_softening_slope(const double *delta, const double *P, size_t n, double hi_frac, double lo_frac)
+{
+  const size_t ipk = peak_index(P, n);
+  if (ipk == n)
+    return NAN;
+  const double peak = P[ipk];
+  size_t *idx = malloc((n + 1) * sizeof *idx), m = 0;
+  if (!idx)
+    return NAN;
+  for (size_t i = ipk + 1; i < n; i++) {
+    if (P[i] < lo_frac * peak)
+      break;
+    if (P[i] <= hi_frac * peak)
+      idx[m++] = i;
+  }
+  const double s = fit_rows(delta, P, idx, m);
+  free(idx);
+  return s;
+}
+
+double ver_drop_width(const double *delta, const double *P, size_t n)
+{
+  const size_t ipk = peak_index(P, n);
+  if (ipk == n)
+    return NAN;
+  double d90 = NAN;
+  for (size_t i = ipk; i < n; i++) {
+    if (isnan(d90) && P[i] < 0.9 * P[ipk])
+      d90 = delta[i];
+    if (P[i] < 0.1 * P[ipk])
+      return delta[i] - d90;
+  }
+  return NAN;
+}
+
+double ver_band_width(const double *x0, const double *y0, const double *lam, size_t n, double thr,
+                      double alpha_deg, double h, int ppc, double H, double *extent, size_t *count)
+{
+  const double a = alpha_deg * PI / 180.0, nx = sin(a), ny = -cos(a);
+  double lo = INFINITY, hi = -INFINITY;
+  size_t c = 0;
+  for (size_t i = 0; i < n; i++) {
+    if (!(lam[i] > thr))
+      continue;
+    const double s = x0[i] * nx + y0[i] * ny;
+    lo = fmin(lo, s);
+    hi = fmax(hi, s);
+    c++;
+  }
+  if (count)
+    *count = c;
+  if (c == 0) {
+    if (extent)
+      *extent = 0;
+    return 0;
+  }
+  if (extent)
+    *extent = (hi - lo) / h + 1.0 / sqrt((double)ppc);
+  const double area = (double)c * h * h / (double)ppc, len = H / fabs(sin(a));
+  return area / (len * h);
+}
+
+double ver_diffuse_share(const double *lam, size_t n, double thr)
+{
+  double out = 0.0, all = 0.0;
+  for (size_t i = 0; i < n; i++) {
+    const double l = fmin(fmax(lam[i], 0.0), 1.0);
+    all += l;
+    if (!(lam[i] > thr))
+      out += l;
+  }
+  return all > 0.0 ? out / all : 0.0;
+}
+
+double ver_crack_angle(const double *x0, const double *y0, const double *lam, size_t n, double thr)
+{
+  double mx = 0, my = 0;
+  size_t c = 0;
+  for (size_t i = 0; i < n; i++)
+    if (lam[i] > thr) {
+      mx += x0[i];
+      my += y0[i];
+      c++;
+    }
+  if (c < 2)
+    return NAN;
+  mx /= (double)c;
+  my /= (double)c;
+  double sxx = 0, syy = 0, sxy = 0;
+  for (size_t i = 0; i < n; i++)
+    if (lam[i] > thr) {
+      const double dx = x0[i] - mx, dy = y0[i] - my;
+      sxx += dx * dx;
+      syy += dy * dy;
+      sxy += dx * dy;
+    }
+  /* principal axis of the scatter matrix: tan 2 theta = 2 sxy / (sxx - syy) */
+  if (sxy == 0.0 && sxx == syy)
+    return NAN;
+  double th = 0.5 * atan2(2.0 * sxy, sxx - syy) * 180.0 / PI;
+  if (th < 0)
+    th += 180.0;
+  if (th >= 180.0)
+    th -= 180.0;
+  return th;
+}
+
+double ver_angle_diff(double a_deg, double b_deg)
+{
+  double d = fmod(a_deg - b_deg, 180.0);
+  if (d <= -90.0)
+    d += 180.0;
+  else if (d > 90.0)
+    d -= 180.0;
+  return d;
+}
+
+double ver_spread(const double *v, size_t n)
+{
+  if (n == 0)
+    return NAN;
+  double lo = v[0], hi = v[0], s = 0;
+  for (size_t i = 0; i < n; i++) {
+    lo = fmin(lo, v[i]);
+    hi = fmax(hi, v[i]);
+    s += v[i];
+  }
+  const double mean = s / (double)n;
+  return mean != 0.0 ? (hi - lo) / fabs(mean) : NAN;
+}
+
+double ver_conv_order(const double *h, const double *e, size_t n, double *logc)
+{
+  double lx[64], ly[64], p, c;
+  if (logc)
+    *logc = NAN;
+  if (n < 2 || n > 64)
+    return NAN;
+  for (size_t i = 0; i < n; i++) {
+    if (!(h[i] > 0) || !(e[i] > 0) || !isfinite(e[i]))
+      return NAN;
+    lx[i] = log(h[i]);
+    ly[i] = log(e[i]);
+  }
+  if (ver_fit_line(lx, ly, n, &p, &c) != 0)
+    return NAN;
+  if (logc)
+    *logc = c;
+  return p;
+}
+
+double ver_curve_l2(const double *delta, const double *P, size_t n, double delta_end, double scale,
+                    double (*ref)(const void *ctx, double delta), const void *ctx, double *maxdev)
+{
+  double s = 0, mx = 0;
+  size_t m = 0;
+  for (size_t i = 0; i < n; i++) {
+    if (!(delta[i] > 0) || delta[i] > delta_end)
+      continue;
+    const double prev = i > 0 ? delta[i - 1] : 0.0, mid = 0.5 * (prev + delta[i]);
+    const double d = P[i] - ref(ctx, mid);
+    s += d * d;
+    mx = fmax(mx, fabs(d));
+    m++;
+  }
+  if (maxdev)
+    *maxdev = m ? mx / scale : NAN;
+  return m ? sqrt(s / (double)m) / scale : NAN;
+}
+
+static double bar_load(const void *ctx, double delta)
+{
+  return ana_bar_load_at(ctx, delta);
+}
+
+double ver_curve_err_bar(const ana_bar *b, const double *delta, const double *P, size_t n, double delta_end,
+                         double *maxdev)
+{
+  return ver_curve_l2(delta, P, n, delta_end, b->Pmax, bar_load, b, maxdev);
+}
+
+double ver_sep_ref(const ana_bar *b, double thr)
+{
+  double d = b->delta_sep, P;
+  if (thr < 1.0)
+    ana_bar_softening_point(b, 1.0 - pow(thr, b->p.q), &d, &P);
+  return d;
+}
+
+double ver_curve_end(const ana_bar *b, double thr)
+{
+  return fmax(ver_sep_ref(b, thr), b->delta_peak);
+}

@@ -1,0 +1,93 @@
+/*
+ * metrics.h - every quantity verify/ measures from a run, defined once (prefix ver_):
+ * `delam verify`, `delam report` and `delam bench` all call these, so the same case
+ * gives the same number wherever it is printed.  Pure functions on arrays: no I/O,
+ * no state; tests/test_ver_metrics.c drives them with hand-computed data.
+ *
+ * Line fits go through GSL (gsl_fit_linear).
+ */
+#ifndef DELAM_VER_METRICS_H
+#define DELAM_VER_METRICS_H
+
+#include <stddef.h>
+
+#include "ana.h"
+
+/* The fraction bands of the fits (one definition, see metrics.c). */
+#define VER_ELASTIC_LO 0.1   /* elastic slope: rows with 0.1 .. 0.6 of the peak, before it */
+#define VER_ELASTIC_HI 0.6
+#define VER_SOFT_HI 0.8      /* softening slope: 0.8 .. 0.2 of the peak, after it */
+#define VER_SOFT_LO 0.2
+#define VER_BAND_LAMBDA 0.5  /* a particle belongs to the failed band past this lambda */
+
+/* Least-squares line y = slope x + icpt (gsl_fit_linear); 0, or -1 if n < 2 or all x
+ * are equal.  icpt may be NULL. */
+int ver_fit_line(const double *x, const double *y, size_t n, double *slope, double *icpt);
+
+/* Elastic slope dP/ddelta: least-squares line through the rows before delta_peak with
+ * lo * peak <= P <= hi * peak.  NaN if fewer than 3 rows qualify. */
+double ver_elastic_slope(const double *delta, const double *P, size_t n, double peak, double delta_peak,
+                         double lo, double hi);
+
+/* Softening slope dP/ddelta: least-squares line through the rows after the (first)
+ * largest P whose P lies in [lo_frac, hi_frac] * peak, up to the first row below
+ * lo_frac * peak.  NaN if fewer than 3 rows qualify. */
+double ver_softening_slope(const double *delta, const double *P, size_t n, double hi_frac, double lo_frac);
+
+/* Width in delta of the load drop: from the first row after the (first) largest P
+ * below 0.9 of it to the first row below 0.1 of it.  NaN if the load never falls
+ * below 0.1 of its peak. */
+double ver_drop_width(const double *delta, const double *P, size_t n);
+
+/* Band of particles with lambda > thr (reference positions x0, y0).  Returns its mean
+ * width in cells: band area / (crack length * h), band area = count * h^2 / ppc,
+ * crack length = H / sin(alpha) (the failure plane across a bar of height H).
+ * *extent (if not NULL) gets the projected width in cells: (max - min of x0 . n) / h
+ * + 1 / sqrt(ppc), n = (sin a, -cos a) (one cell's worth of particles counts as 1).
+ * *count gets the number of particles in the band.  0 if no particle is past thr. */
+double ver_band_width(const double *x0, const double *y0, const double *lam, size_t n, double thr,
+                      double alpha_deg, double h, int ppc, double H, double *extent, size_t *count);
+
+/* Angle in [0, 180) deg from the x-axis of the principal axis (total least squares
+ * line) through the points with lambda > thr.  NaN if fewer than 2 points or if the
+ * points have no preferred direction. */
+double ver_crack_angle(const double *x0, const double *y0, const double *lam, size_t n, double thr);
+
+/* Share of the dissipation that lies outside the band: sum of min(lambda, 1) over the
+ * particles with lambda <= thr, over the sum for all (particles of equal V and Le, as in
+ * every scene).  0 if nothing decohered. */
+double ver_diffuse_share(const double *lam, size_t n, double thr);
+
+/* a - b for angles of lines (mod 180), in (-90, 90]. */
+double ver_angle_diff(double a_deg, double b_deg);
+
+/* Observed order p of e = C h^p: least-squares slope of log e against log h; *logc
+ * (if not NULL) gets log C.  NaN if fewer than 2 distinct h or any e <= 0. */
+double ver_conv_order(const double *h, const double *e, size_t n, double *logc);
+
+/* (max - min) / mean; NaN if n == 0 or the mean is 0. */
+double ver_spread(const double *v, size_t n);
+
+/* The load-curve error: root-mean-square of P_i - ref(delta_i) over rows with
+ * 0 < delta_i <= delta_end, divided by scale.  Each row's P is the average over the
+ * interval that ends at delta_i, so it is compared at the interval's midpoint.
+ * *maxdev (if not NULL) gets the largest |P_i - ref| / scale over the same rows.
+ * NaN if no row qualifies. */
+double ver_curve_l2(const double *delta, const double *P, size_t n, double delta_end, double scale,
+                    double (*ref)(const void *ctx, double delta), const void *ctx, double *maxdev);
+
+/* The same against the analytic bar's load (ana_bar_load_at), to delta_end. */
+double ver_curve_err_bar(const ana_bar *b, const double *delta, const double *P, size_t n, double delta_end,
+                         double *maxdev);
+
+/* Where the curve error stops: the analytic end displacement at which lambda reaches the
+ * separation threshold thr (eqs. 31, 34) - where the model is told to separate;
+ * delta_sep itself for a threshold of 1. */
+double ver_sep_ref(const ana_bar *b, double thr);
+
+/* The end of the curve-error window: ver_sep_ref, or the analytic peak where that comes
+ * first (a snapback bar, g below its limit, reaches lambda = 1 at a smaller delta than
+ * its peak: the window then still holds the whole rising branch). */
+double ver_curve_end(const ana_bar *b, double thr);
+
+#endif

@@ -1,0 +1,148 @@
+/*
+ * summary.c - summary.json written and read by the same table of fields (summary.h).
+ */
+#include <math.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <cjson/cJSON.h>
+
+#include "io.h"
+#include "summary.h"
+
+/* The numbers of ver_summary, by their JSON name. */
+enum { F_DBL, F_LONG, F_SIZE };
+static const struct {
+  const char *key;
+  size_t off;
+  int kind;
+} NUMS[] = {
+  {"peak_P", offsetof(ver_summary, peak_P), F_DBL},
+  {"delta_peak", offsetof(ver_summary, delta_peak), F_DBL},
+  {"delta_sep", offsetof(ver_summary, delta_sep), F_DBL},
+  {"delta_sep_cut", offsetof(ver_summary, delta_sep_cut), F_DBL},
+  {"delta_sep_load", offsetof(ver_summary, delta_sep_load), F_DBL},
+  {"k_elastic", offsetof(ver_summary, k_elastic), F_DBL},
+  {"D_final", offsetof(ver_summary, D_final), F_DBL},
+  {"W_ext_final", offsetof(ver_summary, W_ext_final), F_DBL},
+  {"W_coh_final", offsetof(ver_summary, W_coh_final), F_DBL},
+  {"KE_final", offsetof(ver_summary, KE_final), F_DBL},
+  {"SE_final", offsetof(ver_summary, SE_final), F_DBL},
+  {"energy_residual", offsetof(ver_summary, energy_residual), F_DBL},
+  {"delta_end", offsetof(ver_summary, delta_end), F_DBL},
+  {"steps", offsetof(ver_summary, steps), F_LONG},
+  {"particles", offsetof(ver_summary, particles), F_SIZE},
+  {"n_soften", offsetof(ver_summary, n_soften), F_LONG},
+  {"n_separate", offsetof(ver_summary, n_separate), F_LONG},
+  {"n_bracketed", offsetof(ver_summary, n_bracketed), F_LONG},
+  {"wall_s", offsetof(ver_summary, wall_s), F_DBL},
+  {"cpu_s", offsetof(ver_summary, cpu_s), F_DBL},
+  {"updates_per_s", offsetof(ver_summary, updates_per_s), F_DBL},
+};
+#define NNUMS (sizeof NUMS / sizeof NUMS[0])
+
+int ver_summary_write(const char *dir, const ver_scene *vs, const ver_summary *u, const char *errmsg)
+{
+  cJSON *o = cJSON_CreateObject();
+  char id[128];
+  ver_scene_case_id(vs, id, sizeof id);
+  cJSON_AddStringToObject(o, "case", id);
+  cJSON_AddStringToObject(o, "scene", vs->name);
+  cJSON_AddStringToObject(o, "scene_file", vs->path);
+  cJSON_AddNumberToObject(o, "h", vs->sc.h);
+  cJSON_AddNumberToObject(o, "ppc", vs->sc.ppc);
+  cJSON_AddNumberToObject(o, "dt", vs->sc.dt);
+  cJSON_AddStringToObject(o, "Le", vs->sc.le_mode == MPM_LE_PARTICLE ? "particle" : "cell");
+  cJSON_AddStringToObject(o, "scheme", vs->sc.scheme == MPM_SCHEME_MUSL ? "musl" : "usl");
+  cJSON_AddStringToObject(o, "shape", vs->sc.shape == MPM_SHAPE_GIMP ? "gimp" : "linear");
+  cJSON_AddNumberToObject(o, "separation_threshold", vs->sc.sep_threshold);
+  cJSON_AddBoolToObject(o, "complete", u->complete);
+  if (errmsg && errmsg[0])
+    cJSON_AddStringToObject(o, "error", errmsg);
+  for (size_t i = 0; i < NNUMS; i++) {
+    const char *p = (const char *)u + NUMS[i].off;
+    double v;
+    if (NUMS[i].kind == F_DBL)
+      memcpy(&v, p, sizeof v);
+    else if (NUMS[i].kind == F_LONG) {
+      long l;
+      memcpy(&l, p, sizeof l);
+      v = (double)l;
+    } else {
+      size_t z;
+      memcpy(&z, p, sizeof z);
+      v = (double)z;
+    }
+    cJSON_AddNumberToObject(o, NUMS[i].key, v);
+  }
+  char *txt = cJSON_Print(o);
+  cJSON_Delete(o);
+  if (!txt)
+    return -1;
+  char path[1200], tmp[1300];
+  snprintf(path, sizeof path, "%s/summary.json", dir);
+  FILE *f = ver_io_open_tmp(path, tmp, sizeof tmp);
+  if (!f) {
+    free(txt);
+    return -1;
+  }
+  fputs(txt, f);
+  fputc('\n', f);
+  free(txt);
+  return ver_io_commit(f, tmp);
+}
+
+static double jnum(const cJSON *o, const char *key)
+{
+  const cJSON *v = cJSON_GetObjectItemCaseSensitive(o, key);
+  return cJSON_IsNumber(v) ? v->valuedouble : NAN;
+}
+
+static void jstr(const cJSON *o, const char *key, char *dst, size_t len)
+{
+  const cJSON *v = cJSON_GetObjectItemCaseSensitive(o, key);
+  snprintf(dst, len, "%s", cJSON_IsString(v) ? v->valuestring : "");
+}
+
+int ver_summary_read(const char *dir, ver_summary_doc *d)
+{
+  char path[1200];
+  snprintf(path, sizeof path, "%s/summary.json", dir);
+  memset(d, 0, sizeof *d);
+  char *txt = ver_io_slurp(path, NULL, 1 << 20);
+  cJSON *o = txt ? cJSON_Parse(txt) : NULL;
+  free(txt);
+  if (!o)
+    return -1;
+  jstr(o, "case", d->case_id, sizeof d->case_id);
+  jstr(o, "scene", d->scene, sizeof d->scene);
+  jstr(o, "scene_file", d->scene_file, sizeof d->scene_file);
+  jstr(o, "Le", d->le, sizeof d->le);
+  jstr(o, "scheme", d->scheme, sizeof d->scheme);
+  jstr(o, "shape", d->shape, sizeof d->shape);
+  jstr(o, "error", d->error, sizeof d->error);
+  d->h = jnum(o, "h");
+  d->dt = jnum(o, "dt");
+  d->sep_threshold = jnum(o, "separation_threshold");
+  const double ppc = jnum(o, "ppc");
+  d->ppc = isfinite(ppc) ? (int)ppc : 0;
+  ver_summary *u = &d->u;
+  u->complete = cJSON_IsTrue(cJSON_GetObjectItemCaseSensitive(o, "complete"));
+  for (size_t i = 0; i < NNUMS; i++) {
+    char *p = (char *)u + NUMS[i].off;
+    const double v = jnum(o, NUMS[i].key);
+    if (NUMS[i].kind == F_DBL)
+      memcpy(p, &v, sizeof v);
+    else if (NUMS[i].kind == F_LONG) {
+      const long l = isfinite(v) ? (long)v : 0;
+      memcpy(p, &l, sizeof l);
+    } else {
+      const size_t z = isfinite(v) && v > 0 ? (size_t)v : 0;
+      memcpy(p, &z, sizeof z);
+    }
+  }
+  cJSON_Delete(o);
+  return 0;
+}

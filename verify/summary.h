@@ -1,0 +1,50 @@
+/*
+ * summary.h - summary.json, the one record a run leaves of itself: what was run (scene,
+ * h, ppc, dt, Le, scheme, shape, separation threshold) and what it measured (ver_summary).
+ * Written by `delam run` (run.c) and read by verify, report and the --from scan through
+ * the same two functions, so the schema has one definition.
+ */
+#ifndef DELAM_VER_SUMMARY_H
+#define DELAM_VER_SUMMARY_H
+
+#include <stddef.h>
+
+#include "scene.h"
+
+typedef struct {
+  double peak_P, delta_peak;     /* largest (interval-averaged) grip load and where  */
+  double delta_sep;              /* separation: the first of delta_sep_cut and delta_sep_load; -1 if none */
+  double delta_sep_cut;          /* first delta at which separated particles cut every particle row */
+  double delta_sep_load;         /* first delta after the peak with the windowed |P| < sep_load * peak */
+  double k_elastic;              /* least-squares slope of P(delta) for 0.1-0.6 peak before the peak */
+  double D_final, W_ext_final, W_coh_final, KE_final, SE_final;
+  double energy_residual;        /* max |W_ext - KE - SE - W_coh| / max(W_ext) over the rows */
+  double delta_end;              /* where the run stopped                            */
+  long steps;
+  size_t particles;
+  long n_soften, n_separate, n_bracketed;
+  double wall_s, cpu_s, updates_per_s;
+  int complete;                  /* 1 if the run reached its stop rule               */
+  int status;                    /* mpm_status of the run                            */
+} ver_summary;
+
+/* What summary.json says: the run's description and its ver_summary. */
+typedef struct {
+  char case_id[128];
+  char scene[64];
+  char scene_file[512];
+  double h, dt, sep_threshold;
+  int ppc;
+  char le[16];                   /* "cell" or "particle"                             */
+  char scheme[16];               /* "usl" or "musl"                                  */
+  char shape[16];                /* "linear" or "gimp"                               */
+  char error[512];               /* "" if none                                       */
+  ver_summary u;                 /* numbers missing from the file read as NaN        */
+} ver_summary_doc;
+
+/* Writes dir/summary.json (through a temporary name).  0 or -1. */
+int ver_summary_write(const char *dir, const ver_scene *vs, const ver_summary *u, const char *errmsg);
+/* Reads dir/summary.json.  0, or -1 if it is missing or not JSON. */
+int ver_summary_read(const char *dir, ver_summary_doc *d);
+
+#endif
