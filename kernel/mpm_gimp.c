@@ -6,45 +6,69 @@
  * FX = (V / hx)(sxx, sxy), FY = (V / hy)(sxy, syy), node (a, b) receives
  *   Sx_a Sy_b P - dSx_a Sy_b FX - Sx_a dSy_b FY  =  Sx_a T_b - dSx_a R_b,
  *   T_b = Sy_b P - dSy_b FY,  R_b = Sy_b FX,
- * i.e. N_i (m, m v) and f_i = -V sigma . grad N_i (eq. 3).  Threads: the particles of a
- * strip stay within half a cell of it between sorts (mpm_step.c sets the resort flag
- * beyond), so with the nearest node's neighbours they write the same node columns as a
- * bilinear particle drifting a whole cell, and the strips' colouring holds (mpm_sort.c).
+ * i.e. N_i (m, m v) and f_i = -V sigma . grad N_i (eq. 3).  Threads: particles are
+ * sorted by the dual cell around their nearest node and may drift half a dual column
+ * beyond their strip before a sort (mpm_sort.c, mpm_step.c), so the strips' colouring
+ * holds for the 3 x 3 stencil.
  */
 #include <math.h>
+#include <stdint.h>
 
 #include "mpm_gimp.h"
+
+/* The 3 x 3 node shares of the particles that have the same nearest node (they are
+ * consecutive: mpm_sort.c sorts by the dual cell) are summed in registers and added to
+ * the nodes when the next particle has another. */
+static inline void stencil_flush(mpm_node *nd, size_t n0, size_t nny, const mpm_v8 c[9])
+{
+  for (int i = 0; i < 3; i++)
+    for (int j = 0; j < 3; j++)
+      node_add(nd + n0 + (size_t)i * nny + (size_t)j, c[3 * i + j]);
+}
 
 int mpm_gimp_p2g_range(const mpm_grid *gg, const mpm_particles *p, size_t a, size_t b, double lcx, double lcy)
 {
   const mpm_grid geo = *gg, *g = &geo;
   const size_t nny = (size_t)g->nny;
-  const double ihx = g->ihx, ihy = g->ihy;
+  const double ihx = g->ihx, ihy = g->ihy, ox = g->ox, oy = g->oy;
   mpm_node *restrict nd = g->nd;
+  const double *restrict x = p->x, *restrict y = p->y, *restrict vx = p->vx, *restrict vy = p->vy;
+  const double *restrict pm = p->m, *restrict V = p->V;
+  const double *restrict sxx = p->sxx, *restrict syy = p->syy, *restrict sxy = p->sxy;
+  const mpm_v8 zero = {0.0};
+  mpm_v8 c[9];
+  for (int q = 0; q < 9; q++)
+    c[q] = zero;
+  size_t cur = SIZE_MAX;
   int out = 0;
   for (size_t k = a; k < b; k++) {
-    if (!mpm_gimp_inside(g, p->x[k], p->y[k])) {
+    if (!mpm_gimp_inside(g, x[k], y[k])) {
       out = 1;
       continue;
     }
     mpm_gimp1 sx, sy;
-    mpm_gimp_1d((p->x[k] - g->ox) * ihx, lcx, &sx);
-    mpm_gimp_1d((p->y[k] - g->oy) * ihy, lcy, &sy);
-    const double mm = p->m[k], Vx = p->V[k] * ihx, Vy = p->V[k] * ihy;
-    const mpm_v8 P = {mm, mm * p->vx[k], mm * p->vy[k], 0.0, 0.0, 0.0, 0.0, 0.0};
-    const mpm_v8 FX = {0.0, 0.0, 0.0, Vx * p->sxx[k], Vx * p->sxy[k], 0.0, 0.0, 0.0};
-    const mpm_v8 FY = {0.0, 0.0, 0.0, Vy * p->sxy[k], Vy * p->syy[k], 0.0, 0.0, 0.0};
-    mpm_v8 T[3], R[3];
-    for (int j = 0; j < 3; j++) {
-      T[j] = sy.S[j] * P - sy.dS[j] * FY;
-      R[j] = sy.S[j] * FX;
+    mpm_gimp_1d((x[k] - ox) * ihx, lcx, &sx);
+    mpm_gimp_1d((y[k] - oy) * ihy, lcy, &sy);
+    const size_t n0 = (size_t)sx.i0 * nny + (size_t)sy.i0;
+    if (n0 != cur) {
+      if (cur != SIZE_MAX)
+        stencil_flush(nd, cur, nny, c);
+      for (int q = 0; q < 9; q++)
+        c[q] = zero;
+      cur = n0;
     }
-    for (int i = 0; i < 3; i++) {
-      mpm_node *col = nd + (size_t)(sx.i0 + i) * nny + (size_t)sy.i0;
-      for (int j = 0; j < 3; j++)
-        node_add(col + j, sx.S[i] * T[j] - sx.dS[i] * R[j]);
+    const double mm = pm[k], Vx = V[k] * ihx, Vy = V[k] * ihy;
+    const mpm_v8 P = {mm, mm * vx[k], mm * vy[k], 0.0, 0.0, 0.0, 0.0, 0.0};
+    const mpm_v8 FX = {0.0, 0.0, 0.0, Vx * sxx[k], Vx * sxy[k], 0.0, 0.0, 0.0};
+    const mpm_v8 FY = {0.0, 0.0, 0.0, Vy * sxy[k], Vy * syy[k], 0.0, 0.0, 0.0};
+    for (int j = 0; j < 3; j++) {
+      const mpm_v8 T = sy.S[j] * P - sy.dS[j] * FY, R = sy.S[j] * FX;
+      for (int i = 0; i < 3; i++)
+        c[3 * i + j] += sx.S[i] * T - sx.dS[i] * R;
     }
   }
+  if (cur != SIZE_MAX)
+    stencil_flush(nd, cur, nny, c);
   return out;
 }
 
@@ -52,22 +76,37 @@ void mpm_gimp_musl_range(const mpm_grid *gg, mpm_particles *p, size_t a, size_t 
 {
   const mpm_grid geo = *gg, *g = &geo;
   const size_t nny = (size_t)g->nny;
+  const double ihx = g->ihx, ihy = g->ihy, ox = g->ox, oy = g->oy;
   mpm_node *restrict nd = g->nd;
+  const double *restrict x = p->x, *restrict y = p->y, *restrict pm = p->m;
   double *restrict vx = p->vx, *restrict vy = p->vy;
+  const mpm_v8 zero = {0.0};
+  mpm_v8 c[9];
+  for (int q = 0; q < 9; q++)
+    c[q] = zero;
+  size_t cur = SIZE_MAX;
   for (size_t k = a; k < b; k++) {
     mpm_gimp1 sx, sy;
-    mpm_gimp_1d((p->x[k] - g->ox) * g->ihx, lcx, &sx);
-    mpm_gimp_1d((p->y[k] - g->oy) * g->ihy, lcy, &sy);
+    mpm_gimp_1d((x[k] - ox) * ihx, lcx, &sx);
+    mpm_gimp_1d((y[k] - oy) * ihy, lcy, &sy);
     mpm_v4 S, DX, DY;
     mpm_gimp_gather(nd, nny, &sx, &sy, &S, &DX, &DY);
     const double vxn = vx[k] + S[GFX], vyn = vy[k] + S[GFY];
     vx[k] = vxn;
     vy[k] = vyn;
-    const mpm_v8 Q = {0.0, 0.0, 0.0, 0.0, 0.0, p->m[k] * vxn, p->m[k] * vyn, 0.0};
-    for (int i = 0; i < 3; i++) {
-      mpm_node *col = nd + (size_t)(sx.i0 + i) * nny + (size_t)sy.i0;
-      for (int j = 0; j < 3; j++)
-        node_add(col + j, (sx.S[i] * sy.S[j]) * Q);
+    const size_t n0 = (size_t)sx.i0 * nny + (size_t)sy.i0;
+    if (n0 != cur) {
+      if (cur != SIZE_MAX)
+        stencil_flush(nd, cur, nny, c);
+      for (int q = 0; q < 9; q++)
+        c[q] = zero;
+      cur = n0;
     }
+    const mpm_v8 Q = {0.0, 0.0, 0.0, 0.0, 0.0, pm[k] * vxn, pm[k] * vyn, 0.0};
+    for (int i = 0; i < 3; i++)
+      for (int j = 0; j < 3; j++)
+        c[3 * i + j] += (sx.S[i] * sy.S[j]) * Q;
   }
+  if (cur != SIZE_MAX)
+    stencil_flush(nd, cur, nny, c);
 }

@@ -79,33 +79,30 @@ typedef struct {
   double dS[3];    /* their derivatives d/dx_p, times h (so in 1 / cells)              */
 } mpm_gimp1;
 
-static inline double mpm_gimp_w(double d, double lc, double *ds)
-{
-  const double a = fabs(d), sg = d < 0.0 ? -1.0 : 1.0;
-  if (a < lc) {
-    *ds = -d / lc;
-    return 1.0 - (d * d + lc * lc) / (2.0 * lc);
-  }
-  if (a < 1.0 - lc) {
-    *ds = -sg;
-    return 1.0 - a;
-  }
-  if (a < 1.0 + lc) {
-    const double r = 1.0 + lc - a;
-    *ds = -sg * r / (2.0 * lc);
-    return r * r / (4.0 * lc);
-  }
-  *ds = 0.0;
-  return 0.0;
-}
-
-/* f = (x_p - origin) / h, the position in cells. */
+/* The weights above, evaluated without branches (the three regions of the table
+ * become clamps).  With c the nearest node, d0 = f - c in [-1/2, 1/2], and the
+ * particle's overlaps into the cells of the outer nodes rl = lc - d0, rr = lc + d0:
+ *   S_right = w(rr), S_left = w(rl),  w(r) = min(max(r, 0), 2 lc)^2 / (4 lc) + max(r - 2 lc, 0),
+ *   dS_right = w'(rr), dS_left = -w'(rl),  w'(r) = min(max(r, 0), 2 lc) / (2 lc),
+ * and the centre node takes the rest (partition of unity: S_c = 1 - S_l - S_r,
+ * dS_c = -(dS_l + dS_r)), which is the table's 1 - (d^2 + lc^2) / (2 lc) for |d0| < lc
+ * and 1 - |d0| beyond.  test_mpm_gimp.c checks them against the definition. */
 static inline void mpm_gimp_1d(double f, double lc, mpm_gimp1 *o)
 {
-  const int c = (int)floor(f + 0.5); /* nearest node */
-  o->i0 = c - 1;
-  for (int a = 0; a < 3; a++)
-    o->S[a] = mpm_gimp_w(f - (double)(c - 1 + a), lc, &o->dS[a]);
+  const double c = floor(f + 0.5), d0 = f - c, w2 = 2.0 * lc, i2 = 0.5 / lc;
+  const double rl = lc - d0, rr = lc + d0;
+  /* clamps as comparisons, not fmin / fmax: those are library calls where NaN rules apply */
+  const double cl = rl < 0.0 ? 0.0 : (rl > w2 ? w2 : rl), cr = rr < 0.0 ? 0.0 : (rr > w2 ? w2 : rr);
+  const double el = rl > w2 ? rl - w2 : 0.0, er = rr > w2 ? rr - w2 : 0.0;
+  const double sl = 0.5 * i2 * cl * cl + el, sr = 0.5 * i2 * cr * cr + er;
+  const double gl = -cl * i2, gr = cr * i2;
+  o->i0 = (int)c - 1;
+  o->S[0] = sl;
+  o->S[1] = 1.0 - sl - sr;
+  o->S[2] = sr;
+  o->dS[0] = gl;
+  o->dS[1] = -(gl + gr);
+  o->dS[2] = gr;
 }
 
 /* 1 if the particle at (x, y) has its 3 x 3 nodes inside the grid. */

@@ -11,6 +11,13 @@
  * node, so each colour runs in parallel; each node receives its sums in a fixed order
  * (its even strip, then its odd strip, each in particle order) whatever the threads.
  * A particle that drifts further is caught in the grid-to-particle pass (resort flag).
+ *
+ * uGIMP (grid.shape = gimp) sorts by the cell of the dual grid, the unit square centred
+ * on the particle's nearest node (key from floor(x / h + 1/2)): the particles of one
+ * dual cell share their 3 x 3 nodes, so the scatter sums them in registers as the
+ * bilinear one does per cell.  Its particles write the nearest node's neighbours, one
+ * column further than a bilinear particle, so they may drift only half a cell before a
+ * sort (mpm_step.c); strips of one colour still never share a node.
  */
 #include <assert.h>
 #include <string.h>
@@ -42,11 +49,11 @@ void mpm_sim_sort(mpm_sim *s)
   mpm_particles *p = s->p;
   const mpm_grid *g = s->g;
   const size_t n = p->n, ncell = (size_t)g->ncx * (size_t)g->ncy;
-  const double ihx = g->ihx, ihy = g->ihy;
+  const double ihx = g->ihx, ihy = g->ihy, shift = s->sc.shape == MPM_SHAPE_GIMP ? 0.5 : 0.0;
   memset(s->count, 0, (ncell + 1) * sizeof(size_t));
   for (size_t k = 0; k < n; k++) {
     /* Outside the grid (caught by the step) or not finite: clamp, only to sort. */
-    double fx = (p->x[k] - g->ox) * ihx, fy = (p->y[k] - g->oy) * ihy;
+    double fx = (p->x[k] - g->ox) * ihx + shift, fy = (p->y[k] - g->oy) * ihy + shift;
     fx = fx >= 0.0 ? (fx < g->ncx ? fx : g->ncx - 1) : 0.0;
     fy = fy >= 0.0 ? (fy < g->ncy ? fy : g->ncy - 1) : 0.0;
     const uint32_t key = (uint32_t)((size_t)fx * (size_t)g->ncy + (size_t)fy);

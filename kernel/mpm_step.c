@@ -340,9 +340,9 @@ static inline __attribute__((always_inline)) void g2p_strip_impl(mpm_sim *s, int
   const size_t nny = (size_t)g->nny;
   const int ux = musl ? GFX : GPX, uy = ux + 1; /* the lanes of the strain velocity */
   const double dtihx = dt * ihx, dtihy = dt * ihy;
-  /* the safe columns [q S - 1, (q + 1) S + 1) of strip q (mpm_sort.c); half a cell
-   * for uGIMP's wider support (mpm_gimp.c) */
-  const double drift = gimp ? 0.5 : 1.0;
+  /* the safe columns [q S - 1, (q + 1) S + 1) of strip q (mpm_sort.c); for uGIMP's
+   * wider support, half a column of the dual grid beyond the strip */
+  const double drift = gimp ? 0.5 : 1.0, shift = gimp ? 0.5 : 0.0;
   const double clo = q * MPM_STRIP - drift, chi = (q + 1) * MPM_STRIP + drift;
   double lcx = 0.0, lcy = 0.0;
   if (gimp)
@@ -424,7 +424,7 @@ static inline __attribute__((always_inline)) void g2p_strip_impl(mpm_sim *s, int
         syy[k] = tyy;
         sxy[k] = txy;
       }
-      const double col = (xn - ox) * ihx;
+      const double col = (xn - ox) * ihx + shift;
       resort |= (col < clo) | (col >= chi);
     }
     d->n = nd_;
