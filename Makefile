@@ -1,7 +1,7 @@
 # Thin wrapper around meson so that a fresh Debian machine needs two commands:
 #   make report   install what is missing, build, reproduce the paper, write reports/out/
 #   make check    install what is missing, build, run the test suite
-#   make check-asan   the kernel, analytic and robustness tests under AddressSanitizer + UBSan
+#   make check-asan   the kernel, analytic, verify unit and robustness tests under AddressSanitizer + UBSan
 #   make fuzz     build the libFuzzer target for the scene parser and run it FUZZ_TIME seconds
 BUILD     ?= build
 MESONFLAGS ?=
@@ -41,7 +41,7 @@ $(BUILD_ASAN)/build.ninja:
 check-asan: deps $(BUILD_ASAN)/build.ninja
 	ninja -C $(BUILD_ASAN)
 	ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-	  meson test -C $(BUILD_ASAN) --print-errorlogs --suite kernel --suite analytic --suite robustness
+	  meson test -C $(BUILD_ASAN) --print-errorlogs --suite kernel --suite analytic --suite verify-unit --suite robustness
 
 # libFuzzer (clang): the scene parser and validator with the kernel sources they link
 # against.  Seeds: data/scenes, data/bad and fuzz/corpus (inputs that reach code those

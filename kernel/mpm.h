@@ -69,8 +69,6 @@ typedef struct {
   double dt;             /* time step                                                  */
   double speed;          /* grip speed (pulls the left end in -x)                      */
   double end_delta;      /* the run never goes past this end displacement              */
-  double stop_margin;    /* stop this far in delta past detected separation (<= 0: never early) */
-  double sep_load_frac;  /* separation detected when |P| < this fraction of the peak   */
 } mpm_scene;
 
 /* Checks a scene for physical sense; MPM_EINVAL and a message naming the key. */

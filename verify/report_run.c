@@ -2,11 +2,9 @@
  * report_run.c - the runs behind `delam report`: the case table, the result cache
  * (out/report/<case-id>/: reused when its summary.json says "complete": true and the
  * scene file is unchanged; a failed run only while the delam binary is also the same),
- * and a small process pool that runs `delam run` (or gnuplot) children a few at a time.
- *
- * Children are started with fork + exec rather than posix_spawn because gnuplot has
- * to run inside the output folder (chdir between the two); each child writes to its
- * own log file so that the parent's stderr carries only the progress lines.
+ * and the runs of `delam run` (or gnuplot) children a few at a time through the process
+ * pool (pool.c); each child writes to its own log file so that the parent's stderr
+ * carries only the progress lines.
  */
 #include <errno.h>
 #include <fcntl.h>
@@ -21,6 +19,7 @@
 #include <unistd.h>
 
 #include "io.h"
+#include "pool.h"
 #include "report.h"
 #include "run.h"
 #include "scene.h"
@@ -207,76 +206,38 @@ static int try_reuse(const rep_ctx *r, rep_case *c, const char *dir, int check_s
   return 0;
 }
 
-static pid_t start_child(char *const argv[], const char *cwd, const char *log)
+typedef struct {
+  char ***argvs;
+  const char *cwd;
+  char **logs, **names;
+  int n, *status;
+  const char *what;
+} spawn_ctx;
+
+static pid_t spawn_one(int i, void *ctx)
 {
-  const pid_t pid = fork();
-  if (pid != 0)
-    return pid; /* parent (or -1) */
-  if (cwd && chdir(cwd) != 0)
-    _exit(126);
-  const int fd = open(log, O_WRONLY | O_CREAT | O_TRUNC, 0666);
-  if (fd >= 0) {
-    dup2(fd, 1);
-    dup2(fd, 2);
-    close(fd);
-  }
-  execvp(argv[0], argv);
-  _exit(127);
+  const spawn_ctx *c = ctx;
+  return ver_pool_spawn(c->argvs[i], c->cwd, c->logs[i]);
 }
 
-static int exit_code(int ws)
+static void spawn_done(int i, int status, int sig, double wall, int done, void *ctx)
 {
-  if (WIFEXITED(ws))
-    return WEXITSTATUS(ws);
-  return WIFSIGNALED(ws) ? 128 + WTERMSIG(ws) : -1;
+  const spawn_ctx *c = ctx;
+  (void)sig;
+  c->status[i] = status;
+  if (status >= 0)
+    fprintf(stderr, "delam report: [%2d/%d] %s %s: %s (%.1f s)\n", done, c->n, c->what, c->names[i],
+            status == 0 ? "ok" : "failed", wall);
 }
 
 void ver_report_spawn_all(char ***argvs, const char *cwd, char **logs, char **names, int n, int jobs,
                           int *status, const char *what)
 {
-  pid_t *pid = calloc((size_t)n + 1, sizeof *pid);
-  double *t0 = calloc((size_t)n + 1, sizeof *t0);
-  if (!pid || !t0) {
-    free(pid);
-    free(t0);
-    for (int i = 0; i < n; i++)
-      status[i] = -1;
-    return;
-  }
-  int next = 0, running = 0, done = 0;
-  while (done < n) {
-    while (running < jobs && next < n) {
-      t0[next] = ver_now_wall();
-      pid[next] = start_child(argvs[next], cwd, logs[next]);
-      if (pid[next] < 0) {
-        status[next] = -1;
-        done++;
-      } else {
-        running++;
-      }
-      next++;
-    }
-    if (!running)
-      continue;
-    int ws;
-    const pid_t p = waitpid(-1, &ws, 0);
-    if (p < 0) {
-      if (errno == EINTR)
-        continue;
-      break;
-    }
-    for (int i = 0; i < next; i++)
-      if (pid[i] == p) {
-        status[i] = exit_code(ws);
-        pid[i] = 0;
-        running--;
-        done++;
-        fprintf(stderr, "delam report: [%2d/%d] %s %s: %s (%.1f s)\n", done, n, what, names[i],
-                status[i] == 0 ? "ok" : "failed", ver_now_wall() - t0[i]);
-      }
-  }
-  free(pid);
-  free(t0);
+  for (int i = 0; i < n; i++)
+    status[i] = -1;
+  spawn_ctx c = {argvs, cwd, logs, names, n, status, what};
+  const ver_pool p = {n, jobs, NULL, spawn_one, NULL, spawn_done, &c};
+  ver_pool_run(&p);
 }
 
 static int by_cost_desc(const void *a, const void *b)

@@ -32,6 +32,7 @@
 
 #include "metrics.h"
 #include "run.h"
+#include "separation.h"
 
 /* Opens dir/name.tmp for writing; commit_file renames it into place. */
 static FILE *open_tmp(const char *dir, const char *name, char *tmp, size_t len)
@@ -130,164 +131,135 @@ static double fit_elastic(const row *r, long n, double peak, double delta_peak)
   return k;
 }
 
-int ver_run(const ver_scene *vs, const ver_run_opts *o, ver_summary *u, char *err, size_t errlen)
+/* An old summary must not vouch for the new, unfinished run, and old snapshots must
+ * not sit beside new results: remove what an earlier run in dir wrote. */
+static int clear_outdir(const char *dir, char *err, size_t errlen)
 {
-  memset(u, 0, sizeof *u);
-  u->delta_sep = u->delta_sep_cut = u->delta_sep_load = -1;
-  const mpm_scene *sc = &vs->sc;
-  if (o->write_files) {
-    if (ver_mkdir_p(o->outdir) != 0) {
-      snprintf(err, errlen, "%s: cannot create directory: %s", o->outdir, strerror(errno));
-      return 2;
-    }
-    /* An old summary must not vouch for the new, unfinished run, and old snapshots must
-     * not sit beside new results: remove what an earlier run here wrote. */
-    DIR *d = opendir(o->outdir);
-    for (struct dirent *e = d ? readdir(d) : NULL; e; e = readdir(d)) {
-      const char *n = e->d_name;
-      if (!strncmp(n, "snap-d", 6) || !strncmp(n, "final.", 6) || !strcmp(n, "summary.json") ||
-          !strcmp(n, "load.csv") || !strcmp(n, "energy.csv")) {
-        char old[1400];
-        snprintf(old, sizeof old, "%s/%s", o->outdir, n);
-        remove(old);
-      }
-    }
-    if (d)
-      closedir(d);
+  if (ver_mkdir_p(dir) != 0) {
+    snprintf(err, errlen, "%s: cannot create directory: %s", dir, strerror(errno));
+    return 2;
   }
+  DIR *d = opendir(dir);
+  for (struct dirent *e = d ? readdir(d) : NULL; e; e = readdir(d)) {
+    const char *n = e->d_name;
+    if (!strncmp(n, "snap-d", 6) || !strncmp(n, "final.", 6) || !strcmp(n, "summary.json") ||
+        !strcmp(n, "load.csv") || !strcmp(n, "energy.csv")) {
+      char old[1400];
+      snprintf(old, sizeof old, "%s/%s", dir, n);
+      remove(old);
+    }
+  }
+  if (d)
+    closedir(d);
+  return 0;
+}
+
+/* The state of one run's time loop. */
+typedef struct {
+  const ver_scene *vs;
+  const ver_run_opts *o;
   mpm_sim *s;
-  char kerr[512];
-  mpm_status st = mpm_sim_alloc(sc, o->threads, &s, kerr, sizeof kerr);
-  if (st != MPM_OK) {
-    snprintf(err, errlen, "%s: %s", vs->path, kerr);
-    return st == MPM_EINVAL ? 2 : 1;
-  }
-  const double vdt = sc->speed * sc->dt;
-  const long nmax = (long)ceil(sc->end_delta / vdt - 1e-9);
-  const long every = (long)fmax(1.0, floor(vs->interval / vdt + 0.5));
-  const long nrows_max = nmax / every + 2;
-  row *rows = malloc(sizeof(row) * (size_t)nrows_max);
-  /* rows of particles, for the kinematic separation test */
-  const int n1 = (int)lround(sqrt((double)sc->ppc));
-  const double dpy = sc->h / n1;
-  const int nprow = (int)lround(sc->H / dpy);
-  uint8_t *cut = calloc((size_t)nprow, 1);
-  /* separation window: 4 L / c in time, in rows */
+  row *rows;
+  long nrow, nmax, every, acc_n;
+  double vdt, last_snap, acc_g, acc_f, peak, dpeak;
+  ver_sep sep;
+  int snap_done[VER_MAX_SNAP];
+  char id[128];
+} run_state;
+
+/* Allocates the rows and the separation detector (before the loop: no malloc in it). */
+static int run_setup(run_state *r, char *err, size_t errlen)
+{
+  const mpm_scene *sc = &r->vs->sc;
+  r->vdt = sc->speed * sc->dt;
+  r->nmax = (long)ceil(sc->end_delta / r->vdt - 1e-9);
+  r->every = (long)fmax(1.0, floor(r->vs->interval / r->vdt + 0.5));
+  const long nrows_max = r->nmax / r->every + 2;
+  r->rows = malloc(sizeof(row) * (size_t)nrows_max);
+  /* separation: the load window is 4 L / c in time, in rows (separation.h) */
   const double c = sqrt(sc->E / (1.0 - sc->nu * sc->nu) / sc->rho);
-  const long win = (long)fmax(1.0, ceil(4.0 * sc->L / c / (sc->dt * (double)every)));
-  if (!rows || !cut) {
-    free(rows);
-    free(cut);
-    mpm_sim_free(s);
+  const long win = (long)fmax(1.0, ceil(4.0 * sc->L / c / (sc->dt * (double)r->every)));
+  const int sep_ok = ver_sep_init(&r->sep, sc->H, sc->h, sc->ppc, win, r->vs->sep_load_frac) == 0;
+  if (!r->rows || !sep_ok) {
     snprintf(err, errlen, "out of memory for %ld output rows", nrows_max);
     return 1;
   }
-  double last_snap = 0.0;
-  for (int i = 0; i < vs->nsnap; i++)
-    last_snap = fmax(last_snap, vs->snap[i]);
-  int snap_done[VER_MAX_SNAP] = {0};
-  char id[128];
-  ver_scene_case_id(vs, id, sizeof id);
-  const int show = o->progress && isatty(2);
+  for (int i = 0; i < r->vs->nsnap; i++)
+    r->last_snap = fmax(r->last_snap, r->vs->snap[i]);
+  ver_scene_case_id(r->vs, r->id, sizeof r->id);
+  return 0;
+}
 
-  long nrow = 0, acc_n = 0;
-  double acc_g = 0.0, acc_f = 0.0, peak = 0.0, dpeak = 0.0;
-  const double w0 = ver_now_wall(), c0 = ver_now_cpu();
-  double next_show = w0 + 0.5;
-  int rc = 0;
-  err[0] = '\0';
-  while (s->step < nmax) {
-    if (o->stop && *o->stop) {
-      rc = 130;
-      snprintf(err, errlen, "%s: stopped by a signal at step %ld (delta = %g)", id, s->step, mpm_sim_delta(s));
-      break;
-    }
-    if (o->max_steps > 0 && s->step >= o->max_steps)
-      break;
-    st = mpm_sim_step(s, kerr, sizeof kerr);
-    if (st != MPM_OK) {
-      rc = 1;
-      snprintf(err, errlen, "%s: %s: %s", id, mpm_strerror(st), kerr);
-      u->status = st;
-      break;
-    }
-    acc_g += s->P_grip;
-    acc_f += s->P_fixed;
-    acc_n++;
-    const double delta = mpm_sim_delta(s);
-    if (s->step % every == 0 || s->step == nmax) {
-      row *r = &rows[nrow++];
-      r->t = s->t;
-      r->delta = delta;
-      r->Pg = acc_g / acc_n;
-      r->Pf = acc_f / acc_n;
-      acc_g = acc_f = 0.0;
-      acc_n = 0;
-      mpm_sim_energy(s, &r->e);
-      if (r->Pg > peak) {
-        peak = r->Pg;
-        dpeak = delta;
-      }
-      if (u->delta_sep_cut < 0 && s->n_separate > 0) {
-        const mpm_particles *p = s->p;
-        int ncut = 0;
-        memset(cut, 0, (size_t)nprow);
-        for (size_t k = 0; k < p->n; k++)
-          if (p->sep[k] && p->mat[k] != MPM_MAT_HEAD) {
-            const int j = (int)(p->y0[k] / dpy);
-            if (j >= 0 && j < nprow && !cut[j]) {
-              cut[j] = 1;
-              ncut++;
-            }
-          }
-        if (ncut == nprow)
-          u->delta_sep_cut = delta;
-      }
-      if (u->delta_sep_load < 0 && peak > 0 && nrow >= win && rows[nrow - win].delta > dpeak) {
-        double mg = 0.0, mf = 0.0;
-        for (long i = nrow - win; i < nrow; i++) {
-          mg += rows[i].Pg;
-          mf += rows[i].Pf;
-        }
-        if (fmax(fabs(mg), fabs(mf)) / (double)win < sc->sep_load_frac * peak)
-          u->delta_sep_load = 0.5 * (rows[nrow - win].delta + delta);
-      }
-      if (u->delta_sep < 0 && (u->delta_sep_cut >= 0 || u->delta_sep_load >= 0))
-        u->delta_sep = u->delta_sep_cut >= 0 && (u->delta_sep_load < 0 || u->delta_sep_cut < u->delta_sep_load)
-                           ? u->delta_sep_cut : u->delta_sep_load;
-    }
-    if (o->write_files)
-      for (int i = 0; i < vs->nsnap; i++)
-        if (!snap_done[i] && delta >= vs->snap[i] - 0.5 * vdt) {
-          char stem[64];
-          snprintf(stem, sizeof stem, "snap-d%.3f", vs->snap[i]);
-          if (write_snapshot(s, o->outdir, stem) != 0) {
-            rc = 1;
-            snprintf(err, errlen, "%s/%s: cannot write: %s", o->outdir, stem, strerror(errno));
-          }
-          snap_done[i] = 1;
-        }
-    if (rc)
-      break;
-    if (u->delta_sep >= 0 && sc->stop_margin > 0 && delta >= u->delta_sep + sc->stop_margin &&
-        delta >= last_snap)
-      break;
-    if (show && (s->step & 255) == 0 && ver_now_wall() > next_show) {
-      next_show = ver_now_wall() + 0.5;
-      fprintf(stderr, "\r%s: delta %.4f / %.4f  step %ld  P %.3f  [%.1f s]   ", id, delta, sc->end_delta,
-              s->step, s->P_grip, ver_now_wall() - w0);
-    }
+/* After a step: accumulates the loads; on an output row records it and asks the
+ * separation detector. */
+static void take_step(run_state *r, ver_summary *u, double delta)
+{
+  mpm_sim *s = r->s;
+  r->acc_g += s->P_grip;
+  r->acc_f += s->P_fixed;
+  r->acc_n++;
+  if (!(s->step % r->every == 0 || s->step == r->nmax))
+    return;
+  row *w = &r->rows[r->nrow++];
+  w->t = s->t;
+  w->delta = delta;
+  w->Pg = r->acc_g / r->acc_n;
+  w->Pf = r->acc_f / r->acc_n;
+  r->acc_g = r->acc_f = 0.0;
+  r->acc_n = 0;
+  mpm_sim_energy(s, &w->e);
+  if (w->Pg > r->peak) {
+    r->peak = w->Pg;
+    r->dpeak = delta;
   }
-  if (show)
-    fprintf(stderr, "\r%*s\r", 90, "");
+  if (s->n_separate > 0)
+    ver_sep_cut(&r->sep, s->p->y0, s->p->sep, s->p->mat, MPM_MAT_HEAD, s->p->n, delta);
+  ver_sep_load(&r->sep, delta, w->Pg, w->Pf, r->peak, r->dpeak);
+  u->delta_sep_cut = r->sep.delta_cut;
+  u->delta_sep_load = r->sep.delta_load;
+  u->delta_sep = r->sep.delta_sep;
+}
+
+/* Writes the snapshots that are due at delta; 0, or 1 with err. */
+static int take_snapshots(run_state *r, double delta, char *err, size_t errlen)
+{
+  int rc = 0;
+  for (int i = 0; i < r->vs->nsnap; i++)
+    if (!r->snap_done[i] && delta >= r->vs->snap[i] - 0.5 * r->vdt) {
+      char stem[64];
+      snprintf(stem, sizeof stem, "snap-d%.3f", r->vs->snap[i]);
+      if (write_snapshot(r->s, r->o->outdir, stem) != 0) {
+        rc = 1;
+        snprintf(err, errlen, "%s/%s: cannot write: %s", r->o->outdir, stem, strerror(errno));
+      }
+      r->snap_done[i] = 1;
+    }
+  return rc;
+}
+
+/* max |W_ext - KE - SE - W_coh| / max |W_ext| over the rows. */
+static double energy_residual(const row *rows, long n)
+{
+  double wmax = 0.0, res = 0.0;
+  for (long i = 0; i < n; i++)
+    wmax = fmax(wmax, fabs(rows[i].e.W_ext));
+  for (long i = 0; i < n && wmax > 0; i++)
+    res = fmax(res, fabs(rows[i].e.W_ext - rows[i].e.KE - rows[i].e.SE - rows[i].e.W_coh) / wmax);
+  return res;
+}
+
+/* The summary's numbers at the end of the loop. */
+static void finish(const run_state *r, ver_summary *u, double w0, double c0)
+{
+  const mpm_sim *s = r->s;
   u->wall_s = ver_now_wall() - w0;
   u->cpu_s = ver_now_cpu() - c0;
   u->steps = s->step;
   u->particles = s->p->n;
   u->updates_per_s = u->wall_s > 0 ? (double)s->p->n * (double)s->step / u->wall_s : 0;
-  u->peak_P = peak;
-  u->delta_peak = dpeak;
-  u->k_elastic = fit_elastic(rows, nrow, peak, dpeak);
+  u->peak_P = r->peak;
+  u->delta_peak = r->dpeak;
+  u->k_elastic = fit_elastic(r->rows, r->nrow, r->peak, r->dpeak);
   u->delta_end = mpm_sim_delta(s);
   u->n_soften = s->n_soften;
   u->n_separate = s->n_separate;
@@ -299,24 +271,84 @@ int ver_run(const ver_scene *vs, const ver_run_opts *o, ver_summary *u, char *er
   u->W_coh_final = e.W_coh;
   u->KE_final = e.KE;
   u->SE_final = e.SE;
-  double wmax = 0.0, res = 0.0;
-  for (long i = 0; i < nrow; i++)
-    wmax = fmax(wmax, fabs(rows[i].e.W_ext));
-  for (long i = 0; i < nrow && wmax > 0; i++)
-    res = fmax(res, fabs(rows[i].e.W_ext - rows[i].e.KE - rows[i].e.SE - rows[i].e.W_coh) / wmax);
-  u->energy_residual = res;
-  u->complete = rc == 0;
-  if (o->write_files) {
-    if (write_rows(rows, nrow, o->outdir) != 0 || write_snapshot(s, o->outdir, "final") != 0 ||
-        ver_summary_write(o->outdir, vs, u, err) != 0) {
+  u->energy_residual = energy_residual(r->rows, r->nrow);
+}
+
+/* The time loop: steps until the end, the stop rule, a failure or a signal. */
+static int run_loop(run_state *r, ver_summary *u, double w0, char *err, size_t errlen)
+{
+  mpm_sim *s = r->s;
+  const ver_run_opts *o = r->o;
+  const int show = o->progress && isatty(2);
+  double next_show = w0 + 0.5;
+  char kerr[512];
+  int rc = 0;
+  while (s->step < r->nmax && !rc) {
+    if (o->stop && *o->stop) {
+      snprintf(err, errlen, "%s: stopped by a signal at step %ld (delta = %g)", r->id, s->step, mpm_sim_delta(s));
+      rc = 130;
+      break;
+    }
+    if (o->max_steps > 0 && s->step >= o->max_steps)
+      break;
+    const mpm_status st = mpm_sim_step(s, kerr, sizeof kerr);
+    if (st != MPM_OK) {
+      snprintf(err, errlen, "%s: %s: %s", r->id, mpm_strerror(st), kerr);
+      u->status = st;
+      rc = 1;
+      break;
+    }
+    const double delta = mpm_sim_delta(s);
+    take_step(r, u, delta);
+    if (o->write_files && take_snapshots(r, delta, err, errlen))
+      rc = 1;
+    if (!rc && u->delta_sep >= 0 && r->vs->stop_margin > 0 && delta >= u->delta_sep + r->vs->stop_margin &&
+        delta >= r->last_snap)
+      break;
+    if (show && (s->step & 255) == 0 && ver_now_wall() > next_show) {
+      next_show = ver_now_wall() + 0.5;
+      fprintf(stderr, "\r%s: delta %.4f / %.4f  step %ld  P %.3f  [%.1f s]   ", r->id, delta, r->vs->sc.end_delta,
+              s->step, s->P_grip, ver_now_wall() - w0);
+    }
+  }
+  if (show)
+    fprintf(stderr, "\r%*s\r", 90, "");
+  return rc;
+}
+
+int ver_run(const ver_scene *vs, const ver_run_opts *o, ver_summary *u, char *err, size_t errlen)
+{
+  memset(u, 0, sizeof *u);
+  u->delta_sep = u->delta_sep_cut = u->delta_sep_load = -1;
+  if (o->write_files && clear_outdir(o->outdir, err, errlen))
+    return 2;
+  run_state r;
+  memset(&r, 0, sizeof r);
+  r.vs = vs;
+  r.o = o;
+  char kerr[512];
+  const mpm_status st = mpm_sim_alloc(&vs->sc, o->threads, &r.s, kerr, sizeof kerr);
+  if (st != MPM_OK) {
+    snprintf(err, errlen, "%s: %s", vs->path, kerr);
+    return st == MPM_EINVAL ? 2 : 1;
+  }
+  int rc = run_setup(&r, err, errlen);
+  if (!rc) {
+    const double w0 = ver_now_wall(), c0 = ver_now_cpu();
+    err[0] = '\0';
+    rc = run_loop(&r, u, w0, err, errlen);
+    finish(&r, u, w0, c0);
+    u->complete = rc == 0;
+    if (o->write_files && (write_rows(r.rows, r.nrow, o->outdir) != 0 || write_snapshot(r.s, o->outdir, "final") != 0 ||
+                           ver_summary_write(o->outdir, vs, u, err) != 0)) {
       if (!rc)
         snprintf(err, errlen, "%s: cannot write the results: %s", o->outdir, strerror(errno));
       rc = rc ? rc : 1;
       u->complete = 0;
     }
   }
-  free(rows);
-  free(cut);
-  mpm_sim_free(s);
+  free(r.rows);
+  ver_sep_free(&r.sep);
+  mpm_sim_free(r.s);
   return rc;
 }

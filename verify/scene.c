@@ -30,7 +30,7 @@ enum { LO_OPEN = 1, LO_CLOSED = 2, HI_OPEN = 4, HI_CLOSED = 8 };
 typedef struct {
   const char *section, *key;
   ktype type;
-  size_t off;          /* offset in mpm_scene (K_DBL, K_INT, K_LE) */
+  size_t off;          /* offset in ver_scene (K_DBL, K_INT, K_LE, ...) */
   int required;        /* 1 always, 2 only when decohesion.model > 0, 0 optional */
   double lo, hi;
   int range;           /* LO_* | HI_* */
@@ -38,7 +38,8 @@ typedef struct {
   const char *allowed; /* human text of the range */
 } keydef;
 
-#define OFF(f) offsetof(mpm_scene, f)
+#define OFF(f) offsetof(ver_scene, sc.f) /* the kernel's description */
+#define VOFF(f) offsetof(ver_scene, f)  /* run control, not the kernel's */
 static const keydef keys[] = {
   {"bar", "L", K_DBL, OFF(L), 1, 0, 0, LO_OPEN, 0, "> 0"},
   {"bar", "H", K_DBL, OFF(H), 1, 0, 0, LO_OPEN, 0, "> 0"},
@@ -66,8 +67,8 @@ static const keydef keys[] = {
   {"grid", "shape", K_SHAPE, OFF(shape), 0, 0, 0, 0, MPM_SHAPE_LINEAR, "linear (the paper's bilinear hats) or gimp (uGIMP)"},
   {"loading", "speed", K_DBL, OFF(speed), 1, 0, 0, LO_OPEN, 0, "> 0"},
   {"run", "end_delta", K_DBL, OFF(end_delta), 1, 0, 0, LO_OPEN, 0, "> 0"},
-  {"run", "stop_margin", K_DBL, OFF(stop_margin), 0, 0, 0, LO_CLOSED, 0.1, ">= 0 (0: run to end_delta)"},
-  {"run", "sep_load", K_DBL, OFF(sep_load_frac), 0, 0, 1, LO_OPEN | HI_OPEN, 0.02, "in (0, 1)"},
+  {"run", "stop_margin", K_DBL, VOFF(stop_margin), 0, 0, 0, LO_CLOSED, 0.1, ">= 0 (0: run to end_delta)"},
+  {"run", "sep_load", K_DBL, VOFF(sep_load_frac), 0, 0, 1, LO_OPEN | HI_OPEN, 0.02, "in (0, 1)"},
   {"output", "snapshots", K_LIST, 0, 0, 0, 0, LO_CLOSED, 0, "a comma-separated list of end displacements >= 0"},
   {"output", "interval", K_DBL, 0, 0, 0, 0, LO_OPEN, -1, "> 0 (default: 0.0005)"},
 };
@@ -180,7 +181,7 @@ static int set_key(ver_scene *vs, int ki, const char *value, char *msg, size_t l
 {
   const keydef *k = &keys[ki];
   char sv[48];
-  char *base = (char *)&vs->sc;
+  char *base = (char *)vs;
   while (*value == ' ' || *value == '\t')
     value++;
   if (!*value) {
@@ -395,7 +396,7 @@ static void scene_defaults(ver_scene *vs, const char *path)
   char *dot = strrchr(vs->name, '.');
   if (dot && !strcmp(dot, ".ini"))
     *dot = '\0';
-  char *base = (char *)&vs->sc;
+  char *base = (char *)vs;
   for (int i = 0; i < NKEYS; i++) {
     if (keys[i].required || keys[i].type == K_LIST || !strcmp(keys[i].section, "output"))
       continue;

@@ -24,6 +24,8 @@ typedef struct {
   double snap[VER_MAX_SNAP];  /* end displacements at which particles are written       */
   int nsnap;
   double interval;            /* load/energy rows every this much end displacement      */
+  double stop_margin;         /* run: stop this far in delta past detected separation (0: never early) */
+  double sep_load_frac;       /* run: separation detected when |P| < this fraction of the peak */
   int allow_unstable;         /* accept dt above the CFL bound                           */
   int line[VER_NKEYS];        /* line each key was set on (0: default, -1: command line) */
   int seen[VER_NKEYS];

@@ -56,8 +56,6 @@ static mpm_scene fig6_scene(void)
   sc.dt = 0.1;
   sc.speed = 0.001;
   sc.end_delta = 0.1;
-  sc.stop_margin = 0.0;
-  sc.sep_load_frac = 0.02;
   return sc;
 }
 

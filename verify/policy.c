@@ -1,0 +1,383 @@
+/*
+ * policy.c - the checks of `delam verify` (sweep.h): for each case and across cases,
+ * every check's class and tolerance, next to the reason for it.  Pure: the input is
+ * the case's measured numbers and analytic bar, the output its ver_check list and
+ * verdict; tests/test_ver_policy.c drives it with made-up cases.
+ */
+#include <assert.h>
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "metrics.h"
+#include "sweep.h"
+
+/* Analytic end displacement where lambda reaches the separation threshold. */
+static double sep_ref(const ver_case *c)
+{
+  return ver_sep_ref(&c->ana, c->vs.sc.sep_threshold);
+}
+
+static ver_check *add_check(ver_case *c, const char *name, double measured, double reference, int rel)
+{
+  assert(c->nchk < VER_NCHECK);
+  ver_check *k = &c->chk[c->nchk++];
+  memset(k, 0, sizeof *k);
+  k->name = name;
+  k->measured = measured;
+  k->reference = reference;
+  k->rel = rel;
+  k->cls = VER_CLASS_PASS;
+  k->lim_lo = -INFINITY;
+  k->lim_hi = INFINITY;
+  return k;
+}
+
+static void known(ver_check *k, double lo, double hi)
+{
+  k->cls = VER_CLASS_KNOWN;
+  k->lim_lo = lo;
+  k->lim_hi = hi;
+}
+
+/*
+ * The checks of one case, each with its class and tolerance, and why.
+ *
+ * Classes come from the physics of the scene, decided before looking at a run:
+ *  - alpha = 90 (Fig. 6): the band lies along a grid line, one cell wide; the
+ *    paper's curves agree with the analytic ones.  Every check is pass-class.
+ *  - alpha != 90 (Figs. 7, 8, a45, a30): the band spreads over about two cells
+ *    (paper, Fig. 7 discussion), so it dissipates more than U0 per area, softens more
+ *    gently, separates later and takes more external work: D, W_ext, delta_sep, the
+ *    softening slope and the curve error are known-limit, bounded by what a band up to
+ *    ~3 cells wide can do (D <= 4 D_sep, separation before 4 x delta_sep, ...).  Band
+ *    width is known-limit (reference: 1 cell; the paper sees ~2).
+ *  - analytic snapback (g below its limit: fig8, a45, a30): the explicit method cannot
+ *    follow the load reversal; the softening slope is then negative where the
+ *    analytic one is positive (known-limit).
+ *  - Le = particle with several particles per cell (MODEL.md open point): the strain is
+ *    uniform along x inside a cell, so all sqrt(ppc) sub-columns of the band cell soften
+ *    together, each with Le = h / sqrt(ppc): the band dissipates sqrt(ppc) x U0 per area.
+ *    This case measures that choice; D, W_ext, delta_sep, softening and curve error are
+ *    known-limit, bounded by sqrt(ppc) x the analytic value (+10 %).
+ *  - peak load, elastic slope, energy balance and crack angle are pass-class everywhere.
+ */
+/* Curve errors below this fraction of Pmax are at the loading-rate floor. */
+#define VER_CURVE_FLOOR 0.02
+
+/* What decides a case's classes (see above). */
+typedef struct {
+  int a90;      /* plane along a grid line (alpha = 90)             */
+  int snap;     /* analytic snapback                                */
+  int lep;      /* Le = particle with several particles per cell    */
+  int ppc1;     /* one particle per cell                            */
+  double nside; /* sqrt(ppc)                                        */
+} case_class;
+
+/* the run itself */
+static void check_run(ver_case *c)
+{
+  ver_check *k;
+  k = add_check(c, "run", c->complete ? 1.0 : 0.0, 1.0, 0);
+  k->tol = 0;
+  snprintf(k->note, sizeof k->note, "the run reached its stop rule with finite state%s%.150s",
+           c->error[0] ? ": " : "", c->error[0] ? c->error : "");
+}
+
+/* peak load and elastic slope */
+static void check_peak_elastic(ver_case *c, const case_class *q)
+{
+  const ana_bar *a = &c->ana;
+  const mpm_scene *sc = &c->vs.sc;
+  const int ppc1 = q->ppc1;
+  ver_check *k;
+  /* one particle per cell samples the stress at the cell centre only; the peak is
+   * reached a little early (paper, Fig. 6c: 4 per cell clearly better than 1) */
+  k = add_check(c, "peak_P", c->peak_P, a->Pmax, 1);
+  k->tol = ppc1 ? 0.03 : 0.01;
+  snprintf(k->note, sizeof k->note, "peak grip load vs Pmax = r0 H (eq. 30); tol %g %% (ppc %d)", 100 * k->tol,
+           sc->ppc);
+
+  k = add_check(c, "k_elastic", c->k_elastic, a->k_elastic, 1);
+  k->tol = 0.01;
+  snprintf(k->note, sizeof k->note, "least-squares dP/ddelta for 0.1-0.6 peak vs E H / L");
+}
+
+/* softening slope */
+static void check_softening(ver_case *c, const case_class *q)
+{
+  const ana_bar *a = &c->ana;
+  const int a90 = q->a90;
+  const int snap = q->snap;
+  const int lep = q->lep;
+  const int ppc1 = q->ppc1;
+  ver_check *k;
+  k = add_check(c, "k_soft", c->k_soft, a->k_soft_peak, 1);
+  k->tol = ppc1 ? 0.10 : 0.05;
+  if (snap) {
+    known(k, -INFINITY, -1.0); /* measured slope negative where the analytic one is positive */
+    snprintf(k->note, sizeof k->note, "fit over 0.8-0.2 peak after the peak vs eq. 36; analytic snapback "
+             "(g = %.3g): explicit runs cannot follow it, so known-limit if negative", a->g);
+  } else if (!a90 || lep) {
+    known(k, 0.0, 1.0); /* softer (less steep) but still softening */
+    snprintf(k->note, sizeof k->note, "fit over 0.8-0.2 peak after the peak vs eq. 36; %s: known-limit if "
+             "softer but negative", lep ? "Le = particle doubles the band's compliance" : "inclined band is wider");
+  } else
+    snprintf(k->note, sizeof k->note, "fit over 0.8-0.2 peak after the peak vs eq. 36");
+}
+
+/* where the bar separated */
+static void check_separation(ver_case *c, const case_class *q)
+{
+  const mpm_scene *sc = &c->vs.sc;
+  const int a90 = q->a90;
+  const int lep = q->lep;
+  const int ppc1 = q->ppc1;
+  const double nside = q->nside;
+  ver_check *k;
+  /* The run detects separation when the load averaged over 4 L / c falls below
+   * sep_load x peak and reports the window's centre: about half a window (0.011 in
+   * delta at the paper's speed, 3 % of fig6's 0.375) after the drop.  The analytic
+   * reference is where lambda reaches the separation threshold (eqs. 31, 34), which is
+   * delta_sep itself for a threshold of 1. */
+  const double dref = sep_ref(c);
+  k = add_check(c, "delta_sep", c->delta_sep, dref, 1);
+  k->tol = ppc1 ? 0.06 : 0.04;
+  if (lep)
+    known(k, -k->tol, 1.1 * nside - 1.0);
+  else if (!a90)
+    known(k, -k->tol, 3.0);
+  snprintf(k->note, sizeof k->note, "detected separation vs analytic delta at lambda = %g (%.4g)",
+           sc->sep_threshold, dref);
+}
+
+/* dissipation, external work, energy balance */
+static void check_energy(ver_case *c, const case_class *q)
+{
+  const ana_bar *a = &c->ana;
+  const int a90 = q->a90;
+  const int lep = q->lep;
+  const double nside = q->nside;
+  ver_check *k;
+  k = add_check(c, "D_final", c->D_final, a->D_sep, 1);
+  k->tol = 0.02;
+  if (lep)
+    known(k, -k->tol, 1.1 * nside - 1.0);
+  else if (!a90)
+    known(k, -k->tol, 3.0);
+  snprintf(k->note, sizeof k->note, "dissipation at the end vs UD x area = %.4g%s", a->D_sep,
+           !a90 && !lep ? " (inclined band: more, paper Fig. 7)" : "");
+
+  /* W_ext also holds the kinetic and elastic energy still in the bar at the end.  The
+   * inclined bound is the dissipation bound (4 D_sep): the work ends up dissipated, and
+   * where the traction is dropped at separation (or an unfollowed snapback releases
+   * stored energy) it is not the analytic UF per area that the work is compared with. */
+  k = add_check(c, "W_ext_final", c->W_ext_final, a->W_sep, 1);
+  k->tol = 0.03;
+  if (lep)
+    known(k, -k->tol, 1.1 * nside - 1.0);
+  else if (!a90)
+    known(k, -k->tol, 4.0 * a->D_sep / a->W_sep - 1.0);
+  snprintf(k->note, sizeof k->note, "external work at the end vs UF x area = %.4g", a->W_sep);
+
+  /* Inclined scenes: after the band has failed, the single-valued velocity of a cell
+   * still couples the two parts (the paper, Fig. 8 discussion: separation "not as clean",
+   * stresses built up until the separation is a cell wide); a load of a few % of the peak
+   * persists and its work is not all accounted for.  Known-limit up to 15 %. */
+  k = add_check(c, "energy_residual", c->energy_residual, 0.0, 0);
+  k->tol = 0.02;
+  if (!a90)
+    known(k, 0.0, 0.15);
+  snprintf(k->note, sizeof k->note, "max |W_ext - KE - SE - W_coh| / max W_ext over the rows%s",
+           a90 ? "" : " (inclined: residual load after the band fails, known-limit to 0.15)");
+}
+
+/* band width, crack angle, curve error */
+static void check_band(ver_case *c, const case_class *q)
+{
+  const ana_bar *a = &c->ana;
+  const mpm_scene *sc = &c->vs.sc;
+  const int a90 = q->a90;
+  const int snap = q->snap;
+  const int lep = q->lep;
+  const int ppc1 = q->ppc1;
+  ver_check *k;
+  k = add_check(c, "band_width", c->band_width, 1.0, 0);
+  k->tol = 0.5;
+  if (!a90)
+    known(k, -0.5, 2.0);
+  snprintf(k->note, sizeof k->note, "cells: (particles with lambda > 0.5) x h^2/ppc / (H / sin a) / h; "
+           "projected extent %.3g cells, %zu particles", c->band_extent, c->band_count);
+
+  /* a staircase of cells through a fixed grid approximates the line; the coarser the
+   * grid the larger the deviation it can show */
+  k = add_check(c, "crack_angle", c->angle, sc->alpha_deg, 0);
+  k->measured = c->angle;
+  k->tol = a90 ? 1.0 : 10.0;
+  snprintf(k->note, sizeof k->note, "principal axis of the decohered particles' x0, y0 vs alpha (deg)");
+
+  k = add_check(c, "curve_l2", c->curve_l2, 0.0, 0);
+  k->tol = ppc1 ? 0.04 : 0.03;
+  if (!a90 || lep || snap)
+    known(k, 0.0, 0.35);
+  snprintf(k->note, sizeof k->note, "RMS of P - P_ana(delta) / Pmax over rows up to lambda = %g or the peak "
+           "(delta %.4g)", sc->sep_threshold, ver_curve_end(a, sc->sep_threshold));
+}
+
+/* Judges every check (angles mod 180) and sets the case's verdict. */
+static void judge_all(ver_case *c)
+{
+  /* the angle of a line is defined mod 180: judge the wrapped difference */
+  for (int i = 0; i < c->nchk; i++) {
+    ver_check *q = &c->chk[i];
+    if (!c->have_ana && strcmp(q->name, "run")) {
+      q->measured = NAN;
+      snprintf(q->note, sizeof q->note, "no analytic reference for this scene");
+    }
+    ver_check_judge(q);
+    if (!strcmp(q->name, "crack_angle") && isfinite(q->measured)) {
+      q->error = ver_angle_diff(q->measured, q->reference);
+      q->verdict = fabs(q->error) <= q->tol ? VER_PASS : VER_FAIL;
+    }
+  }
+  c->verdict = VER_PASS;
+  for (int i = 0; i < c->nchk; i++) {
+    if (c->chk[i].verdict == VER_FAIL)
+      c->verdict = VER_FAIL;
+    else if (c->chk[i].verdict == VER_KNOWN && c->verdict == VER_PASS)
+      c->verdict = VER_KNOWN;
+  }
+}
+
+void ver_policy_case(ver_case *c)
+{
+  const mpm_scene *sc = &c->vs.sc;
+  const case_class q = {ver_case_a90(c), c->ana.snapback, sc->le_mode == MPM_LE_PARTICLE && sc->ppc > 1,
+                        sc->ppc == 1, sqrt((double)sc->ppc)};
+  c->nchk = 0;
+  check_run(c);
+  check_peak_elastic(c, &q);
+  check_softening(c, &q);
+  check_separation(c, &q);
+  check_energy(c, &q);
+  check_band(c, &q);
+  judge_all(c);
+}
+
+/* ------------------------------------------------------------------ across cases */
+
+static int cross_add(ver_cross *x, int *nx, const char *name, const char *scene, const char *over, double fixed)
+{
+  for (int i = 0; i < *nx; i++)
+    if (!strcmp(x[i].name, name) && !strcmp(x[i].scene, scene) && x[i].fixed == fixed)
+      return i;
+  if (*nx == VER_MAXCROSS)
+    return -1;
+  ver_cross *g = &x[(*nx)++];
+  memset(g, 0, sizeof *g);
+  snprintf(g->name, sizeof g->name, "%s", name);
+  snprintf(g->scene, sizeof g->scene, "%s", scene);
+  snprintf(g->over, sizeof g->over, "%s", over);
+  g->fixed = fixed;
+  return *nx - 1;
+}
+
+/*
+ * Energy invariance: the spread (max - min) / mean of D_final over h (ppc fixed) and
+ * over ppc (h fixed), per scene, scene-as-written cases only.  alpha = 90: pass-class,
+ * 2 %.  Inclined: known-limit up to 50 % (the band's width in cells, hence its
+ * dissipation, changes with the grid).
+ *
+ * Order of convergence: least-squares slope p of log(curve_l2) against log(h), per
+ * scene and ppc.  Only the elastic branch is plain discretisation error; on the
+ * softening branch the model is regularised by Le = h (the band is one cell whatever
+ * h), and the error has a floor set by the ringing of a dynamic run at a finite
+ * loading rate (its amplitude depends on the speed, not on h).  So no positive rate
+ * is claimed: alpha = 90 is pass-class one-sided, p >= 0 (the error must not grow
+ * under refinement).  Inclined: the band never becomes a sharp line, known-limit for
+ * p >= -1 (the error not growing faster than 1/h).
+ */
+int ver_policy_cross(ver_case *cs, int n, ver_cross *x)
+{
+  int nx = 0;
+  for (int i = 0; i < n; i++) {
+    ver_case *c = &cs[i];
+    if (c->var.set || !c->complete || !c->have_ana)
+      continue;
+    const char *names[3] = {"D_invariance_h", "D_invariance_ppc", "order_h"};
+    const char *over[3] = {"h", "ppc", "h"};
+    const double fixed[3] = {c->ppc, c->h, c->ppc};
+    const double xv[3] = {c->h, c->ppc, c->h};
+    const double yv[3] = {c->D_final, c->D_final, c->curve_l2};
+    for (int t = 0; t < 3; t++) {
+      const int gi = cross_add(x, &nx, names[t], c->scene, over[t], fixed[t]);
+      if (gi < 0 || x[gi].n == 8)
+        continue;
+      ver_cross *g = &x[gi];
+      g->x[g->n] = xv[t];
+      g->y[g->n] = yv[t];
+      snprintf(g->ids[g->n], sizeof g->ids[0], "%s", c->id);
+      g->n++;
+    }
+    /* remember alpha = 90 in the group through the check's class below */
+  }
+  int m = 0;
+  for (int i = 0; i < nx; i++) {
+    ver_cross *g = &x[i];
+    if (g->n < 2)
+      continue;
+    int a90 = 1;
+    for (int j = 0; j < n; j++)
+      if (!strcmp(cs[j].scene, g->scene))
+        a90 = ver_case_a90(&cs[j]);
+    ver_check *k = &g->chk;
+    memset(k, 0, sizeof *k);
+    k->lim_lo = -INFINITY;
+    k->lim_hi = INFINITY;
+    if (!strcmp(g->name, "order_h")) {
+      k->name = "order_h";
+      k->measured = ver_conv_order(g->x, g->y, (size_t)g->n, NULL);
+      k->reference = 0.0;
+      k->tol = 0.0;
+      snprintf(k->note, sizeof k->note, "observed order p of curve_l2 ~ h^p (ppc %g); one-sided: pass if p >= 0",
+               g->fixed);
+      ver_check_judge(k);
+      if (isfinite(k->error) && k->error >= 0.0)
+        k->verdict = VER_PASS; /* one-sided: any order >= 0 passes */
+      /* An order is only meaningful while the discretisation error dominates.  Where
+       * every error is already below VER_CURVE_FLOOR of Pmax (fig6 at 4 and 9 per cell:
+       * about 1 %, the ringing of the quasi-static loading, which h does not reduce) the
+       * check passes and says so, with the measured order kept. */
+      double emax = 0.0;
+      for (int j = 0; j < g->n; j++)
+        emax = fmax(emax, g->y[j]);
+      if (k->verdict != VER_PASS && emax < VER_CURVE_FLOOR) {
+        k->verdict = VER_PASS;
+        snprintf(k->note, sizeof k->note, "observed order p of curve_l2 ~ h^p (ppc %g); every error is below "
+                 "the %g floor (largest %.3g), where the order is not meaningful", g->fixed, VER_CURVE_FLOOR, emax);
+      }
+      if (!a90) {
+        k->cls = VER_CLASS_KNOWN;
+        k->lim_lo = -1.0;
+        if (isfinite(k->error) && k->verdict == VER_FAIL && k->error >= k->lim_lo)
+          k->verdict = VER_KNOWN;
+      }
+    } else {
+      k->name = strcmp(g->name, "D_invariance_h") ? "D_invariance_ppc" : "D_invariance_h";
+      k->measured = ver_spread(g->y, (size_t)g->n);
+      k->reference = 0.0;
+      k->tol = 0.02;
+      if (!a90) {
+        k->cls = VER_CLASS_KNOWN;
+        k->lim_lo = 0.0;
+        k->lim_hi = 0.5;
+      }
+      snprintf(k->note, sizeof k->note, "(max - min) / mean of D_final over %s at %s %g", g->over,
+               strcmp(g->over, "h") ? "h" : "ppc", g->fixed);
+      ver_check_judge(k);
+    }
+    x[m++] = *g;
+  }
+  return m;
+}
+

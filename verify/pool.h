@@ -1,0 +1,33 @@
+/*
+ * pool.h - the one process pool of verify/ (prefix ver_pool_): n jobs, at most `jobs`
+ * children at once, in a given order.  `delam verify` forks a child per case (a
+ * crashing case cannot take the sweep with it); `delam report` forks + execs `delam
+ * run` and gnuplot.  The caller says how to start job i and hears when it ends.
+ */
+#ifndef DELAM_VER_POOL_H
+#define DELAM_VER_POOL_H
+
+#include <sys/types.h>
+
+typedef struct {
+  int n;                 /* jobs                                                      */
+  int jobs;              /* children at once (>= 1)                                   */
+  const int *order;      /* the order to start them in; NULL: 0 .. n-1                */
+  /* starts job i in a child and returns its pid (-1: it could not start) */
+  pid_t (*start)(int i, void *ctx);
+  /* optional: after a round of starts, the jobs running now */
+  void (*started)(const int *running, int nrunning, int done, void *ctx);
+  /* job i ended: exit status (128 + signal if killed, -1 if it never started), the
+   * signal that killed it (0 if none), its wall time, jobs done so far */
+  void (*finished)(int i, int status, int sig, double wall_s, int done, void *ctx);
+  void *ctx;
+} ver_pool;
+
+/* Runs every job; 0, or -1 if out of memory (nothing started). */
+int ver_pool_run(const ver_pool *p);
+
+/* A start helper: fork + exec argv (PATH search) in folder cwd (NULL: here) with stdout
+ * and stderr to the file log (opened after the chdir). */
+pid_t ver_pool_spawn(char *const argv[], const char *cwd, const char *log);
+
+#endif

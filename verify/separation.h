@@ -1,0 +1,47 @@
+/*
+ * separation.h - when has the bar separated?  (prefix ver_sep_)  The run's stop rule
+ * asks this after every output row; it is kept apart from the time loop so that it can
+ * be tested on made-up particles and loads.  Two tests, and the first one counts:
+ *  - kinematically (cut): the separated particles (lambda past the threshold, eqs.
+ *    56-58) cover every row of particles, so no row still holds the bar together;
+ *  - by the load: after the peak, the grip and fixed-end loads averaged over a window
+ *    of win rows (the bar's longest period, 4 L / c, so that ringing averages out)
+ *    both fall below frac x the peak; delta is the window's centre.
+ * Inclined bands need the kinematic test: one velocity per cell keeps a few % of the
+ * load on the grip after the band has failed, and the load test never fires.
+ */
+#ifndef DELAM_VER_SEPARATION_H
+#define DELAM_VER_SEPARATION_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+typedef struct {
+  int nrow;              /* rows of particles (H / (h / sqrt(ppc)))        */
+  double dy;             /* their spacing                                  */
+  uint8_t *cut;          /* per row: holds a separated particle            */
+  long win;              /* load window, in output rows                    */
+  double frac;           /* load threshold, fraction of the peak           */
+  double *ring;          /* the last win rows: delta, grip and fixed load  */
+  long nseen;            /* output rows seen                               */
+  double delta_cut;      /* first delta of the cut test; -1 before         */
+  double delta_load;     /* first delta of the load test; -1 before        */
+  double delta_sep;      /* the first of the two; -1 before                */
+} ver_sep;
+
+/* Sets up the detector for a bar of height H, spacing h with ppc particles a cell, a
+ * window of win >= 1 rows and a load threshold frac.  0, or -1 (out of memory). */
+int ver_sep_init(ver_sep *d, double H, double h, int ppc, long win, double frac);
+void ver_sep_free(ver_sep *d);
+
+/* The cut test over n particles at reference heights y0 with separation flags sep;
+ * particles with mat[k] == skip_mat are not part of the bar (mat may be NULL). */
+void ver_sep_cut(ver_sep *d, const double *y0, const uint8_t *sep, const uint8_t *mat, int skip_mat, size_t n,
+                 double delta);
+
+/* The load test, after each output row (and after ver_sep_cut for that row, if it is
+ * called): its delta and interval-averaged grip and fixed-end loads, and the largest
+ * grip load so far (peak) and where (delta_peak).  Sets delta_sep. */
+void ver_sep_load(ver_sep *d, double delta, double Pg, double Pf, double peak, double delta_peak);
+
+#endif

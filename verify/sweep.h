@@ -1,0 +1,103 @@
+/*
+ * sweep.h - the parts of `delam verify` (private to verify/): a case of the sweep
+ * (ver_case) and a cross-case group (ver_cross), and the steps the driver (verify.c)
+ * strings together:
+ *   sweep_cases.c  which cases (the quick list, or every scene x h x ppc), their
+ *                  scenes and analytic bars; reading back what a run left
+ *   policy.c       the checks of a case and across cases, with their classes and
+ *                  tolerances: pure functions of the measured numbers (unit-tested)
+ *   sweep_out.c    verify.json, verify.csv, the printed lines and table
+ */
+#ifndef DELAM_VER_SWEEP_H
+#define DELAM_VER_SWEEP_H
+
+#include <stddef.h>
+
+#include "ana.h"
+#include "check.h"
+#include "scene.h"
+#include "verify.h"
+
+#define VER_MAXSET 4
+#define VER_NCHECK 11
+#define VER_MAXCROSS 64
+
+/* A variant of a scene: a suffix for the case id and the override it stands for. */
+typedef struct {
+  const char *suffix; /* "" for the scene as written */
+  const char *set;    /* "section.key=value" or NULL */
+} ver_variant;
+
+
+typedef struct {
+  /* what to run */
+  char id[128];
+  char scene[64];
+  char path[600];
+  ver_variant var;
+  double h;
+  int ppc;
+  char sets[VER_MAXSET][128];      /* the --set overrides, as `delam run` gets them     */
+  int nset;
+  ver_scene vs;                /* the scene as the run sees it                      */
+  int have_ana;
+  ana_bar ana;
+  double end_delta;
+  double cost;                 /* particles x steps to the end, for scheduling       */
+  /* how the run went */
+  int exit_code;               /* child's exit status; -1 not run (merge)            */
+  int term_sig;                /* signal that killed the child, 0 if none            */
+  double wall_s;               /* wall time of the child (or summary wall_s on merge) */
+  int have_summary, complete;
+  char error[600];
+  /* measured */
+  double peak_P, delta_peak, delta_sep, k_elastic, D_final, W_ext_final, energy_residual, delta_end;
+  double k_soft, curve_l2, band_width, band_extent, angle;
+  double D_diffuse;  /* dissipation outside the band, over U0 x area (ver_diffuse_share) */
+  size_t band_count;
+  ver_check chk[VER_NCHECK];
+  int nchk;
+  int verdict;
+} ver_case;
+
+typedef struct {
+  char name[64];          /* "D_invariance_h", "D_invariance_ppc", "order_h"          */
+  char scene[64];
+  char over[8];           /* "h" or "ppc": what varies                               */
+  double fixed;           /* the ppc (or h) held fixed                                */
+  int n;
+  double x[8], y[8];      /* the varying parameter and the number per case            */
+  char ids[8][128];
+  ver_check chk;
+} ver_cross;
+
+/* sweep_cases.c */
+/* 1 if the case's plane is at 90 deg (along a grid line). */
+int ver_case_a90(const ver_case *c);
+/* Sets up case c of scene file path (name scene) at h, ppc with variant v: id,
+ * overrides, analytic bar, end displacement.  0, or 2 with err. */
+int ver_case_init(ver_case *c, const char *path, const char *scene, double h, int ppc, ver_variant v, char *err,
+                  size_t len);
+/* The case list of o (quick or full); 0, or 2 with a message on stderr. */
+int ver_sweep_cases(const ver_verify_opts *o, ver_case **out, int *nout);
+/* With o->merge_found: the cases of both lists whose folders DIR holds; 0 or 2. */
+int ver_sweep_found(const ver_verify_opts *o, ver_case **cs, int *n);
+/* DIR/<id>. */
+void ver_case_dir(const ver_verify_opts *o, const ver_case *c, char *buf, size_t len);
+/* Reads what the run left in DIR/<id>/ and measures from it (metrics.h). */
+void ver_case_read(const ver_verify_opts *o, ver_case *c);
+
+/* policy.c */
+/* The checks of one case (c->chk, c->verdict) from its measured numbers. */
+void ver_policy_case(ver_case *c);
+/* The cross-case checks over cs into x (at most VER_MAXCROSS); their number. */
+int ver_policy_cross(ver_case *cs, int n, ver_cross *x);
+
+/* sweep_out.c */
+int ver_sweep_write_json(const ver_verify_opts *o, const ver_case *cs, int n, const ver_cross *x, int nx,
+                         double wall, int rc);
+int ver_sweep_write_csv(const ver_verify_opts *o, const ver_case *cs, int n);
+void ver_sweep_print_check(const char *id, const ver_check *k);
+void ver_sweep_print_table(const ver_case *cs, int n, const ver_cross *x, int nx);
+
+#endif

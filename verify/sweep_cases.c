@@ -1,0 +1,325 @@
+/*
+ * sweep_cases.c - the cases of `delam verify` (sweep.h): the quick list or every
+ * scene x h x ppc, each case's scene with the overrides `delam run` gets, its analytic
+ * bar (ver_scene_bar) and end displacement; and reading back what a run left.
+ */
+#include <dirent.h>
+#include <errno.h>
+#include <math.h>
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "io.h"
+#include "metrics.h"
+#include "summary.h"
+#include "sweep.h"
+
+static const ver_variant V_BASE = {"", NULL};
+static const ver_variant V_LEP = {"Leparticle", "decohesion.Le=particle"};
+static const ver_variant V_SEP8 = {"sep0.8", "decohesion.separation=0.8"};
+
+/* The scene file with the same overrides `delam run --h H --ppc N --set ...` applies
+ * (cmd_run.c: dt scaled with h to keep the file's Courant number). */
+static int build_scene(const char *path, double h, int ppc, char sets[][128], int nset, ver_scene *vs,
+                       char *err, size_t len)
+{
+  if (ver_scene_parse(path, vs, err, len))
+    return 2;
+  char buf[128];
+  if (h > 0) {
+    const double dt = vs->sc.dt * h / vs->sc.h;
+    snprintf(buf, sizeof buf, "grid.h=%.17g", h);
+    if (ver_scene_set(vs, buf, err, len))
+      return 2;
+    snprintf(buf, sizeof buf, "time.dt=%.17g", dt);
+    if (ver_scene_set(vs, buf, err, len))
+      return 2;
+  }
+  if (ppc > 0) {
+    snprintf(buf, sizeof buf, "grid.ppc=%d", ppc);
+    if (ver_scene_set(vs, buf, err, len))
+      return 2;
+  }
+  for (int i = 0; i < nset; i++)
+    if (ver_scene_set(vs, sets[i], err, len))
+      return 2;
+  return ver_scene_validate(vs, err, len);
+}
+
+int ver_case_a90(const ver_case *c)
+{
+  return fabs(c->vs.sc.alpha_deg - 90.0) < 1e-9;
+}
+
+/* Sets up case c: id, overrides, the analytic bar and the end displacement.
+ * end_delta covers separation with margin (the run stops itself stop_margin past
+ * separation, and the grid is sized to end_delta, so it is kept as small as is safe):
+ * 4 x the analytic delta_sep, at least 1, for alpha = 90; inclined bands dissipate
+ * several times U0 per area (paper, Fig. 7) and separate later: at least 1.2, past
+ * every separation measured (0.61 to 0.87 on h = 2 and 4); a band that has not cut the
+ * bar by then is reported as not separating. */
+int ver_case_init(ver_case *c, const char *path, const char *scene, double h, int ppc, ver_variant v, char *err,
+                     size_t len)
+{
+  memset(c, 0, sizeof *c);
+  snprintf(c->path, sizeof c->path, "%s", path);
+  snprintf(c->scene, sizeof c->scene, "%s", scene);
+  c->var = v;
+  c->h = h;
+  c->ppc = ppc;
+  c->exit_code = -1;
+  c->delta_sep = NAN;
+  if (v.set)
+    snprintf(c->sets[c->nset++], sizeof c->sets[0], "%s", v.set);
+  if (build_scene(path, h, ppc, c->sets, c->nset, &c->vs, err, len))
+    return 2;
+  char aerr[256];
+  double mult = 4.0, least = 1.0;
+  if (c->vs.sc.model > 0 && ver_scene_bar(&c->vs.sc, &c->ana, aerr, sizeof aerr) == 0) {
+    c->have_ana = 1;
+    if (!ver_case_a90(c))
+      least = 1.2;
+    c->end_delta = fmax(least, mult * c->ana.delta_sep);
+  } else {
+    c->end_delta = c->vs.sc.end_delta;
+  }
+  c->nset = 0;
+  /* one snapshot at delta 0 stands for none: an empty list is refused by the scene
+   * reader, and snapshots later than separation would keep the run going */
+  snprintf(c->sets[c->nset++], sizeof c->sets[0], "output.snapshots=0");
+  snprintf(c->sets[c->nset++], sizeof c->sets[0], "run.end_delta=%.6g", c->end_delta);
+  if (v.set)
+    snprintf(c->sets[c->nset++], sizeof c->sets[0], "%s", v.set);
+  if (build_scene(path, h, ppc, c->sets, c->nset, &c->vs, err, len))
+    return 2;
+  char base[100];
+  ver_scene_case_id(&c->vs, base, sizeof base);
+  snprintf(c->id, sizeof c->id, "%s%s%s", base, v.suffix[0] ? "-" : "", v.suffix);
+  const mpm_scene *sc = &c->vs.sc;
+  c->cost = (sc->L / sc->h) * (sc->H / sc->h) * sc->ppc * (c->end_delta / (sc->speed * sc->dt));
+  return 0;
+}
+
+static int cmp_str(const void *a, const void *b)
+{
+  return strcmp(*(char *const *)a, *(char *const *)b);
+}
+
+/* The case list: the quick subset, or every scene of the folder x h x ppc. */
+int ver_sweep_cases(const ver_verify_opts *o, ver_case **out, int *nout)
+{
+  char err[1024];
+  ver_case *cs = NULL;
+  int n = 0;
+  if (!o->full) {
+    static const struct {
+      const char *scene;
+      double h;
+      int ppc;
+      const ver_variant *v;
+    } q[] = {
+      {"fig6", 8, 1, &V_BASE}, {"fig6", 8, 4, &V_BASE}, {"fig6", 4, 4, &V_BASE},
+      {"fig6", 4, 1, &V_BASE}, {"fig6", 2, 4, &V_BASE},
+      {"fig6", 8, 4, &V_LEP},  {"fig6", 8, 4, &V_SEP8},
+      {"fig7", 4, 4, &V_BASE},
+    };
+    const int nq = (int)(sizeof q / sizeof q[0]);
+    cs = calloc((size_t)nq, sizeof *cs);
+    if (!cs)
+      return 2;
+    for (int i = 0; i < nq; i++) {
+      char path[600];
+      snprintf(path, sizeof path, "%s/%s.ini", o->scenes, q[i].scene);
+      if (ver_case_init(&cs[n], path, q[i].scene, q[i].h, q[i].ppc, *q[i].v, err, sizeof err)) {
+        fprintf(stderr, "delam verify: %s\n", err);
+        free(cs);
+        return 2;
+      }
+      n++;
+    }
+  } else {
+    DIR *d = opendir(o->scenes);
+    if (!d) {
+      fprintf(stderr, "delam verify: %s: cannot open the scene folder: %s\n", o->scenes, strerror(errno));
+      return 2;
+    }
+    char *names[256];
+    int nn = 0;
+    struct dirent *e;
+    while ((e = readdir(d)) && nn < 256) {
+      const size_t l = strlen(e->d_name);
+      if (l > 4 && !strcmp(e->d_name + l - 4, ".ini") && e->d_name[0] != '.')
+        names[nn++] = strdup(e->d_name);
+    }
+    closedir(d);
+    qsort(names, (size_t)nn, sizeof names[0], cmp_str);
+    static const double hs[] = {8, 4, 2, 1};
+    static const int ps[] = {1, 4, 9};
+    cs = calloc((size_t)(nn * 12 + 1), sizeof *cs);
+    int rc = cs ? 0 : 2;
+    for (int i = 0; i < nn && !rc; i++) {
+      char path[600], scene[64];
+      snprintf(path, sizeof path, "%s/%s", o->scenes, names[i]);
+      snprintf(scene, sizeof scene, "%.*s", (int)strlen(names[i]) - 4, names[i]);
+      for (int a = 0; a < 4 && !rc; a++)
+        for (int b = 0; b < 3 && !rc; b++) {
+          if (ver_case_init(&cs[n], path, scene, hs[a], ps[b], V_BASE, err, sizeof err)) {
+            fprintf(stderr, "delam verify: %s\n", err);
+            rc = 2;
+          } else
+            n++;
+        }
+    }
+    for (int i = 0; i < nn; i++)
+      free(names[i]);
+    if (rc) {
+      free(cs);
+      return rc;
+    }
+    if (n == 0) {
+      fprintf(stderr, "delam verify: %s: no scene files (*.ini)\n", o->scenes);
+      free(cs);
+      return 2;
+    }
+  }
+  *out = cs;
+  *nout = n;
+  return 0;
+}
+
+void ver_case_dir(const ver_verify_opts *o, const ver_case *c, char *buf, size_t len)
+{
+  snprintf(buf, len, "%s/%s", o->outdir, c->id);
+}
+
+/* Reads what the run left in DIR/<id>/ and measures from it. */
+void ver_case_read(const ver_verify_opts *o, ver_case *c)
+{
+  char dir[800], path[900];
+  ver_case_dir(o, c, dir, sizeof dir);
+  c->peak_P = c->delta_peak = c->delta_sep = c->k_elastic = NAN;
+  c->D_final = c->W_ext_final = c->energy_residual = c->delta_end = NAN;
+  c->k_soft = c->curve_l2 = c->band_width = c->band_extent = c->angle = c->D_diffuse = NAN;
+  ver_summary_doc sd;
+  if (ver_summary_read(dir, &sd) == 0) {
+    const ver_summary *u = &sd.u;
+    c->have_summary = 1;
+    c->complete = u->complete;
+    if (sd.error[0] && !c->error[0])
+      snprintf(c->error, sizeof c->error, "%s", sd.error);
+    c->peak_P = u->peak_P;
+    c->delta_peak = u->delta_peak;
+    c->delta_sep = u->delta_sep;
+    if (c->delta_sep < 0)
+      c->delta_sep = NAN; /* -1: no separation detected before end_delta */
+    c->k_elastic = u->k_elastic;
+    c->D_final = u->D_final;
+    c->W_ext_final = u->W_ext_final;
+    c->energy_residual = u->energy_residual;
+    c->delta_end = u->delta_end;
+    if (c->exit_code < 0)
+      c->wall_s = u->wall_s;
+  }
+  if (!c->error[0]) {
+    snprintf(path, sizeof path, "%s/error.txt", dir);
+    char *et = ver_io_slurp(path, NULL, 1 << 16);
+    if (et) {
+      char *nl = strchr(et, '\n');
+      if (nl)
+        *nl = '\0';
+      snprintf(c->error, sizeof c->error, "%s", et);
+      free(et);
+    }
+  }
+  if (!c->have_summary && !c->error[0]) {
+    if (c->term_sig)
+      snprintf(c->error, sizeof c->error, "killed by signal %d (%s); no summary.json", c->term_sig,
+               strsignal(c->term_sig));
+    else
+      snprintf(c->error, sizeof c->error, "no summary.json in %.400s (not run, or the run crashed)", dir);
+  }
+  if (c->term_sig && c->have_summary)
+    c->complete = 0;
+  static const char *const lcols[] = {"delta", "P_grip"};
+  double *lc[2];
+  snprintf(path, sizeof path, "%s/load.csv", dir);
+  const long nl = ver_csv_read(path, lcols, 2, lc);
+  if (nl > 0 && c->have_ana) {
+    c->k_soft = ver_softening_slope(lc[0], lc[1], (size_t)nl, VER_SOFT_HI, VER_SOFT_LO);
+    c->curve_l2 = ver_curve_err_bar(&c->ana, lc[0], lc[1], (size_t)nl, ver_curve_end(&c->ana, c->vs.sc.sep_threshold), NULL);
+  }
+  for (int k = 0; k < 2; k++)
+    free(lc[k]);
+  static const char *const fcols[] = {"x0", "y0", "lambda"};
+  double *fc[3];
+  snprintf(path, sizeof path, "%s/final.csv", dir);
+  const long nf = ver_csv_read(path, fcols, 3, fc);
+  if (nf > 0) {
+    const mpm_scene *sc = &c->vs.sc;
+    const double thr = VER_BAND_LAMBDA;
+    c->band_width = ver_band_width(fc[0], fc[1], fc[2], (size_t)nf, thr, sc->alpha_deg, sc->h, sc->ppc, sc->H,
+                                   &c->band_extent, &c->band_count);
+    c->angle = ver_crack_angle(fc[0], fc[1], fc[2], (size_t)nf, thr);
+    if (c->have_ana && c->ana.D_sep > 0.0)
+      c->D_diffuse = ver_diffuse_share(fc[2], (size_t)nf, thr) * c->D_final / c->ana.D_sep;
+  }
+  for (int k = 0; k < 3; k++)
+    free(fc[k]);
+}
+
+/* Keeps the cases whose folder DIR holds; their number. */
+static int keep_found(const ver_verify_opts *o, ver_case *cs, int n)
+{
+  int m = 0;
+  for (int i = 0; i < n; i++) {
+    char dir[1200];
+    struct stat st;
+    ver_case_dir(o, &cs[i], dir, sizeof dir);
+    if (stat(dir, &st) == 0 && S_ISDIR(st.st_mode))
+      cs[m++] = cs[i];
+  }
+  return m;
+}
+
+
+/* With o->merge_found: the cases of both lists (full, then the quick variants) whose
+ * folders DIR holds.  Frees *out on failure. */
+int ver_sweep_found(const ver_verify_opts *o, ver_case **out, int *nout)
+{
+  ver_case *cs = *out, *cq;
+  int n = *nout, nq;
+  ver_verify_opts q = *o;
+  q.full = !o->full;
+  const int mk = ver_sweep_cases(&q, &cq, &nq);
+  if (mk) {
+    free(cs);
+    return mk;
+  }
+  ver_case *all = realloc(cs, (size_t)(n + nq) * sizeof *cs);
+  if (!all) {
+    free(cs);
+    free(cq);
+    return 2;
+  }
+  cs = all;
+  for (int i = 0; i < nq; i++) {
+    int dup = 0;
+    for (int j = 0; j < n && !dup; j++)
+      dup = !strcmp(cs[j].id, cq[i].id);
+    if (!dup)
+      cs[n++] = cq[i];
+  }
+  free(cq);
+  n = keep_found(o, cs, n);
+  if (n == 0) {
+    fprintf(stderr, "delam verify: %s holds no case folder of the full or the quick list\n", o->outdir);
+    free(cs);
+    return 2;
+  }
+  *out = cs;
+  *nout = n;
+  return 0;
+}

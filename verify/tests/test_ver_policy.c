@@ -1,0 +1,204 @@
+/*
+ * test_ver_policy.c - the check policy of `delam verify` (policy.c) on made-up cases
+ * whose measured numbers are set by hand around the analytic bar: each class decision
+ * (alpha = 90 pass-class, inclined known-limit, snapback softening, Le = particle) and
+ * each side of a tolerance and a known-limit bound, and the cross-case checks
+ * (D spread over h, order of the curve error, the floor below which no order is asked).
+ */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "sweep.h"
+
+/* A Fig. 6 case (alpha 90, h 8, ppc 4) whose numbers equal the analytic ones. */
+static void fig6_case(ver_case *c, int ppc)
+{
+  memset(c, 0, sizeof *c);
+  snprintf(c->id, sizeof c->id, "fig6-h8-ppc%d", ppc);
+  snprintf(c->scene, sizeof c->scene, "fig6");
+  c->h = 8;
+  c->ppc = ppc;
+  ana_params p;
+  ana_params_default(&p);
+  assert_int_equal(ana_bar_init(&p, &c->ana, NULL, 0), ANA_OK);
+  c->have_ana = 1;
+  mpm_scene *sc = &c->vs.sc;
+  sc->alpha_deg = 90;
+  sc->h = 8;
+  sc->ppc = ppc;
+  sc->H = p.H;
+  sc->le_mode = MPM_LE_CELL;
+  sc->sep_threshold = 1.0;
+  c->complete = 1;
+  c->peak_P = c->ana.Pmax;
+  c->k_elastic = c->ana.k_elastic;
+  c->k_soft = c->ana.k_soft_peak;
+  c->delta_sep = c->ana.delta_sep;
+  c->D_final = c->ana.D_sep;
+  c->W_ext_final = c->ana.W_sep;
+  c->energy_residual = 0.001;
+  c->band_width = 1.0;
+  c->angle = 90.0;
+  c->curve_l2 = 0.01;
+}
+
+static const ver_check *chk(const ver_case *c, const char *name)
+{
+  for (int i = 0; i < c->nchk; i++)
+    if (!strcmp(c->chk[i].name, name))
+      return &c->chk[i];
+  fail_msg("no check %s", name);
+  return NULL;
+}
+
+static void test_ver_policy_fig6_pass_and_fail(void **state)
+{
+  (void)state;
+  ver_case c;
+  fig6_case(&c, 4);
+  ver_policy_case(&c);
+  assert_int_equal(c.verdict, VER_PASS);
+  assert_int_equal(c.nchk, 11);
+  /* peak 0.9 % low at 4 ppc: inside 1 %; 1.1 %: fails (pass-class, no known-limit) */
+  c.peak_P = 0.991 * c.ana.Pmax;
+  ver_policy_case(&c);
+  assert_int_equal(chk(&c, "peak_P")->verdict, VER_PASS);
+  c.peak_P = 0.989 * c.ana.Pmax;
+  ver_policy_case(&c);
+  assert_int_equal(chk(&c, "peak_P")->verdict, VER_FAIL);
+  assert_int_equal(c.verdict, VER_FAIL);
+  /* one particle per cell: 3 % */
+  fig6_case(&c, 1);
+  c.peak_P = 0.975 * c.ana.Pmax;
+  ver_policy_case(&c);
+  assert_int_equal(chk(&c, "peak_P")->verdict, VER_PASS);
+  /* D 5 % high at alpha 90 fails: the band is one cell, D must be U0 x area */
+  fig6_case(&c, 4);
+  c.D_final = 1.05 * c.ana.D_sep;
+  ver_policy_case(&c);
+  assert_int_equal(chk(&c, "D_final")->verdict, VER_FAIL);
+  /* an incomplete run fails the run check */
+  fig6_case(&c, 4);
+  c.complete = 0;
+  ver_policy_case(&c);
+  assert_int_equal(chk(&c, "run")->verdict, VER_FAIL);
+}
+
+static void test_ver_policy_inclined_known_limit(void **state)
+{
+  (void)state;
+  ver_case c;
+  fig6_case(&c, 1);
+  c.vs.sc.alpha_deg = 60;
+  c.angle = 62;
+  /* D at +100 % (Fig. 7's band two cells wide): known-limit, inside [-2 %, +300 %] */
+  c.D_final = 2.0 * c.ana.D_sep;
+  ver_policy_case(&c);
+  assert_int_equal(chk(&c, "D_final")->verdict, VER_KNOWN);
+  assert_int_equal(chk(&c, "crack_angle")->verdict, VER_PASS);
+  assert_int_equal(c.verdict, VER_KNOWN);
+  /* D at +400 % is past the bound: fail */
+  c.D_final = 5.0 * c.ana.D_sep;
+  ver_policy_case(&c);
+  assert_int_equal(chk(&c, "D_final")->verdict, VER_FAIL);
+  /* an angle off by 12 deg fails (10 deg tolerance, no known-limit) */
+  c.D_final = c.ana.D_sep;
+  c.angle = 48;
+  ver_policy_case(&c);
+  assert_int_equal(chk(&c, "crack_angle")->verdict, VER_FAIL);
+  /* the angle wraps mod 180: 179.5 against 0 is 0.5 off */
+  c.vs.sc.alpha_deg = 0.0;
+  c.angle = 179.5;
+  ver_policy_case(&c);
+  assert_true(fabs(chk(&c, "crack_angle")->error + 0.5) < 1e-12);
+}
+
+/* Fig. 8's bar (Mode II at 60 deg, g = 0.446): the analytic softening slope just after
+ * the peak is positive (the branch turns back); the run's negative slope is the known
+ * limit of an explicit method, a slope softer than -1 x |analytic| relative is not. */
+static void test_ver_policy_snapback_softening(void **state)
+{
+  (void)state;
+  ver_case c;
+  fig6_case(&c, 1);
+  ana_params p;
+  ana_params_default(&p);
+  p.alpha_deg = 60;
+  p.snf = p.s0 = 10;
+  p.stf = 1;
+  assert_int_equal(ana_bar_init(&p, &c.ana, NULL, 0), ANA_OK);
+  assert_true(c.ana.snapback && c.ana.k_soft_peak > 0);
+  c.vs.sc.alpha_deg = 60;
+  c.angle = 60;
+  c.peak_P = c.ana.Pmax;
+  c.k_elastic = c.ana.k_elastic;
+  c.k_soft = -126.9; /* measured on fig8, h 2 */
+  ver_policy_case(&c);
+  assert_int_equal(chk(&c, "k_soft")->verdict, VER_KNOWN);
+  c.k_soft = 0.5 * c.ana.k_soft_peak; /* positive but half: neither pass nor the known limit */
+  ver_policy_case(&c);
+  assert_int_equal(chk(&c, "k_soft")->verdict, VER_FAIL);
+}
+
+static void test_ver_policy_cross(void **state)
+{
+  (void)state;
+  ver_case cs[3];
+  const double hs[3] = {8, 4, 2};
+  for (int i = 0; i < 3; i++) {
+    fig6_case(&cs[i], 4);
+    cs[i].h = hs[i];
+    cs[i].vs.sc.h = hs[i];
+    snprintf(cs[i].id, sizeof cs[i].id, "fig6-h%g-ppc4", hs[i]);
+  }
+  /* D over h: 12, 12.12, 12.24 -> spread 0.24 / 12.12 = 1.98 % < 2 %: pass */
+  cs[0].D_final = 12.0;
+  cs[1].D_final = 12.12;
+  cs[2].D_final = 12.24;
+  /* curve error growing like h^-1 (0.01, 0.02, 0.04) but under the 2 % floor only for
+   * the first two: the order -1 fails */
+  cs[0].curve_l2 = 0.01;
+  cs[1].curve_l2 = 0.02;
+  cs[2].curve_l2 = 0.04;
+  static ver_cross x[VER_MAXCROSS];
+  int nx = ver_policy_cross(cs, 3, x);
+  int seen = 0;
+  for (int i = 0; i < nx; i++) {
+    if (!strcmp(x[i].chk.name, "D_invariance_h")) {
+      assert_true(fabs(x[i].chk.measured - 0.24 / 12.12) < 1e-12);
+      assert_int_equal(x[i].chk.verdict, VER_PASS);
+      seen++;
+    }
+    if (!strcmp(x[i].chk.name, "order_h")) {
+      assert_true(fabs(x[i].chk.measured + 1.0) < 1e-12);
+      assert_int_equal(x[i].chk.verdict, VER_FAIL);
+      seen++;
+    }
+  }
+  assert_int_equal(seen, 2);
+  /* every error below the floor: the order is not asked for */
+  cs[2].curve_l2 = 0.015;
+  cs[1].curve_l2 = 0.012;
+  nx = ver_policy_cross(cs, 3, x);
+  for (int i = 0; i < nx; i++)
+    if (!strcmp(x[i].chk.name, "order_h"))
+      assert_int_equal(x[i].chk.verdict, VER_PASS);
+}
+
+int main(void)
+{
+  const struct CMUnitTest tests[] = {
+    cmocka_unit_test(test_ver_policy_fig6_pass_and_fail),
+    cmocka_unit_test(test_ver_policy_inclined_known_limit),
+    cmocka_unit_test(test_ver_policy_snapback_softening),
+    cmocka_unit_test(test_ver_policy_cross),
+  };
+  return cmocka_run_group_tests(tests, NULL, NULL);
+}
