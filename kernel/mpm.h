@@ -27,7 +27,11 @@ typedef enum {
 
 const char *mpm_strerror(mpm_status s);
 
-enum { MPM_LE_CELL = 0, MPM_LE_PARTICLE = 1 };        /* choice of Le (MODEL.md open point) */
+/* Le, the effective length V_e / A_d of eq. 41 (MODEL.md open point): CELL, the paper's
+ * h max(|sin a|, |cos a|), exact for a band one cell wide per row; PARTICLE, the same
+ * for the particle's square; STAIRCASE, h (|sin a| + |cos a|), the width of the
+ * narrowest band of cells that can open along an inclined line (mpm_sim.c). */
+enum { MPM_LE_CELL = 0, MPM_LE_PARTICLE = 1, MPM_LE_STAIRCASE = 2 };
 enum { MPM_DCOH_NONE = 0, MPM_DCOH_MODEL1 = 1, MPM_DCOH_MODEL2 = 2 };
 /* USL: strain from v^L (the paper, eq. 7).  MUSL: strain from the nodal velocity
  * re-projected from the updated particle velocities, which keeps nearly empty nodes
@@ -47,6 +51,9 @@ enum { MPM_GRID_FIXED = 0, MPM_GRID_STRETCH = 1 };
  * uGIMP (Bardenhagen and Kober 2004; 3 x 3 nodes), continuous as a particle crosses a
  * cell edge (mpm_shape.h). */
 enum { MPM_SHAPE_LINEAR = 0, MPM_SHAPE_GIMP = 1 };
+/* Velocity fields per node: ONE, the paper's; TWO, a second field at the nodes next to
+ * a separated band, one per side of it (mpm_fields.c). */
+enum { MPM_FIELDS_ONE = 0, MPM_FIELDS_TWO = 1 };
 
 /* ---- scene: everything a run needs, as plain numbers (filled by verify/scene.c) ---- */
 typedef struct {
@@ -57,7 +64,7 @@ typedef struct {
   double snf, stf;       /* failure tractions in opening and in shear                  */
   double U0, s0, q;      /* dissipation per area at separation, reference traction, softening exponent */
   double sep_threshold;  /* lambda above which the separation algorithm is used (paper 0.98) */
-  int le_mode;           /* MPM_LE_CELL or MPM_LE_PARTICLE                             */
+  int le_mode;           /* MPM_LE_CELL, MPM_LE_PARTICLE or MPM_LE_STAIRCASE           */
   double imp_factor;     /* snf multiplier at the imperfection particle (paper 0.9); 1 = none */
   double imp_x, imp_y;   /* the imperfection sits at the particle nearest this point   */
   double h;              /* grid spacing                                               */
@@ -66,6 +73,8 @@ typedef struct {
   int scheme;            /* MPM_SCHEME_USL (paper) or MPM_SCHEME_MUSL                  */
   int grid_motion;       /* MPM_GRID_FIXED (default, the paper) or MPM_GRID_STRETCH   */
   int shape;             /* MPM_SHAPE_LINEAR (default, the paper) or MPM_SHAPE_GIMP    */
+  int fields;            /* MPM_FIELDS_ONE (the paper) or MPM_FIELDS_TWO: one velocity field
+                            per side of a separated band (needs MPM_SHAPE_GIMP; mpm_fields.c) */
   double dt;             /* time step                                                  */
   double speed;          /* grip speed (pulls the left end in -x)                      */
   double end_delta;      /* the run never goes past this end displacement              */
@@ -168,6 +177,18 @@ typedef struct {
   double pad;              /* to 64 bytes; always 0                                    */
 } mpm_node;
 
+/* The second velocity field (grid.fields = 2, mpm_fields.c): at a node that a separated
+ * particle's support covers ("split"), the particles on the far side of the band, as
+ * seen from the band's local centre (crk), sum into nd2 instead of nd. */
+typedef struct {
+  mpm_node *nd2;           /* the second field's records, nnx * nny (used where split)   */
+  uint8_t *split;          /* 1 where a node holds two fields this step                 */
+  double *crk;             /* the band's local centre at a split node (x, y pairs)      */
+  double *cw;              /* the weights summed into crk (scratch)                     */
+  double nx, ny;           /* the failure plane's normal: side 2 is n . (x - crk) > 0   */
+  int nsplit;              /* split nodes this step (0: one field everywhere)           */
+} mpm_fields;
+
 typedef struct {
   int ncx, ncy;            /* cells in x and y                                         */
   int nnx, nny;            /* nodes in x and y (ncx+1, ncy+1)                          */
@@ -175,6 +196,7 @@ typedef struct {
   double hx;               /* spacing in x now (the grid may follow the bar's stretch) */
   double ihx, ihy;         /* 1 / hx, 1 / h                                            */
   mpm_node *nd;            /* the nodes, nnx * nny                                     */
+  mpm_fields *fld;         /* the second velocity field, or NULL (grid.fields = 1)      */
 } mpm_grid;
 
 mpm_grid *mpm_grid_alloc(int ncx, int ncy, double ox, double oy, double h);

@@ -35,6 +35,7 @@ int mpm_gimp_p2g_range(const mpm_grid *gg, const mpm_particles *p, size_t a, siz
   const double *restrict x = p->x, *restrict y = p->y, *restrict vx = p->vx, *restrict vy = p->vy;
   const double *restrict pm = p->m, *restrict V = p->V;
   const double *restrict sxx = p->sxx, *restrict syy = p->syy, *restrict sxy = p->sxy;
+  const mpm_fields *fld = g->fld;
   const mpm_v8 zero = {0.0};
   mpm_v8 c[9];
   for (int q = 0; q < 9; q++)
@@ -50,6 +51,19 @@ int mpm_gimp_p2g_range(const mpm_grid *gg, const mpm_particles *p, size_t a, siz
     mpm_gimp_1d((x[k] - ox) * ihx, lcx, &sx);
     mpm_gimp_1d((y[k] - oy) * ihy, lcy, &sy);
     const size_t n0 = (size_t)sx.i0 * nny + (size_t)sy.i0;
+    const double mm = pm[k], Vx = V[k] * ihx, Vy = V[k] * ihy;
+    const mpm_v8 P = {mm, mm * vx[k], mm * vy[k], 0.0, 0.0, 0.0, 0.0, 0.0};
+    const mpm_v8 FX = {0.0, 0.0, 0.0, Vx * sxx[k], Vx * sxy[k], 0.0, 0.0, 0.0};
+    const mpm_v8 FY = {0.0, 0.0, 0.0, Vy * sxy[k], Vy * syy[k], 0.0, 0.0, 0.0};
+    if (mpm_fields_any(fld, n0, nny)) { /* near a separated band: the field per node */
+      const int side = mpm_fields_side(fld, n0, nny, &sx, &sy, x[k], y[k], g->h);
+      for (int j = 0; j < 3; j++) {
+        const mpm_v8 T = sy.S[j] * P - sy.dS[j] * FY, R = sy.S[j] * FX;
+        for (int i = 0; i < 3; i++)
+          node_add(mpm_fields_node(fld, nd, n0 + (size_t)i * nny + (size_t)j, side), sx.S[i] * T - sx.dS[i] * R);
+      }
+      continue;
+    }
     if (n0 != cur) {
       if (cur != SIZE_MAX)
         stencil_flush(nd, cur, nny, c);
@@ -57,10 +71,6 @@ int mpm_gimp_p2g_range(const mpm_grid *gg, const mpm_particles *p, size_t a, siz
         c[q] = zero;
       cur = n0;
     }
-    const double mm = pm[k], Vx = V[k] * ihx, Vy = V[k] * ihy;
-    const mpm_v8 P = {mm, mm * vx[k], mm * vy[k], 0.0, 0.0, 0.0, 0.0, 0.0};
-    const mpm_v8 FX = {0.0, 0.0, 0.0, Vx * sxx[k], Vx * sxy[k], 0.0, 0.0, 0.0};
-    const mpm_v8 FY = {0.0, 0.0, 0.0, Vy * sxy[k], Vy * syy[k], 0.0, 0.0, 0.0};
     for (int j = 0; j < 3; j++) {
       const mpm_v8 T = sy.S[j] * P - sy.dS[j] * FY, R = sy.S[j] * FX;
       for (int i = 0; i < 3; i++)
@@ -80,6 +90,7 @@ void mpm_gimp_musl_range(const mpm_grid *gg, mpm_particles *p, size_t a, size_t 
   mpm_node *restrict nd = g->nd;
   const double *restrict x = p->x, *restrict y = p->y, *restrict pm = p->m;
   double *restrict vx = p->vx, *restrict vy = p->vy;
+  const mpm_fields *fld = g->fld;
   const mpm_v8 zero = {0.0};
   mpm_v8 c[9];
   for (int q = 0; q < 9; q++)
@@ -89,12 +100,24 @@ void mpm_gimp_musl_range(const mpm_grid *gg, mpm_particles *p, size_t a, size_t 
     mpm_gimp1 sx, sy;
     mpm_gimp_1d((x[k] - ox) * ihx, lcx, &sx);
     mpm_gimp_1d((y[k] - oy) * ihy, lcy, &sy);
+    const size_t n0 = (size_t)sx.i0 * nny + (size_t)sy.i0;
+    const int two = mpm_fields_any(fld, n0, nny);
+    const int side = two ? mpm_fields_side(fld, n0, nny, &sx, &sy, x[k], y[k], g->h) : 0;
     mpm_v4 S, DX, DY;
-    mpm_gimp_gather(nd, nny, &sx, &sy, &S, &DX, &DY);
+    if (two)
+      mpm_fields_gather(fld, nd, nny, &sx, &sy, side, &S, &DX, &DY);
+    else
+      mpm_gimp_gather(nd, nny, &sx, &sy, &S, &DX, &DY);
     const double vxn = vx[k] + S[GFX], vyn = vy[k] + S[GFY];
     vx[k] = vxn;
     vy[k] = vyn;
-    const size_t n0 = (size_t)sx.i0 * nny + (size_t)sy.i0;
+    const mpm_v8 Q = {0.0, 0.0, 0.0, 0.0, 0.0, pm[k] * vxn, pm[k] * vyn, 0.0};
+    if (two) {
+      for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+          node_add(mpm_fields_node(fld, nd, n0 + (size_t)i * nny + (size_t)j, side), (sx.S[i] * sy.S[j]) * Q);
+      continue;
+    }
     if (n0 != cur) {
       if (cur != SIZE_MAX)
         stencil_flush(nd, cur, nny, c);
@@ -102,7 +125,6 @@ void mpm_gimp_musl_range(const mpm_grid *gg, mpm_particles *p, size_t a, size_t 
         c[q] = zero;
       cur = n0;
     }
-    const mpm_v8 Q = {0.0, 0.0, 0.0, 0.0, 0.0, pm[k] * vxn, pm[k] * vyn, 0.0};
     for (int i = 0; i < 3; i++)
       for (int j = 0; j < 3; j++)
         c[3 * i + j] += (sx.S[i] * sy.S[j]) * Q;

@@ -16,6 +16,7 @@
 #endif
 
 #include "mpm.h"
+#include "mpm_gimp.h"
 
 const char *mpm_strerror(mpm_status s)
 {
@@ -56,6 +57,7 @@ mpm_status mpm_scene_check(const mpm_scene *sc, char *err, size_t errlen)
   if (!(sc->nu > -1.0 && sc->nu < 0.5)) BAD("material.nu must be in (-1, 0.5)");
   if (!(sc->rho > 0.0)) BAD("material.rho must be > 0");
   if (sc->model < 0 || sc->model > 2) BAD("decohesion.model must be 0, 1 or 2");
+  if (sc->le_mode < MPM_LE_CELL || sc->le_mode > MPM_LE_STAIRCASE) BAD("decohesion.Le must be cell, particle or staircase");
   if (sc->model) {
     if (!(sc->alpha_deg >= 0.0 && sc->alpha_deg < 180.0)) BAD("decohesion.alpha must be in [0, 180)");
     if (!(sc->snf > 0.0) || !(sc->stf > 0.0)) BAD("decohesion: snf and stf must be > 0");
@@ -73,6 +75,8 @@ mpm_status mpm_scene_check(const mpm_scene *sc, char *err, size_t errlen)
   if (sc->scheme != MPM_SCHEME_USL && sc->scheme != MPM_SCHEME_MUSL) BAD("time.scheme must be usl or musl");
   if (sc->grid_motion != MPM_GRID_STRETCH && sc->grid_motion != MPM_GRID_FIXED) BAD("grid.motion must be stretch or fixed");
   if (sc->shape != MPM_SHAPE_LINEAR && sc->shape != MPM_SHAPE_GIMP) BAD("grid.shape must be linear or gimp");
+  if (sc->fields != MPM_FIELDS_ONE && sc->fields != MPM_FIELDS_TWO) BAD("grid.fields must be one or two");
+  if (sc->fields == MPM_FIELDS_TWO && sc->shape != MPM_SHAPE_GIMP) BAD("grid.fields = two needs grid.shape = gimp");
   if (!(sc->dt > 0.0)) BAD("time.dt must be > 0");
   if (!(sc->speed > 0.0)) BAD("loading.speed must be > 0");
   if (!(sc->end_delta > 0.0)) BAD("run.end_delta must be > 0");
@@ -85,6 +89,8 @@ void mpm_sim_free(mpm_sim *s)
   if (!s)
     return;
   mpm_particles_free(s->p);
+  if (s->g)
+    mpm_fields_free(s->g->fld);
   mpm_grid_free(s->g);
   if (s->dws)
     for (int t = 0; t < s->nthreads; t++)
@@ -153,6 +159,10 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
     ok = s->strip_start && s->key && s->perm && s->count && s->scratch && s->scratch8;
     for (int t = 0; ok && t < s->nthreads; t++)
       ok = (s->dws[t] = mpm_dwork_alloc()) != NULL;
+    if (ok && sc->fields == MPM_FIELDS_TWO) {
+      const double a = sc->alpha_deg * (3.14159265358979323846 / 180.0);
+      ok = (s->g->fld = mpm_fields_alloc((size_t)s->g->nnx * (size_t)s->g->nny, sin(a), -cos(a))) != NULL;
+    }
   }
   if (!ok) {
     mpm_sim_free(s);
@@ -164,7 +174,13 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
    * a * max(|sin a|, |cos a|).  a = h (cell) or h / n (particle), MODEL.md open point. */
   const double a = sc->alpha_deg * (3.14159265358979323846 / 180.0);
   const double side = sc->le_mode == MPM_LE_PARTICLE ? h / n1 : h;
-  const double Le = side * fmax(fabs(sin(a)), fabs(cos(a)));
+  /* STAIRCASE: on a grid of square cells a band along a line at angle a steps sideways
+   * by one cell every cot a rows (a > 45 deg; tan a columns below), and the cell at each
+   * step's corner has to strain with the band for it to open (a node there belongs to
+   * both sides), so the narrowest band that can separate is 1 + |cot a| cells wide per
+   * row: the band's volume per unit crack length is h (|sin a| + |cos a|). */
+  const double Le = sc->le_mode == MPM_LE_STAIRCASE ? h * (fabs(sin(a)) + fabs(cos(a)))
+                                                    : side * fmax(fabs(sin(a)), fabs(cos(a)));
   mpm_material_init(&s->mat[MPM_MAT_BAR], sc, sc->snf, Le);
   mpm_material_init(&s->mat[MPM_MAT_IMP], sc, sc->snf * sc->imp_factor, Le);
   mpm_material_init(&s->mat[MPM_MAT_HEAD], sc, sc->snf, Le);

@@ -369,7 +369,12 @@ static inline __attribute__((always_inline)) void g2p_strip_impl(mpm_sim *s, int
         mpm_gimp_1d((x[k] - ox) * ihx, lcx, &sx);
         mpm_gimp_1d((y[k] - g->oy) * ihy, lcy, &sy);
         mpm_v4 DX, DY;
-        mpm_gimp_gather(nd, nny, &sx, &sy, &S, &DX, &DY);
+        const size_t n0 = (size_t)sx.i0 * nny + (size_t)sy.i0;
+        if (mpm_fields_any(g->fld, n0, nny))
+          mpm_fields_gather(g->fld, (mpm_node *)nd, nny, &sx, &sy,
+                            mpm_fields_side(g->fld, n0, nny, &sx, &sy, x[k], y[k], g->h), &S, &DX, &DY);
+        else
+          mpm_gimp_gather(nd, nny, &sx, &sy, &S, &DX, &DY);
         GX = dtihx * DX;
         GY = dtihy * DY;
       } else {
@@ -454,6 +459,8 @@ static mpm_status g2p(mpm_sim *s, char *err, size_t errlen)
   if (musl) {
     scatter(s, 1);
     grid_musl_velocity(s);
+    if (s->g->fld)
+      mpm_fields_musl(s);
   }
   g2p_acc tot = {0, 0, 0, 0.0, 0, 0, 0};
 #ifdef _OPENMP
@@ -554,6 +561,8 @@ mpm_status mpm_sim_step(mpm_sim *s, char *err, size_t errlen)
   mpm_grid *g = s->g;
   const size_t nn = (size_t)g->nnx * (size_t)g->nny;
   memset(g->nd, 0, nn * sizeof(mpm_node));
+  if (g->fld)
+    mpm_fields_mark(s);
   if (scatter(s, 0)) {
     const mpm_particles *p = s->p;
     mpm_status st = MPM_EDOMAIN;
@@ -574,6 +583,8 @@ mpm_status mpm_sim_step(mpm_sim *s, char *err, size_t errlen)
   t1 = wall();
   s->time_split[MPM_T_P2G] += t1 - t0;
   grid_update(s);
+  if (g->fld)
+    mpm_fields_grid(s);
   t0 = wall();
   s->time_split[MPM_T_GRID] += t0 - t1;
   const double c0 = s->time_split[MPM_T_CONST];

@@ -22,7 +22,7 @@
 
 #include "scene.h"
 
-typedef enum { K_DBL, K_INT, K_LE, K_SCHEME, K_MOTION, K_SHAPE, K_LIST } ktype;
+typedef enum { K_DBL, K_INT, K_LE, K_SCHEME, K_MOTION, K_SHAPE, K_FIELDS, K_LIST } ktype;
 
 /* Range kinds: (lo, hi) open, [lo, hi) half open, etc. encoded by flags. */
 enum { LO_OPEN = 1, LO_CLOSED = 2, HI_OPEN = 4, HI_CLOSED = 8 };
@@ -54,7 +54,7 @@ static const keydef keys[] = {
   {"decohesion", "s0", K_DBL, OFF(s0), 0, 0, 0, LO_OPEN, -1, "> 0 (default: snf)"},
   {"decohesion", "q", K_DBL, OFF(q), 2, 0, 0, LO_OPEN, 0, "> 0"},
   {"decohesion", "separation", K_DBL, OFF(sep_threshold), 0, 0, 1, LO_OPEN | HI_CLOSED, 0.98, "in (0, 1]"},
-  {"decohesion", "Le", K_LE, OFF(le_mode), 0, 0, 0, 0, MPM_LE_CELL, "cell or particle"},
+  {"decohesion", "Le", K_LE, OFF(le_mode), 0, 0, 0, 0, MPM_LE_CELL, "cell, particle or staircase"},
   {"imperfection", "snf_factor", K_DBL, OFF(imp_factor), 0, 0, 1, LO_OPEN | HI_CLOSED, 1.0, "in (0, 1]"},
   {"imperfection", "x", K_DBL, OFF(imp_x), 0, 0, 0, 0, -1, "a number (default: L / 2)"},
   {"imperfection", "y", K_DBL, OFF(imp_y), 0, 0, 0, 0, -1, "a number (default: H / 2)"},
@@ -64,6 +64,7 @@ static const keydef keys[] = {
   {"time", "dt", K_DBL, OFF(dt), 1, 0, 0, LO_OPEN, 0, "> 0 and below the CFL bound h / (c sqrt 2)"},
   {"time", "scheme", K_SCHEME, OFF(scheme), 0, 0, 0, 0, MPM_SCHEME_USL, "usl (the paper) or musl"},
   {"grid", "motion", K_MOTION, OFF(grid_motion), 0, 0, 0, 0, MPM_GRID_FIXED, "fixed (the paper) or stretch (follows the bar's mean stretch)"},
+  {"grid", "fields", K_FIELDS, OFF(fields), 0, 0, 0, 0, MPM_FIELDS_ONE, "one (the paper) or two (one per side of a separated band; needs shape = gimp)"},
   {"grid", "shape", K_SHAPE, OFF(shape), 0, 0, 0, 0, MPM_SHAPE_LINEAR, "linear (the paper's bilinear hats) or gimp (uGIMP)"},
   {"loading", "speed", K_DBL, OFF(speed), 1, 0, 0, LO_OPEN, 0, "> 0"},
   {"run", "end_delta", K_DBL, OFF(end_delta), 1, 0, 0, LO_OPEN, 0, "> 0"},
@@ -188,16 +189,20 @@ static int set_key(ver_scene *vs, int ki, const char *value, char *msg, size_t l
     snprintf(msg, len, "%s.%s: empty value (%s)", k->section, k->key, k->allowed);
     return 2;
   }
-  if (k->type == K_LE || k->type == K_SCHEME || k->type == K_MOTION || k->type == K_SHAPE) {
+  if (k->type == K_LE || k->type == K_SCHEME || k->type == K_MOTION || k->type == K_SHAPE ||
+      k->type == K_FIELDS) {
     int mode;
     if (k->type == K_LE && !strcmp(value, "cell")) mode = MPM_LE_CELL;
     else if (k->type == K_LE && !strcmp(value, "particle")) mode = MPM_LE_PARTICLE;
+    else if (k->type == K_LE && !strcmp(value, "staircase")) mode = MPM_LE_STAIRCASE;
     else if (k->type == K_SCHEME && !strcmp(value, "usl")) mode = MPM_SCHEME_USL;
     else if (k->type == K_SCHEME && !strcmp(value, "musl")) mode = MPM_SCHEME_MUSL;
     else if (k->type == K_MOTION && !strcmp(value, "stretch")) mode = MPM_GRID_STRETCH;
     else if (k->type == K_MOTION && !strcmp(value, "fixed")) mode = MPM_GRID_FIXED;
     else if (k->type == K_SHAPE && !strcmp(value, "linear")) mode = MPM_SHAPE_LINEAR;
     else if (k->type == K_SHAPE && !strcmp(value, "gimp")) mode = MPM_SHAPE_GIMP;
+    else if (k->type == K_FIELDS && !strcmp(value, "one")) mode = MPM_FIELDS_ONE;
+    else if (k->type == K_FIELDS && !strcmp(value, "two")) mode = MPM_FIELDS_TWO;
     else {
       snprintf(msg, len, "%s.%s: '%s' is not allowed (%s)", k->section, k->key, shown(value, sv, sizeof sv),
                k->allowed);

@@ -54,7 +54,10 @@ int ver_summary_write(const char *dir, const ver_scene *vs, const ver_summary *u
   cJSON_AddNumberToObject(o, "h", vs->sc.h);
   cJSON_AddNumberToObject(o, "ppc", vs->sc.ppc);
   cJSON_AddNumberToObject(o, "dt", vs->sc.dt);
-  cJSON_AddStringToObject(o, "Le", vs->sc.le_mode == MPM_LE_PARTICLE ? "particle" : "cell");
+  cJSON_AddStringToObject(o, "Le", vs->sc.le_mode == MPM_LE_PARTICLE    ? "particle"
+                                   : vs->sc.le_mode == MPM_LE_STAIRCASE ? "staircase"
+                                                                        : "cell");
+  cJSON_AddStringToObject(o, "fields", vs->sc.fields == MPM_FIELDS_TWO ? "two" : "one");
   cJSON_AddStringToObject(o, "scheme", vs->sc.scheme == MPM_SCHEME_MUSL ? "musl" : "usl");
   cJSON_AddStringToObject(o, "shape", vs->sc.shape == MPM_SHAPE_GIMP ? "gimp" : "linear");
   cJSON_AddNumberToObject(o, "separation_threshold", vs->sc.sep_threshold);

@@ -1,0 +1,171 @@
+/*
+ * mpm_fields.c - two velocity fields across a separated band (grid.fields = 2), after
+ * the multi-field idea of CRAMP (Nairn 2003) and DFG (Homel and Herbold 2017), with
+ * the side taken from what the scene knows: the failure plane's normal n.
+ *
+ * One velocity per node keeps a separated band coupled: the nodes in the band carry a
+ * mean of both parts' velocities, the cells around it keep straining, the band widens
+ * and the grip still carries load after separation.  Here, each step:
+ *  1. every node that a separated particle's support covers is "split"; its band centre
+ *     crk is the N_ip-weighted mean position of those separated particles;
+ *  2. a particle with n . (x_p - c_p) > 0, c_p the band centre its split nodes see
+ *     (mpm_fields_side), scatters to and gathers from the second field (nd2) at its
+ *     split nodes, the others the first (nd); every other node is one field, so the
+ *     band's intact ligament stays bonded;
+ *  3. the fields at a split node interact only in contact: when they approach along n,
+ *     (v2 - v1) . n < 0, both take their centre-of-mass normal velocity (momentum is
+ *     kept, the tangential velocities are free: frictionless); when they move apart
+ *     they are independent, so a separated band carries no load and does not close
+ *     through itself.  The gap is not tracked: approach alone means contact.
+ * Constrained nodes (grip, fixed end) are never split: their reactions stay those of
+ * one field.  Without a separated particle nothing is split and the step is the one
+ * field step, bit for bit.
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "mpm_gimp.h"
+
+mpm_fields *mpm_fields_alloc(size_t nn, double nx, double ny)
+{
+  mpm_fields *f = calloc(1, sizeof *f);
+  if (!f)
+    return NULL;
+  f->nd2 = aligned_alloc(_Alignof(mpm_node), nn * sizeof(mpm_node));
+  f->split = calloc(nn, 1);
+  f->crk = calloc(2 * nn, sizeof(double));
+  f->cw = calloc(nn, sizeof(double));
+  if (!f->nd2 || !f->split || !f->crk || !f->cw) {
+    mpm_fields_free(f);
+    return NULL;
+  }
+  memset(f->nd2, 0, nn * sizeof(mpm_node));
+  f->nx = nx;
+  f->ny = ny;
+  return f;
+}
+
+void mpm_fields_free(mpm_fields *f)
+{
+  if (!f)
+    return;
+  free(f->nd2);
+  free(f->split);
+  free(f->crk);
+  free(f->cw);
+  free(f);
+}
+
+/* Step 1: the split nodes and their band centres, from the separated particles.
+ * Serial, in particle order: the same sums whatever the threads. */
+void mpm_fields_mark(mpm_sim *s)
+{
+  mpm_fields *f = s->g->fld;
+  const mpm_particles *p = s->p;
+  const mpm_grid *g = s->g;
+  size_t nsep = 0;
+  for (size_t k = 0; k < p->n; k++)
+    nsep += p->sep[k];
+  if (nsep == 0 && f->nsplit == 0)
+    return;
+  const size_t nn = (size_t)g->nnx * (size_t)g->nny, nny = (size_t)g->nny;
+  memset(f->split, 0, nn);
+  memset(f->crk, 0, 2 * nn * sizeof(double));
+  memset(f->cw, 0, nn * sizeof(double));
+  memset(f->nd2, 0, nn * sizeof(mpm_node));
+  f->nsplit = 0;
+  if (nsep == 0)
+    return;
+  double lcx, lcy;
+  mpm_gimp_lc(s, &lcx, &lcy);
+  for (size_t k = 0; k < p->n; k++) {
+    if (!p->sep[k] || !mpm_gimp_inside(g, p->x[k], p->y[k]))
+      continue; /* outside: the scatter reports it */
+    mpm_gimp1 sx, sy;
+    mpm_gimp_1d((p->x[k] - g->ox) * g->ihx, lcx, &sx);
+    mpm_gimp_1d((p->y[k] - g->oy) * g->ihy, lcy, &sy);
+    for (int i = 0; i < 3; i++)
+      for (int j = 0; j < 3; j++) {
+        const double w = sx.S[i] * sy.S[j];
+        if (!(w > 0.0))
+          continue;
+        const size_t n = (size_t)(sx.i0 + i) * nny + (size_t)(sy.i0 + j);
+        f->split[n] = 1;
+        f->cw[n] += w;
+        f->crk[2 * n] += w * p->x[k];
+        f->crk[2 * n + 1] += w * p->y[k];
+      }
+  }
+  for (int q = 0; q < s->ngrip; q++)
+    f->split[s->grip[q]] = 0;
+  for (int q = 0; q < s->nfixx; q++)
+    f->split[s->fixx[q]] = 0;
+  f->split[s->fixy] = 0;
+  for (size_t n = 0; n < nn; n++)
+    if (f->split[n]) {
+      f->crk[2 * n] /= f->cw[n];
+      f->crk[2 * n + 1] /= f->cw[n];
+      f->nsplit++;
+    }
+}
+
+/* Step 3 and the second field's eq. 4: after grid_update has done the first field. */
+void mpm_fields_grid(mpm_sim *s)
+{
+  mpm_fields *f = s->g->fld;
+  if (f->nsplit == 0)
+    return;
+  mpm_grid *g = s->g;
+  const size_t nn = (size_t)g->nnx * (size_t)g->nny;
+  const double dt = s->sc.dt, mmin = MPM_MASS_EPS * s->p->m[0], nx = f->nx, ny = f->ny;
+  for (size_t k = 0; k < nn; k++) {
+    if (!f->split[k])
+      continue;
+    mpm_node *b = &f->nd2[k], *a = &g->nd[k];
+    if (b->m > mmin) {
+      const double im = 1.0 / b->m;
+      const double dvx = dt * b->fx * im, dvy = dt * b->fy * im;
+      b->px = b->px * im + dvx;
+      b->py = b->py * im + dvy;
+      b->fx = dvx;
+      b->fy = dvy;
+    } else {
+      b->px = b->py = b->fx = b->fy = 0.0;
+      continue;
+    }
+    if (!(a->m > mmin))
+      continue;
+    const double wa = a->px * nx + a->py * ny, wb = b->px * nx + b->py * ny;
+    if (wb - wa < 0.0) { /* approaching: contact, the normal velocity of the centre of mass */
+      const double wc = (a->m * wa + b->m * wb) / (a->m + b->m), da = wc - wa, db = wc - wb;
+      a->px += da * nx;
+      a->py += da * ny;
+      a->fx += da * nx;
+      a->fy += da * ny;
+      b->px += db * nx;
+      b->py += db * ny;
+      b->fx += db * nx;
+      b->fy += db * ny;
+    }
+  }
+}
+
+/* MUSL: the second field's v' = q / m into (fx, fy), as grid_musl_velocity does for
+ * the first. */
+void mpm_fields_musl(mpm_sim *s)
+{
+  mpm_fields *f = s->g->fld;
+  if (f->nsplit == 0)
+    return;
+  const size_t nn = (size_t)s->g->nnx * (size_t)s->g->nny;
+  const double mmin = MPM_MASS_EPS * s->p->m[0];
+  for (size_t k = 0; k < nn; k++) {
+    if (!f->split[k])
+      continue;
+    mpm_node *b = &f->nd2[k];
+    const double im = b->m > mmin ? 1.0 / b->m : 0.0;
+    b->fx = b->qx * im;
+    b->fy = b->qy * im;
+  }
+}
