@@ -215,6 +215,32 @@ typedef struct {
   double D;      /* dissipation, U0 min(lambda, 1) per unit failure area (eq. 10)      */
 } mpm_energy;
 
+/* ---- threads: the count a step uses (mpm_threads.c) ---- */
+#define MPM_THREADS_MIN_PARTICLES 16384 /* below: one thread, no measuring            */
+#define MPM_PROBE_SHARE 0.02       /* most time a lost probe may cost                    */
+#define MPM_PROBE_STEPS 16         /* steps timed on each count per probe              */
+#define MPM_PERIOD_MIN 256         /* steps on the chosen count after a changed choice */
+#define MPM_PERIOD_MAX 8192        /* ... doubled while it holds, up to this           */
+enum { MPM_TPH_PROBE1 = 0, MPM_TPH_PROBEN, MPM_TPH_RUN };
+typedef struct {
+  int nmax;                /* threads allocated for (the most a step may use)           */
+  int automatic;           /* 1: measure and choose between 1 and nmax                  */
+  int use;                 /* threads of the next step                                 */
+  int phase, np, last_pick, run_n, losses;
+  long left, period;       /* steps left in the phase; length of the running stretch   */
+  double last, mean1;      /* clock at the last tick; mean step on one thread (probe)  */
+  double run_sum;          /* time of the current window of a stretch on many threads  */
+  double probe_time;       /* time of the probe on many threads so far, and its steps  */
+  long probe_n;
+  double tp[MPM_PROBE_STEPS];
+  long steps_multi;        /* steps run on more than one thread                        */
+  long nprobe;             /* probes done                                              */
+  long nfall;              /* falls back to one thread in a stretch                    */
+} mpm_threads;
+
+/* Sets up t for `requested` threads (<= 0: automatic, up to OpenMP's default). */
+void mpm_threads_init(mpm_threads *t, int requested, size_t particles);
+
 /* ---- the simulation ---- */
 /* Particles whose elastic trial left the elastic domain, waiting for the full
  * decohesion update (mpm_step.c): one list per thread, of at most MPM_DEFER particles
@@ -245,7 +271,8 @@ typedef struct {
   long n_soften, n_separate, n_bracketed; /* counters of constitutive paths           */
   /* sorting and threads (mpm_sort.c): particles sorted by cell, column by column;
    * strips of MPM_STRIP columns of cells are coloured even/odd for the scatter */
-  int nthreads;            /* worker threads (OpenMP), fixed at alloc                   */
+  int nthreads;            /* threads of the current step (set by mpm_threads_tick)     */
+  mpm_threads thr;         /* thr.nmax threads' worth of scratch is allocated           */
   mpm_dwork **dws;         /* one scratch per thread                                   */
   mpm_defer *defer;        /* one list per thread                                      */
   int nstrip;              /* strips of columns                                        */
@@ -274,13 +301,16 @@ enum { MPM_MAT_BAR = 0, MPM_MAT_IMP = 1, MPM_MAT_HEAD = 2 };
 /* Sorts the particles by cell (stable counting sort) and rebuilds the strips. */
 void mpm_sim_sort(mpm_sim *s);
 
-/* nthreads <= 0: OpenMP's default.  Results do not depend on it (fixed summation order). */
+/* nthreads > 0: that many threads; <= 0: chosen per step by measurement, up to OpenMP's
+ * default (mpm_threads.c).  Results do not depend on it (fixed summation order). */
 mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char *err, size_t errlen);
 void mpm_sim_free(mpm_sim *s);
 /* One explicit step (eqs. 2-7, USL).  On failure, err names the step, particle and field. */
 mpm_status mpm_sim_step(mpm_sim *s, char *err, size_t errlen);
 double mpm_sim_delta(const mpm_sim *s);
 void mpm_sim_energy(const mpm_sim *s, mpm_energy *e);
+/* Called at the top of each step: picks the step's thread count (s->nthreads). */
+void mpm_threads_tick(mpm_sim *s);
 
 /* Total momentum (for conservation tests). */
 void mpm_particles_momentum(const mpm_particles *p, double *px, double *py);

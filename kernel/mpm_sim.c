@@ -11,9 +11,6 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
-#ifdef _OPENMP
-#include <omp.h>
-#endif
 
 #include "mpm.h"
 #include "mpm_gimp.h"
@@ -93,7 +90,7 @@ void mpm_sim_free(mpm_sim *s)
     mpm_fields_free(s->g->fld);
   mpm_grid_free(s->g);
   if (s->dws)
-    for (int t = 0; t < s->nthreads; t++)
+    for (int t = 0; t < s->thr.nmax; t++)
       mpm_dwork_free(s->dws[t]);
   free(s->dws);
   free(s->defer);
@@ -131,15 +128,11 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
   const size_t nhead = (size_t)MPM_HEAD_CELLS * (size_t)cy * (size_t)sc->ppc;
   const size_t np = nbar + nhead;
   const int ngrip = (padl - pad + 1) * (cy + 1);
-#ifdef _OPENMP
-  s->nthreads = nthreads > 0 ? nthreads : omp_get_max_threads();
-#else
-  (void)nthreads;
-  s->nthreads = 1;
-#endif
+  mpm_threads_init(&s->thr, nthreads, np);
+  s->nthreads = s->thr.use;
   s->p = mpm_particles_alloc(np);
-  s->dws = calloc((size_t)s->nthreads, sizeof *s->dws);
-  s->defer = calloc((size_t)s->nthreads, sizeof *s->defer);
+  s->dws = calloc((size_t)s->thr.nmax, sizeof *s->dws);
+  s->defer = calloc((size_t)s->thr.nmax, sizeof *s->defer);
   s->head = malloc((nhead ? nhead : 1) * sizeof *s->head);
   s->grip = malloc(sizeof(int) * (size_t)ngrip);
   /* uGIMP: the support of the bar's last particles reaches the node column beyond
@@ -157,7 +150,7 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
     s->scratch = malloc(np * sizeof(double));
     s->scratch8 = malloc(np);
     ok = s->strip_start && s->key && s->perm && s->count && s->scratch && s->scratch8;
-    for (int t = 0; ok && t < s->nthreads; t++)
+    for (int t = 0; ok && t < s->thr.nmax; t++)
       ok = (s->dws[t] = mpm_dwork_alloc()) != NULL;
     if (ok && sc->fields == MPM_FIELDS_TWO) {
       const double a = sc->alpha_deg * (3.14159265358979323846 / 180.0);

@@ -550,6 +550,7 @@ static void lay_grid(mpm_sim *s)
 
 mpm_status mpm_sim_step(mpm_sim *s, char *err, size_t errlen)
 {
+  mpm_threads_tick(s);
   lay_grid(s);
   double t0 = wall(), t1;
   if (s->resort || s->step % MPM_SORT_EVERY == 0) {

@@ -67,7 +67,7 @@ static size_t bytes_per_particle(const mpm_sim *s)
   const size_t sorting = np * (sizeof(double) + 1 + 2 * sizeof(uint32_t)) + (ncell + 1) * sizeof(size_t) +
                          ((size_t)s->nstrip + 1) * sizeof(size_t);
   const size_t grid = nn * sizeof(mpm_node);
-  const size_t other = s->nhead * sizeof(uint32_t) + (size_t)s->nthreads * sizeof(mpm_defer) +
+  const size_t other = s->nhead * sizeof(uint32_t) + (size_t)s->thr.nmax * sizeof(mpm_defer) +
                        (size_t)(s->ngrip + s->nfixx) * sizeof(int);
   return (particles + sorting + grid + other + np / 2) / np;
 }

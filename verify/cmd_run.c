@@ -33,7 +33,9 @@ static void usage(FILE *f)
     "  --until DELTA     run to this end displacement exactly (no early stop)\n"
     "  --set S.K=V       set key K of section S, as in the file (repeatable)\n"
     "  --allow-unstable  accept a time step at or above the CFL bound\n"
-    "  --threads N       OpenMP threads (default: OMP_NUM_THREADS or all cores)\n"
+    "  --threads N       OpenMP threads (default: chosen while it runs, one thread\n"
+    "                    for small scenes, up to OMP_NUM_THREADS or all cores when\n"
+    "                    that measures faster; see docs/threads.md)\n"
     "  --quiet           no progress line\n"
     "  --help            this text\n"
     "exit status: 0 complete, 1 the run failed, 2 bad input, 130 stopped by a signal\n");

@@ -2,11 +2,23 @@
  * main.c - `delam`: dispatch to the subcommands (analytic, run, verify, report, bench).
  */
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include <gsl/gsl_errno.h>
 
 #include "cmd.h"
+
+/* Waiting OpenMP threads sleep instead of spinning unless the user says otherwise: on a
+ * machine whose other cores are busy a spinning thread holds a core its partner needs
+ * (docs/threads.md).  libgomp reads the variable when it is loaded, before main, so it is
+ * set from the executable's pre-initialisation array, which runs before any shared
+ * library's constructors. */
+static void wait_passive(void)
+{
+  setenv("OMP_WAIT_POLICY", "passive", 0);
+}
+__attribute__((section(".preinit_array"), used)) static void (*const ver_preinit)(void) = wait_passive;
 
 static const struct {
   const char *name;

@@ -94,7 +94,8 @@ static int run_cases(const ver_verify_opts *o, ver_case *cs, int n)
       order[j - 1] = t;
     }
   const long ncpu = sysconf(_SC_NPROCESSORS_ONLN);
-  run_ctx ctx = {o, cs, n, (int)fmax(1.0, (double)(ncpu > 0 ? ncpu : 1) / o->jobs)};
+  /* as many jobs as cores: one thread each; fewer: the kernel chooses (mpm_threads.c) */
+  run_ctx ctx = {o, cs, n, o->jobs >= (ncpu > 0 ? ncpu : 1) ? 1 : 0};
   const ver_pool p = {n, o->jobs, order, start_case, show_running, case_done, &ctx};
   const int rc = ver_pool_run(&p);
   free(order);

@@ -344,6 +344,44 @@ static void test_mpm_bar_threads_bit_identical(void **state)
     fail_msg("Model 1 bar: %ld softening and %ld separation updates; expected both", nsoft, nsep);
 }
 
+/* (c') the thread count may change between any two steps (mpm_threads.c): a run whose
+ * count flips every step matches the one-thread run bit for bit; and the automatic
+ * choice keeps small problems on one thread without measuring. */
+static void test_mpm_bar_threads_switch(void **state)
+{
+  (void)state;
+  mpm_scene sc = fig6_scene();
+  sc.model = MPM_DCOH_MODEL1;
+  sc.imp_factor = 0.9;
+  sc.end_delta = 0.45;
+  sc.speed = 0.004;
+  mpm_sim *a = make_sim(&sc, 1), *b = make_sim(&sc, 2);
+  b->thr.automatic = 0;
+  char err[256] = "";
+  for (long k = 0; k < 1125; k++) {
+    b->thr.use = k % 2 ? b->thr.nmax : 1;
+    if (mpm_sim_step(a, err, sizeof err) != MPM_OK || mpm_sim_step(b, err, sizeof err) != MPM_OK)
+      fail_msg("step %ld: %s", k, err);
+  }
+  assert_true(b->thr.steps_multi == (b->thr.nmax > 1 ? 562 : 0));
+  const size_t nb = a->p->n * sizeof(double);
+  if (memcmp(a->p->x, b->p->x, nb) || memcmp(a->p->sxx, b->p->sxx, nb) || memcmp(a->p->lam, b->p->lam, nb) ||
+      memcmp(&a->W_ext, &b->W_ext, sizeof a->W_ext))
+    fail_msg("a run switching between 1 and %d threads differs from the one-thread run", b->thr.nmax);
+  assert_true(a->n_separate > 0);
+  mpm_sim_free(a);
+  mpm_sim_free(b);
+  mpm_threads t;
+  mpm_threads_init(&t, 0, MPM_THREADS_MIN_PARTICLES - 1);
+  assert_int_equal(t.automatic, 0);
+  assert_int_equal(t.use, 1);
+  mpm_threads_init(&t, 3, 10);
+  assert_int_equal(t.automatic, 0);
+#ifdef _OPENMP
+  assert_int_equal(t.use, 3);
+#endif
+}
+
 /* (e) each rule of mpm_scene_check once, with the key in the message. */
 static void expect_einval(const mpm_scene *sc, const char *key)
 {
@@ -436,6 +474,7 @@ int main(void)
       cmocka_unit_test(test_mpm_bar_elastic_stiffness_energy),
       cmocka_unit_test(test_mpm_bar_fig6_decohesion_energy),
       cmocka_unit_test(test_mpm_bar_threads_bit_identical),
+      cmocka_unit_test(test_mpm_bar_threads_switch),
       cmocka_unit_test(test_mpm_bar_scene_check),
       cmocka_unit_test(test_mpm_bar_leaves_grid),
   };
