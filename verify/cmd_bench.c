@@ -23,6 +23,7 @@
 #include "cmd.h"
 #include "io.h"
 #include "mpm.h"
+#include "datadir.h"
 #include "scene.h"
 
 typedef struct {
@@ -33,9 +34,9 @@ typedef struct {
 } bench_case;
 
 static const bench_case cases[] = {
-  {"data/scenes/fig6.ini", 2.0, 4, 4000},
-  {"data/scenes/fig6.ini", 1.0, 4, 2000},
-  {"data/scenes/fig7.ini", 2.0, 4, 4000},
+  {"fig6", 2.0, 4, 4000},
+  {"fig6", 1.0, 4, 2000},
+  {"fig7", 2.0, 4, 4000},
 };
 
 /* Uniform uniaxial stress sigma along x: strains sigma/E and -nu sigma/E, the left end
@@ -129,7 +130,9 @@ int ver_cmd_bench(int argc, char **argv)
     for (int ti = 0; ti < ntl; ti++) {
       ver_scene vs;
       char err[1024], set[64];
-      if (ver_scene_parse(cases[c].scene, &vs, err, sizeof err)) {
+      char path[4400];
+      if (ver_scene_resolve(cases[c].scene, path, sizeof path, err, sizeof err) ||
+          ver_scene_parse(path, &vs, err, sizeof err)) {
         fprintf(stderr, "delam bench: %s (run from the source folder)\n", err);
         return 2;
       }

@@ -31,6 +31,7 @@
 #include "metrics.h"
 #include "report.h"
 #include "run.h"
+#include "datadir.h"
 #include "scene.h"
 #include "summary.h"
 
@@ -1156,7 +1157,8 @@ static void usage(FILE *f)
              "  --from DIR     a `delam verify` output folder: DIR/verify.json and DIR/<case-id>/ runs\n"
              "  --out DIR      where the report goes (default reports/out)\n"
              "  --cache DIR    where runs are kept and reused (default out/report)\n"
-             "  --scenes DIR   scene files (default data/scenes)\n"
+             "  --scenes DIR   scene files (default: $DELAM_SCENES, ./data/scenes, or the\n"
+             "                 installed or source tree's scenes)\n"
              "  --gp DIR       gnuplot scripts (default reports)\n"
              "  --jobs N       runs at once (default 2)\n"
              "  --rerun        ignore cached runs\n"
@@ -1171,7 +1173,8 @@ int ver_cmd_report(int argc, char **argv)
   rep_ctx *r = &R.r;
   snprintf(r->out, sizeof r->out, "reports/out");
   snprintf(r->cache, sizeof r->cache, "out/report");
-  snprintf(r->scenes, sizeof r->scenes, "data/scenes");
+  const char *scenes = ver_scene_dir();
+  snprintf(r->scenes, sizeof r->scenes, "%s", scenes ? scenes : "data/scenes");
   snprintf(r->gpdir, sizeof r->gpdir, "reports");
   r->jobs = 2;
   for (int i = 1; i < argc; i++) {

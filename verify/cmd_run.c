@@ -9,6 +9,7 @@
 
 #include "cmd.h"
 #include "run.h"
+#include "datadir.h"
 #include "scene.h"
 
 static volatile sig_atomic_t stop_flag = 0;
@@ -22,8 +23,10 @@ static void on_signal(int sig)
 static void usage(FILE *f)
 {
   fprintf(f,
-    "usage: delam run SCENE.ini [options]\n"
-    "Runs one scene (data/scenes/*.ini) and writes load.csv, energy.csv, particle\n"
+    "usage: delam run SCENE [options]\n"
+    "Runs one scene, a file or the name of one in the scene folder (fig6, fig7, ...:\n"
+    "$DELAM_SCENES, ./data/scenes, or the installed or source tree's), and writes\n"
+    "load.csv, energy.csv, particle\n"
     "snapshots (CSV and legacy VTK), final.csv/.vtk and summary.json.\n\n"
     "options:\n"
     "  --out DIR         output folder (default out/<scene>-h<h>-ppc<n>)\n"
@@ -100,7 +103,12 @@ int ver_cmd_run(int argc, char **argv)
     return 2;
   }
   ver_scene vs;
-  char err[1024];
+  char err[4800], found[4400];
+  if (ver_scene_resolve(path, found, sizeof found, err, sizeof err)) {
+    fprintf(stderr, "delam run: %s\n", err);
+    return 2;
+  }
+  path = found;
   if (ver_scene_parse(path, &vs, err, sizeof err)) {
     fprintf(stderr, "%s\n", err);
     return 2;

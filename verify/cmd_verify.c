@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include "cmd.h"
+#include "datadir.h"
 #include "verify.h"
 
 static void usage(FILE *f)
@@ -28,7 +29,8 @@ static void usage(FILE *f)
     "  --jobs N       cases run in parallel (default: the number of cores)\n"
     "  --out DIR      per-case folders DIR/<case-id>/, DIR/verify.json, DIR/verify.csv\n"
     "                 (default out/verify-quick or out/verify-full)\n"
-    "  --scenes DIR   scene folder (default data/scenes)\n"
+    "  --scenes DIR   scene folder (default: $DELAM_SCENES, ./data/scenes, or the\n"
+    "                 installed or source tree's scenes)\n"
     "  --list         print one `delam run ...` line per case and stop (for GNU parallel\n"
     "                 or a cluster array; then `delam verify --merge DIR`)\n"
     "  --merge DIR    run nothing: check the case folders already in DIR (with --quick or\n"
@@ -41,7 +43,8 @@ static void usage(FILE *f)
 
 int ver_cmd_verify(int argc, char **argv)
 {
-  ver_verify_opts o = {0, 0, NULL, "data/scenes", "delam", 0, 0, 0};
+  const char *scenes = ver_scene_dir();
+  ver_verify_opts o = {0, 0, NULL, scenes ? scenes : "data/scenes", "delam", 0, 0, 0};
   int quick = 0;
   for (int i = 1; i < argc; i++) {
     const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
