@@ -174,7 +174,8 @@ typedef struct {
   double px, py;           /* momentum, then Lagrangian velocity v^L after the update  */
   double fx, fy;           /* internal force, then v^L - v after the update (MUSL: then v') */
   double qx, qy;           /* MUSL: momentum of the updated particle velocities        */
-  double pad;              /* to 64 bytes; always 0                                    */
+  double pad;              /* to 64 bytes; 0, except under two fields (mpm_fields.c):
+                              mass times the displacement along the failure normal    */
 } mpm_node;
 
 /* The second velocity field (grid.fields = 2, mpm_fields.c): at a node that a separated

@@ -12,11 +12,12 @@
  *     (mpm_fields_side), scatters to and gathers from the second field (nd2) at its
  *     split nodes, the others the first (nd); every other node is one field, so the
  *     band's intact ligament stays bonded;
- *  3. the fields at a split node interact only in contact: when they approach along n,
- *     (v2 - v1) . n < 0, both take their centre-of-mass normal velocity (momentum is
- *     kept, the tangential velocities are free: frictionless); when they move apart
- *     they are independent, so a separated band carries no load and does not close
- *     through itself.  The gap is not tracked: approach alone means contact.
+ *  3. the fields at a split node interact only in contact: when the gap between them is
+ *     closed (the mass-weighted normal displacement n . u of the far field's particles
+ *     is not above the near field's) and they approach along n, (v2 - v1) . n < 0,
+ *     both take their centre-of-mass normal velocity (momentum is kept, the
+ *     tangential velocities are free: frictionless).  Otherwise they are independent,
+ *     so a separated band carries no load and does not close through itself.
  * Constrained nodes (grip, fixed end) are never split: their reactions stay those of
  * one field.  Without a separated particle nothing is split and the step is the one
  * field step, bit for bit.
@@ -137,7 +138,10 @@ void mpm_fields_grid(mpm_sim *s)
     if (!(a->m > mmin))
       continue;
     const double wa = a->px * nx + a->py * ny, wb = b->px * nx + b->py * ny;
-    if (wb - wa < 0.0) { /* approaching: contact, the normal velocity of the centre of mass */
+    /* the gap along n: the mean normal displacement of the far field's particles less
+     * that of the near field's (lane 7 holds m u_n); contact only when it is closed */
+    const double gap = b->pad / b->m - a->pad / a->m;
+    if (wb - wa < 0.0 && gap <= 0.0) { /* approaching: contact, the normal velocity of the centre of mass */
       const double wc = (a->m * wa + b->m * wb) / (a->m + b->m), da = wc - wa, db = wc - wb;
       a->px += da * nx;
       a->py += da * ny;

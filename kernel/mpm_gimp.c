@@ -33,6 +33,7 @@ int mpm_gimp_p2g_range(const mpm_grid *gg, const mpm_particles *p, size_t a, siz
   const double ihx = g->ihx, ihy = g->ihy, ox = g->ox, oy = g->oy;
   mpm_node *restrict nd = g->nd;
   const double *restrict x = p->x, *restrict y = p->y, *restrict vx = p->vx, *restrict vy = p->vy;
+  const double *restrict x0 = p->x0, *restrict y0 = p->y0;
   const double *restrict pm = p->m, *restrict V = p->V;
   const double *restrict sxx = p->sxx, *restrict syy = p->syy, *restrict sxy = p->sxy;
   const mpm_fields *fld = g->fld;
@@ -52,7 +53,9 @@ int mpm_gimp_p2g_range(const mpm_grid *gg, const mpm_particles *p, size_t a, siz
     mpm_gimp_1d((y[k] - oy) * ihy, lcy, &sy);
     const size_t n0 = (size_t)sx.i0 * nny + (size_t)sy.i0;
     const double mm = pm[k], Vx = V[k] * ihx, Vy = V[k] * ihy;
-    const mpm_v8 P = {mm, mm * vx[k], mm * vy[k], 0.0, 0.0, 0.0, 0.0, 0.0};
+    /* lane 7: the displacement along the failure-plane normal, for the contact's gap */
+    const double un = fld ? fld->nx * (x[k] - x0[k]) + fld->ny * (y[k] - y0[k]) : 0.0;
+    const mpm_v8 P = {mm, mm * vx[k], mm * vy[k], 0.0, 0.0, 0.0, 0.0, mm * un};
     const mpm_v8 FX = {0.0, 0.0, 0.0, Vx * sxx[k], Vx * sxy[k], 0.0, 0.0, 0.0};
     const mpm_v8 FY = {0.0, 0.0, 0.0, Vy * sxy[k], Vy * syy[k], 0.0, 0.0, 0.0};
     if (mpm_fields_any(fld, n0, nny)) { /* near a separated band: the field per node */

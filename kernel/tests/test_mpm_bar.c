@@ -339,6 +339,10 @@ static void test_mpm_bar_threads_bit_identical(void **state)
     fail_msg("Model 1 bar: %ld softening and %ld separation updates; expected both", nsoft, nsep);
   sc.shape = MPM_SHAPE_GIMP; /* uGIMP: 3 x 3 nodes a particle, half-cell drift between sorts */
   threads_case(&sc, 1125, "Model 1 bar, uGIMP, softening and separation", &nsoft, &nsep);
+  sc.fields = MPM_FIELDS_TWO; /* and the second velocity field once the band separates */
+  threads_case(&sc, 1125, "Model 1 bar, uGIMP, two fields", &nsoft, &nsep);
+  if (!(nsep > 0))
+    fail_msg("two fields: no separation, so the second field was never used");
   /* the case did reach decohesion, else the comparison proves little */
   if (!(nsoft > 0 && nsep > 0))
     fail_msg("Model 1 bar: %ld softening and %ld separation updates; expected both", nsoft, nsep);
