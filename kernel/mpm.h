@@ -188,6 +188,10 @@ typedef struct {
   double *cw;              /* the weights summed into crk (scratch)                     */
   double nx, ny;           /* the failure plane's normal: side 2 is n . (x - crk) > 0   */
   int nsplit;              /* split nodes this step (0: one field everywhere)           */
+  int cut;                 /* 1 once a separated particle sits in every particle row    */
+  int nrow;                /* particle rows of the bar (reference configuration)        */
+  double drow;             /* their spacing                                             */
+  uint8_t *rowsep;         /* scratch: rows holding a separated particle                 */
 } mpm_fields;
 
 typedef struct {

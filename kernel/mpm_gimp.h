@@ -24,7 +24,7 @@ int mpm_gimp_p2g_range(const mpm_grid *g, const mpm_particles *p, size_t a, size
 void mpm_gimp_musl_range(const mpm_grid *g, mpm_particles *p, size_t a, size_t b, double lcx, double lcy);
 
 /* ---- two velocity fields (mpm_fields.c) ---- */
-mpm_fields *mpm_fields_alloc(size_t nn, double nx, double ny);
+mpm_fields *mpm_fields_alloc(size_t nn, int nrow, double drow, double nx, double ny);
 void mpm_fields_free(mpm_fields *f);
 void mpm_fields_mark(mpm_sim *s);  /* before the scatter: split nodes and band centres   */
 void mpm_fields_grid(mpm_sim *s);  /* after grid_update: the second field's eq. 4, contact */

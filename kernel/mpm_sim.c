@@ -154,7 +154,9 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
       ok = (s->dws[t] = mpm_dwork_alloc()) != NULL;
     if (ok && sc->fields == MPM_FIELDS_TWO) {
       const double a = sc->alpha_deg * (3.14159265358979323846 / 180.0);
-      ok = (s->g->fld = mpm_fields_alloc((size_t)s->g->nnx * (size_t)s->g->nny, sin(a), -cos(a))) != NULL;
+      const int n1 = (int)lround(sqrt((double)sc->ppc));
+      ok = (s->g->fld = mpm_fields_alloc((size_t)s->g->nnx * (size_t)s->g->nny, cy * n1, h / n1, sin(a),
+                                         -cos(a))) != NULL;
     }
   }
   if (!ok) {
