@@ -65,6 +65,8 @@ typedef struct {
   double U0, s0, q;      /* dissipation per area at separation, reference traction, softening exponent */
   double sep_threshold;  /* lambda above which the separation algorithm is used (paper 0.98) */
   int le_mode;           /* MPM_LE_CELL, MPM_LE_PARTICLE or MPM_LE_STAIRCASE           */
+  double le_factor;      /* Le is le_factor times the mode's length (1; the paper's proposal
+                            of sec. 4.4: the fracture zone's measured volume per unit area) */
   double imp_factor;     /* snf multiplier at the imperfection particle (paper 0.9); 1 = none */
   double imp_x, imp_y;   /* the imperfection sits at the particle nearest this point   */
   double h;              /* grid spacing                                               */

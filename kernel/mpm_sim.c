@@ -55,6 +55,7 @@ mpm_status mpm_scene_check(const mpm_scene *sc, char *err, size_t errlen)
   if (!(sc->rho > 0.0)) BAD("material.rho must be > 0");
   if (sc->model < 0 || sc->model > 2) BAD("decohesion.model must be 0, 1 or 2");
   if (sc->le_mode < MPM_LE_CELL || sc->le_mode > MPM_LE_STAIRCASE) BAD("decohesion.Le must be cell, particle or staircase");
+  if (!(sc->le_factor > 0.0 && sc->le_factor <= 100.0)) BAD("decohesion.Le_factor must be in (0, 100]");
   if (sc->model) {
     if (!(sc->alpha_deg >= 0.0 && sc->alpha_deg < 180.0)) BAD("decohesion.alpha must be in [0, 180)");
     if (!(sc->snf > 0.0) || !(sc->stf > 0.0)) BAD("decohesion: snf and stf must be > 0");
@@ -174,8 +175,8 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
    * step's corner has to strain with the band for it to open (a node there belongs to
    * both sides), so the narrowest band that can separate is 1 + |cot a| cells wide per
    * row: the band's volume per unit crack length is h (|sin a| + |cos a|). */
-  const double Le = sc->le_mode == MPM_LE_STAIRCASE ? h * (fabs(sin(a)) + fabs(cos(a)))
-                                                    : side * fmax(fabs(sin(a)), fabs(cos(a)));
+  const double Le = sc->le_factor * (sc->le_mode == MPM_LE_STAIRCASE ? h * (fabs(sin(a)) + fabs(cos(a)))
+                                                                     : side * fmax(fabs(sin(a)), fabs(cos(a))));
   mpm_material_init(&s->mat[MPM_MAT_BAR], sc, sc->snf, Le);
   mpm_material_init(&s->mat[MPM_MAT_IMP], sc, sc->snf * sc->imp_factor, Le);
   mpm_material_init(&s->mat[MPM_MAT_HEAD], sc, sc->snf, Le);

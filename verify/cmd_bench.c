@@ -26,18 +26,60 @@
 #include "datadir.h"
 #include "scene.h"
 
+/* Each case names its method in full (the scene files' defaults may change). */
 typedef struct {
   const char *scene;
   double h;
   int ppc;
   long steps;
+  const char *method; /* label in the case id                                   */
+  const char *sets;   /* the method: overrides, separated by spaces              */
+  int cut;            /* 1: start with a separated band across the bar (cut_band) */
 } bench_case;
 
+#define PAPER "grid.shape=linear grid.fields=one decohesion.Le=cell"
 static const bench_case cases[] = {
-  {"fig6", 2.0, 4, 4000},
-  {"fig6", 1.0, 4, 2000},
-  {"fig7", 2.0, 4, 4000},
+  {"fig6", 2.0, 4, 4000, "linear", "grid.shape=linear grid.fields=one", 0},
+  {"fig6", 1.0, 4, 2000, "linear", "grid.shape=linear grid.fields=one", 0},
+  {"fig7", 2.0, 4, 4000, "paper", PAPER, 0},
+  {"fig6", 2.0, 4, 4000, "gimp", "grid.shape=gimp grid.fields=one", 0},
+  {"fig7", 2.0, 4, 4000, "gimp", "grid.shape=gimp grid.fields=one decohesion.Le=cell", 0},
+  {"fig7", 2.0, 4, 4000, "gimp-two", "grid.shape=gimp grid.fields=two decohesion.Le=staircase", 1},
 };
+
+/* A separated band along the failure plane through the bar's centre: in each particle
+ * row the particle nearest the line, so that the two-field path is the one timed. */
+static void cut_band(mpm_sim *s)
+{
+  const mpm_scene *sc = &s->sc;
+  mpm_particles *p = s->p;
+  const double a = sc->alpha_deg * (3.14159265358979323846 / 180.0), d = sc->h / sqrt((double)sc->ppc);
+  const int nrow = (int)lround(sc->H / d);
+  for (int j = 0; j < nrow; j++) {
+    const double y = (j + 0.5) * d, xl = 0.5 * sc->L + (y - 0.5 * sc->H) * cos(a) / sin(a);
+    size_t best = SIZE_MAX;
+    for (size_t k = 0; k < p->n; k++)
+      if (p->mat[k] != MPM_MAT_HEAD && fabs(p->y0[k] - y) < 0.25 * d &&
+          (best == SIZE_MAX || fabs(p->x0[k] - xl) < fabs(p->x0[best] - xl)))
+        best = k;
+    if (best == SIZE_MAX)
+      continue;
+    p->sep[best] = 1;
+    p->lam[best] = 1.0;
+    p->str2[best] = -1.0;
+  }
+}
+
+/* Applies the space-separated overrides of a case. */
+static int apply_sets(ver_scene *vs, const char *sets, char *err, size_t errlen)
+{
+  char buf[256];
+  snprintf(buf, sizeof buf, "%s", sets);
+  for (char *save = NULL, *tok = strtok_r(buf, " ", &save); tok; tok = strtok_r(NULL, " ", &save))
+    if (ver_scene_set(vs, tok, err, errlen))
+      return 1;
+  return 0;
+}
 
 /* Uniform uniaxial stress sigma along x: strains sigma/E and -nu sigma/E, the left end
  * at -delta, the right end fixed, mid-height fixed in y; velocity the loading field. */
@@ -67,7 +109,8 @@ static size_t bytes_per_particle(const mpm_sim *s)
   const size_t particles = np * (16 * sizeof(double) + 2);         /* mpm_particles  */
   const size_t sorting = np * (sizeof(double) + 1 + 2 * sizeof(uint32_t)) + (ncell + 1) * sizeof(size_t) +
                          ((size_t)s->nstrip + 1) * sizeof(size_t);
-  const size_t grid = nn * sizeof(mpm_node);
+  const size_t fields = s->g->fld ? nn * (sizeof(mpm_node) + 1 + 3 * sizeof(double)) : 0;
+  const size_t grid = nn * sizeof(mpm_node) + fields;
   const size_t other = s->nhead * sizeof(uint32_t) + (size_t)s->thr.nmax * sizeof(mpm_defer) +
                        (size_t)(s->ngrip + s->nfixx) * sizeof(int);
   return (particles + sorting + grid + other + np / 2) / np;
@@ -77,8 +120,10 @@ static void usage(FILE *f)
 {
   fprintf(f,
     "usage: delam bench [--threads N] [--repeat N] [--json] [--steps-scale X]\n"
-    "Times fixed cases (Fig. 6 at h = 2 and h = 1, Fig. 7 at h = 2, 4 particles per cell,\n"
-    "from 99 %% of the peak stress so decohesion is active) with 1 and 2 threads, or with N.\n"
+    "Times fixed cases, 4 particles per cell, from 99 %% of the peak stress so decohesion is\n"
+    "active, with 1 and 2 threads, or with N: Fig. 6 at h = 2 and 1 and Fig. 7 at h = 2 with\n"
+    "the paper's bilinear shapes; Fig. 6 and Fig. 7 at h = 2 with uGIMP; Fig. 7 at h = 2 with\n"
+    "uGIMP and two velocity fields, from a band already cut (the case id ends in the method).\n"
     "Each case runs --repeat times from the same start and the fastest run is reported\n"
     "(the others differ only by what else the machine did meanwhile).\n"
     "  --threads N      only N threads (default: 1 and 2)\n"
@@ -124,7 +169,7 @@ int ver_cmd_bench(int argc, char **argv)
   const int tlist[2] = {threads ? threads : 1, 2};
   const int ntl = threads ? 1 : 2;
   if (!json)
-    printf("%-16s %3s %8s %6s %7s %7s %9s  %5s %5s %5s %5s %5s  %4s\n", "case", "thr", "particles", "steps",
+    printf("%-22s %3s %8s %6s %7s %7s %9s  %5s %5s %5s %5s %5s  %4s\n", "case", "thr", "particles", "steps",
            "wall_s", "cpu_s", "Mupd/s", "sort%", "p2g%", "grid%", "g2p%", "cons%", "B/p");
   for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++)
     for (int ti = 0; ti < ntl; ti++) {
@@ -141,6 +186,10 @@ int ver_cmd_bench(int argc, char **argv)
       ver_scene_set(&vs, set, err, sizeof err);
       snprintf(set, sizeof set, "grid.ppc=%d", cases[c].ppc);
       ver_scene_set(&vs, set, err, sizeof err);
+      if (apply_sets(&vs, cases[c].sets, err, sizeof err)) {
+        fprintf(stderr, "delam bench: %s\n", err);
+        return 2;
+      }
       vs.sc.end_delta = 1.0;
       if (ver_scene_validate(&vs, err, sizeof err)) {
         fprintf(stderr, "delam bench: %s\n", err);
@@ -162,6 +211,8 @@ int ver_cmd_bench(int argc, char **argv)
           return 1;
         }
         prestress(t, 0.99 * bar.r0);
+        if (cases[c].cut)
+          cut_band(t);
         const double w0 = ver_now_wall(), c0 = ver_now_cpu();
         for (long k = 0; k < steps; k++)
           if (mpm_sim_step(t, err, sizeof err) != MPM_OK) {
@@ -185,7 +236,7 @@ int ver_cmd_bench(int argc, char **argv)
       for (int q = 0; q < 5; q++)
         split += s->time_split[q];
       char id[96];
-      snprintf(id, sizeof id, "%s-h%g-ppc%d", vs.name, cases[c].h, cases[c].ppc);
+      snprintf(id, sizeof id, "%s-h%g-ppc%d-%s", vs.name, cases[c].h, cases[c].ppc, cases[c].method);
       const size_t bpp = bytes_per_particle(s);
       if (json) {
         cJSON *o = cJSON_CreateObject();
@@ -207,7 +258,7 @@ int ver_cmd_bench(int argc, char **argv)
         free(txt);
         cJSON_Delete(o);
       } else {
-        printf("%-16s %3d %8zu %6ld %7.2f %7.2f %9.1f  %5.1f %5.1f %5.1f %5.1f %5.1f  %4zu\n", id, tlist[ti],
+        printf("%-22s %3d %8zu %6ld %7.2f %7.2f %9.1f  %5.1f %5.1f %5.1f %5.1f %5.1f  %4zu\n", id, tlist[ti],
                s->p->n, steps, wall, cpu, ups / 1e6, 100 * s->time_split[0] / split,
                100 * s->time_split[1] / split, 100 * s->time_split[2] / split, 100 * s->time_split[3] / split,
                100 * s->time_split[4] / split, bpp);

@@ -32,6 +32,7 @@ static mpm_scene fig6_scene(void)
 {
   mpm_scene sc;
   memset(&sc, 0, sizeof sc);
+  sc.le_factor = 1.0;
   sc.L = 192.0;
   sc.H = 32.0;
   sc.E = 1024.0;

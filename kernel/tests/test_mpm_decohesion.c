@@ -38,6 +38,7 @@ static mpm_scene base_scene(int model, double alpha, double snf, double stf, dou
 {
   mpm_scene sc;
   memset(&sc, 0, sizeof sc);
+  sc.le_factor = 1.0;
   sc.E = 1024.0;
   sc.nu = 0.25;
   sc.rho = 1.0;

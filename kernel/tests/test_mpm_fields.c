@@ -28,6 +28,7 @@ static mpm_sim *blocks(int fields, double v)
 {
   mpm_scene sc;
   memset(&sc, 0, sizeof sc);
+  sc.le_factor = 1.0;
   sc.L = 48.0;
   sc.H = 16.0;
   sc.E = 1024.0;
