@@ -40,6 +40,7 @@ static void usage(FILE *f)
     "                    for small scenes, up to OMP_NUM_THREADS or all cores when\n"
     "                    that measures faster; see docs/threads.md)\n"
     "  --quiet           no progress line\n"
+    "  --keys            print every scene key (type, range, default) and stop\n"
     "  --help            this text\n"
     "exit status: 0 complete, 1 the run failed, 2 bad input, 130 stopped by a signal\n");
 }
@@ -68,6 +69,9 @@ int ver_cmd_run(int argc, char **argv)
     int r = 0;
     if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
       usage(stdout);
+      return 0;
+    } else if (!strcmp(a, "--keys")) {
+      ver_scene_keys_markdown(stdout);
       return 0;
     } else if (!strcmp(a, "--out")) {
       if (!v) { fprintf(stderr, "delam run: --out needs a folder\n"); return 2; }
@@ -113,25 +117,29 @@ int ver_cmd_run(int argc, char **argv)
     fprintf(stderr, "%s\n", err);
     return 2;
   }
-  char buf[128];
+  char buf[128], num[40];
   if (h > 0) {
     if (dt <= 0 && vs.sc.h > 0)
       dt = vs.sc.dt * h / vs.sc.h; /* keep the file's Courant number */
-    snprintf(buf, sizeof buf, "grid.h=%.17g", h);
+    ver_scene_fmt_num(h, num, sizeof num);
+    snprintf(buf, sizeof buf, "grid.h=%s", num);
     if (ver_scene_set(&vs, buf, err, sizeof err)) { fprintf(stderr, "%s\n", err); return 2; }
   }
   if (ppc > 0) {
-    snprintf(buf, sizeof buf, "grid.ppc=%.17g", ppc);
+    ver_scene_fmt_num(ppc, num, sizeof num);
+    snprintf(buf, sizeof buf, "grid.ppc=%s", num);
     if (ver_scene_set(&vs, buf, err, sizeof err)) { fprintf(stderr, "%s\n", err); return 2; }
   }
   if (dt > 0) {
-    snprintf(buf, sizeof buf, "time.dt=%.17g", dt);
+    ver_scene_fmt_num(dt, num, sizeof num);
+    snprintf(buf, sizeof buf, "time.dt=%s", num);
     if (ver_scene_set(&vs, buf, err, sizeof err)) { fprintf(stderr, "%s\n", err); return 2; }
   }
   for (int i = 0; i < nset; i++)
     if (ver_scene_set(&vs, sets[i], err, sizeof err)) { fprintf(stderr, "%s\n", err); return 2; }
   if (until > 0) {
-    snprintf(buf, sizeof buf, "run.end_delta=%.17g", until);
+    ver_scene_fmt_num(until, num, sizeof num);
+    snprintf(buf, sizeof buf, "run.end_delta=%s", num);
     if (ver_scene_set(&vs, buf, err, sizeof err)) { fprintf(stderr, "%s\n", err); return 2; }
     if (ver_scene_set(&vs, "run.stop_margin=0", err, sizeof err)) { fprintf(stderr, "%s\n", err); return 2; }
   }
@@ -140,7 +148,7 @@ int ver_cmd_run(int argc, char **argv)
     fprintf(stderr, "%s\n", err);
     return 2;
   }
-  char id[128], defdir[256];
+  char id[600], defdir[700];
   ver_scene_case_id(&vs, id, sizeof id);
   snprintf(defdir, sizeof defdir, "out/%s", id);
   struct sigaction sa;

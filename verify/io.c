@@ -164,15 +164,21 @@ long ver_csv_read(const char *path, const char *const *cols, int ncol, double **
   char *txt = ver_io_slurp(path, NULL, 0);
   if (!txt)
     return -1;
+  /* leading '#' lines (the schema line of delam's files) come before the header */
+  char *head = txt;
+  while (*head == '#') {
+    char *nl = strchr(head, '\n');
+    head = nl ? nl + 1 : head + strlen(head);
+  }
   int idx[64];
   long rows = 0;
-  for (const char *s = strchr(txt, '\n'); s; s = strchr(s + 1, '\n'))
+  for (const char *s = strchr(head, '\n'); s; s = strchr(s + 1, '\n'))
     rows += s[1] != '\0' && s[1] != '\n';
   int ok = ncol <= 64;
   for (int j = 0; ok && j < ncol; j++)
-    ok = (idx[j] = column(txt, cols[j])) >= 0 && (out[j] = malloc(sizeof(double) * (size_t)(rows + 1)));
+    ok = (idx[j] = column(head, cols[j])) >= 0 && (out[j] = malloc(sizeof(double) * (size_t)(rows + 1)));
   long n = 0;
-  for (char *s = strchr(txt, '\n'); ok && s && n < rows; s = strchr(s, '\n')) {
+  for (char *s = strchr(head, '\n'); ok && s && n < rows; s = strchr(s, '\n')) {
     s++;
     if (*s == '\0' || *s == '\n')
       continue;

@@ -30,6 +30,8 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "build_info.h"
+#include "io.h"
 #include "metrics.h"
 #include "run.h"
 #include "separation.h"
@@ -55,7 +57,8 @@ static int write_snapshot(const mpm_sim *s, const char *dir, const char *stem)
   FILE *f = open_tmp(dir, name, tmp, sizeof tmp);
   if (!f)
     return -1;
-  fprintf(f, "x0,y0,x,y,ux,uy,lambda,sxx,syy,sxy,upn,upt,sep,wcoh\n");
+  fprintf(f, "# delam particles.csv schema %d\nx0,y0,x,y,ux,uy,lambda,sxx,syy,sxy,upn,upt,sep,wcoh\n",
+          VER_SCHEMA_PARTICLES);
   for (size_t k = 0; k < p->n; k++)
     if (p->mat[k] != MPM_MAT_HEAD)
       fprintf(f, "%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%d,%.9g\n", p->x0[k], p->y0[k],
@@ -68,8 +71,8 @@ static int write_snapshot(const mpm_sim *s, const char *dir, const char *stem)
   if (!(f = open_tmp(dir, name, tmp, sizeof tmp)))
     return -1;
   const size_t nb = p->n - s->nhead; /* the bar's particles; the head is the machine */
-  fprintf(f, "# vtk DataFile Version 3.0\ndelam particles %s t=%g\nASCII\nDATASET POLYDATA\nPOINTS %zu double\n",
-          stem, s->t, nb);
+  fprintf(f, "# vtk DataFile Version 3.0\ndelam particles.vtk schema %d %s t=%g\nASCII\nDATASET POLYDATA\nPOINTS %zu double\n",
+          VER_SCHEMA_PARTICLES, stem, s->t, nb);
   for (size_t k = 0; k < p->n; k++)
     if (p->mat[k] != MPM_MAT_HEAD)
       fprintf(f, "%.9g %.9g 0\n", p->x[k], p->y[k]);
@@ -102,14 +105,14 @@ static int write_rows(const row *r, long n, const char *dir)
   FILE *f = open_tmp(dir, "load.csv", tmp, sizeof tmp);
   if (!f)
     return -1;
-  fprintf(f, "t,delta,P_grip,P_fixed\n");
+  fprintf(f, "# delam load.csv schema %d\nt,delta,P_grip,P_fixed\n", VER_SCHEMA_LOAD);
   for (long i = 0; i < n; i++)
     fprintf(f, "%.9g,%.9g,%.9g,%.9g\n", r[i].t, r[i].delta, r[i].Pg, r[i].Pf);
   if (commit_file(f, tmp))
     return -1;
   if (!(f = open_tmp(dir, "energy.csv", tmp, sizeof tmp)))
     return -1;
-  fprintf(f, "t,W_ext,KE,SE,W_coh,D\n");
+  fprintf(f, "# delam energy.csv schema %d\nt,W_ext,KE,SE,W_coh,D\n", VER_SCHEMA_ENERGY);
   for (long i = 0; i < n; i++)
     fprintf(f, "%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", r[i].t, r[i].e.W_ext, r[i].e.KE, r[i].e.SE, r[i].e.W_coh,
             r[i].e.D);
@@ -143,7 +146,7 @@ static int clear_outdir(const char *dir, char *err, size_t errlen)
   for (struct dirent *e = d ? readdir(d) : NULL; e; e = readdir(d)) {
     const char *n = e->d_name;
     if (!strncmp(n, "snap-d", 6) || !strncmp(n, "final.", 6) || !strcmp(n, "summary.json") ||
-        !strcmp(n, "load.csv") || !strcmp(n, "energy.csv")) {
+        !strcmp(n, "load.csv") || !strcmp(n, "energy.csv") || !strcmp(n, "scene.ini")) {
       char old[1400];
       snprintf(old, sizeof old, "%s/%s", dir, n);
       remove(old);
@@ -152,6 +155,22 @@ static int clear_outdir(const char *dir, char *err, size_t errlen)
   if (d)
     closedir(d);
   return 0;
+}
+
+/* scene.ini: the effective scene, which `delam run scene.ini` reproduces. */
+static int write_scene_ini(const ver_scene *vs, const char *dir)
+{
+  char path[1200], tmp[1300];
+  snprintf(path, sizeof path, "%s/scene.ini", dir);
+  FILE *f = ver_io_open_tmp(path, tmp, sizeof tmp);
+  if (!f)
+    return -1;
+  if (ver_scene_write_ini(vs, f) != 0) {
+    fclose(f);
+    remove(tmp);
+    return -1;
+  }
+  return ver_io_commit(f, tmp);
 }
 
 /* The state of one run's time loop. */
@@ -164,7 +183,7 @@ typedef struct {
   double vdt, last_snap, acc_g, acc_f, peak, dpeak;
   ver_sep sep;
   int snap_done[VER_MAX_SNAP];
-  char id[128];
+  char id[600];
 } run_state;
 
 /* Allocates the rows and the separation detector (before the loop: no malloc in it). */
@@ -255,6 +274,9 @@ static void finish(const run_state *r, ver_summary *u, double w0, double c0)
   u->wall_s = ver_now_wall() - w0;
   u->cpu_s = ver_now_cpu() - c0;
   u->steps = s->step;
+  u->threads_req = r->o->threads;
+  u->threads_max = s->thr.nmax;
+  u->steps_multi = s->thr.steps_multi;
   u->particles = s->p->n;
   u->updates_per_s = u->wall_s > 0 ? (double)s->p->n * (double)s->step / u->wall_s : 0;
   u->peak_P = r->peak;
@@ -322,6 +344,10 @@ int ver_run(const ver_scene *vs, const ver_run_opts *o, ver_summary *u, char *er
   u->delta_sep = u->delta_sep_cut = u->delta_sep_load = -1;
   if (o->write_files && clear_outdir(o->outdir, err, errlen))
     return 2;
+  if (o->write_files && write_scene_ini(vs, o->outdir) != 0) {
+    snprintf(err, errlen, "%s/scene.ini: cannot write: %s", o->outdir, strerror(errno));
+    return 1;
+  }
   run_state r;
   memset(&r, 0, sizeof r);
   r.vs = vs;

@@ -9,6 +9,7 @@
 #define DELAM_SCENE_H
 
 #include <stddef.h>
+#include <stdio.h>
 
 #include "ana.h"
 #include "mpm.h"
@@ -16,6 +17,7 @@
 #define VER_MAX_SNAP 16
 #define VER_NKEYS 40
 #define VER_NSECT 12
+#define VER_MAX_OVER 32
 
 typedef struct {
   char name[64];              /* scene name: the file's base name without .ini          */
@@ -31,6 +33,9 @@ typedef struct {
   int seen[VER_NKEYS];
   int sect_line[VER_NSECT];   /* line of each section's first [header] (0: absent)       */
   int nlines;                 /* lines in the file                                      */
+  char over[VER_MAX_OVER][128]; /* the overrides set after the file (ver_scene_set), in order */
+  int nover;
+  double file_h, file_dt;     /* grid.h and time.dt as the file gave them               */
 } ver_scene;
 
 /* Reads and validates a scene file.  Returns 0, or 2 with one line in err. */
@@ -46,8 +51,23 @@ int ver_scene_set(ver_scene *vs, const char *assignment, char *err, size_t errle
 /* Checks presence, ranges, the rules between keys (h divides L and H, ppc a square,
  * the CFL bound, sizes the kernel can allocate) and fills the defaults.  Returns 0 or 2. */
 int ver_scene_validate(ver_scene *vs, char *err, size_t errlen);
-/* Case id, e.g. "fig6-h4-ppc4". */
+/* Case id: scene, h and ppc, then every override but grid.h, grid.ppc and a time.dt
+ * that only keeps the file's Courant number, e.g. "fig6-h4-ppc4" or
+ * "fig6-h8-ppc1-material.E=2048" (the last value of each key; numbers in their shortest
+ * exact form).  Two runs of different scenes never get the same id. */
 void ver_scene_case_id(const ver_scene *vs, char *buf, size_t len);
+/* v in the shortest %g form that reads back as v exactly (at most 17 digits). */
+void ver_scene_fmt_num(double v, char *buf, size_t len);
+/* Scene, h and ppc only, e.g. "fig6-h4-ppc4" (verify adds its own variant names). */
+void ver_scene_base_id(const ver_scene *vs, char *buf, size_t len);
+/* The effective scene as an INI file: every key with the value the run uses (defaults
+ * filled in; numbers to 17 digits), so that reading it back gives the same scene.  The
+ * header comments name the source file and the overrides.  0 or -1 (write error). */
+int ver_scene_write_ini(const ver_scene *vs, FILE *f);
+#define VER_SCHEMA_SCENE 1     /* its first line: "; delam scene.ini schema 1, ..." */
+/* The key table as a Markdown table (section, key, type, required, allowed, default),
+ * for docs/scene-keys.md, which a test holds to it. */
+void ver_scene_keys_markdown(FILE *f);
 /* The closed-form bar of the scene (analytic/ana.h; alpha > 90 folded to 180 - alpha,
  * the same line).  0, or 2 with the reason in err (scene_bar.c). */
 int ver_scene_bar(const mpm_scene *sc, ana_bar *bar, char *err, size_t len);

@@ -9,6 +9,7 @@
 
 #include <cjson/cJSON.h>
 
+#include "build_info.h"
 #include "io.h"
 #include "summary.h"
 
@@ -46,8 +47,9 @@ static const struct {
 int ver_summary_write(const char *dir, const ver_scene *vs, const ver_summary *u, const char *errmsg)
 {
   cJSON *o = cJSON_CreateObject();
-  char id[128];
+  char id[600];
   ver_scene_case_id(vs, id, sizeof id);
+  cJSON_AddNumberToObject(o, "schema", VER_SCHEMA_SUMMARY);
   cJSON_AddStringToObject(o, "case", id);
   cJSON_AddStringToObject(o, "scene", vs->name);
   cJSON_AddStringToObject(o, "scene_file", vs->path);
@@ -80,6 +82,27 @@ int ver_summary_write(const char *dir, const ver_scene *vs, const ver_summary *u
     }
     cJSON_AddNumberToObject(o, NUMS[i].key, v);
   }
+  /* provenance: what reproduces the run, and what built the program */
+  cJSON_AddStringToObject(o, "version", ver_build_version());
+  cJSON_AddStringToObject(o, "compiler", ver_build_compiler());
+  cJSON_AddStringToObject(o, "flags", ver_build_flags());
+  cJSON *th = cJSON_AddObjectToObject(o, "threads");
+  cJSON_AddStringToObject(th, "requested", u->threads_req > 0 ? "fixed" : "auto");
+  cJSON_AddNumberToObject(th, "max", u->threads_max);
+  cJSON_AddNumberToObject(th, "steps_multi", (double)u->steps_multi);
+  cJSON *ov = cJSON_AddArrayToObject(o, "overrides");
+  for (int i = 0; i < vs->nover; i++)
+    cJSON_AddItemToArray(ov, cJSON_CreateString(vs->over[i]));
+  char *ini = NULL;
+  size_t inilen = 0;
+  FILE *mf = open_memstream(&ini, &inilen);
+  if (mf) {
+    const int bad = ver_scene_write_ini(vs, mf);
+    fclose(mf);
+    if (!bad && ini)
+      cJSON_AddStringToObject(o, "effective_scene", ini);
+  }
+  free(ini);
   char *txt = cJSON_Print(o);
   cJSON_Delete(o);
   if (!txt)

@@ -26,7 +26,20 @@ typedef struct {
   double wall_s, cpu_s, updates_per_s;
   int complete;                  /* 1 if the run reached its stop rule               */
   int status;                    /* mpm_status of the run                            */
+  int threads_req;               /* --threads (0: chosen per step by the kernel)     */
+  int threads_max;               /* the most threads a step could use                */
+  long steps_multi;              /* steps that ran on more than one thread           */
 } ver_summary;
+
+/* Schema versions of the files a run writes (docs/output-formats.md); each file says
+ * its own: summary.json "schema", a first comment line in the CSV files and scene.ini,
+ * the title line of the VTK files.  Raised when a column or key changes meaning or
+ * goes away (new keys and columns may join without a raise). */
+#define VER_SCHEMA_SUMMARY 1
+#define VER_SCHEMA_LOAD 1
+#define VER_SCHEMA_ENERGY 1
+#define VER_SCHEMA_PARTICLES 1
+/* scene.ini: VER_SCHEMA_SCENE in scene.h */
 
 /* What summary.json says: the run's description and its ver_summary. */
 typedef struct {

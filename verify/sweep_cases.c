@@ -96,7 +96,7 @@ int ver_case_init(ver_case *c, const char *path, const char *scene, double h, in
   if (build_scene(path, h, ppc, c->sets, c->nset, &c->vs, err, len))
     return 2;
   char base[100];
-  ver_scene_case_id(&c->vs, base, sizeof base);
+  ver_scene_base_id(&c->vs, base, sizeof base);
   snprintf(c->id, sizeof c->id, "%s%s%s", base, v.suffix[0] ? "-" : "", v.suffix);
   const mpm_scene *sc = &c->vs.sc;
   c->cost = (sc->L / sc->h) * (sc->H / sc->h) * sc->ppc * (c->end_delta / (sc->speed * sc->dt));

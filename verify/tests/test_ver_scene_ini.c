@@ -1,0 +1,143 @@
+/*
+ * test_ver_scene_ini.c - provenance of a scene (scene.h): the effective scene written
+ * as INI reads back as the same scene, field for field, for every scene file with and
+ * without overrides; case ids tell apart runs that differ in any override; and
+ * docs/scene-keys.md holds the key table as the parser has it.
+ * argv[1]: the source tree.
+ */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "io.h"
+#include "scene.h"
+
+static const char *src = ".";
+
+static void load(const char *scene, const char *const *sets, ver_scene *vs)
+{
+  char path[1024], err[1024];
+  snprintf(path, sizeof path, "%s/data/scenes/%s.ini", src, scene);
+  if (ver_scene_parse(path, vs, err, sizeof err))
+    fail_msg("%s", err);
+  for (int i = 0; sets && sets[i]; i++)
+    if (ver_scene_set(vs, sets[i], err, sizeof err))
+      fail_msg("%s", err);
+  if (ver_scene_validate(vs, err, sizeof err))
+    fail_msg("%s", err);
+}
+
+/* The effective INI of a, read back, is a's scene; the text is returned (caller frees). */
+static char *round_trip(const ver_scene *a)
+{
+  char *ini = NULL, err[1024];
+  size_t len = 0;
+  FILE *f = open_memstream(&ini, &len);
+  assert_non_null(f);
+  assert_int_equal(ver_scene_write_ini(a, f), 0);
+  fclose(f);
+  ver_scene b;
+  if (ver_scene_parse_string(ini, "scene.ini", &b, err, sizeof err) || ver_scene_validate(&b, err, sizeof err))
+    fail_msg("the effective scene of %s does not read back: %s\n%s", a->name, err, ini);
+  /* every field of the kernel's scene, and the run control, bit for bit */
+  if (memcmp(&a->sc, &b.sc, sizeof a->sc))
+    fail_msg("%s: the kernel scene read back from its INI differs\n%s", a->name, ini);
+  assert_true(a->nsnap == b.nsnap && !memcmp(a->snap, b.snap, sizeof a->snap));
+  assert_true(a->interval == b.interval && a->stop_margin == b.stop_margin && a->sep_load_frac == b.sep_load_frac);
+  return ini;
+}
+
+static void test_ver_scene_ini_round_trip(void **state)
+{
+  (void)state;
+  const char *scenes[] = {"fig6", "fig7", "fig8", "a30", "a45"};
+  /* values that do not print exactly in a few digits, and every kind of key */
+  const char *sets[] = {"material.E=1000.1", "time.dt=0.0123456789012345", "decohesion.Le=particle",
+                        "grid.ppc=4", "imperfection.x=33.3", "run.stop_margin=0", NULL};
+  for (size_t i = 0; i < sizeof scenes / sizeof scenes[0]; i++) {
+    ver_scene a;
+    load(scenes[i], NULL, &a);
+    free(round_trip(&a));
+    load(scenes[i], sets, &a);
+    char *ini = round_trip(&a);
+    /* the overrides are named in the header */
+    assert_non_null(strstr(ini, "material.E=1000.1"));
+    free(ini);
+  }
+  /* a scene without decohesion: its unused keys stay out and it still reads back */
+  ver_scene a;
+  const char *none[] = {"decohesion.model=0", NULL};
+  load("fig6", none, &a);
+  free(round_trip(&a));
+}
+
+static void test_ver_scene_case_ids(void **state)
+{
+  (void)state;
+  ver_scene a, b;
+  char ia[600], ib[600];
+  load("fig6", NULL, &a);
+  ver_scene_case_id(&a, ia, sizeof ia);
+  assert_string_equal(ia, "fig6-h8-ppc1");
+  const char *e1[] = {"material.E=2048", NULL}, *e2[] = {"material.E=2048.5", NULL};
+  load("fig6", e1, &b);
+  ver_scene_case_id(&b, ib, sizeof ib);
+  assert_string_equal(ib, "fig6-h8-ppc1-material.E=2048");
+  load("fig6", e2, &a);
+  ver_scene_case_id(&a, ia, sizeof ia);
+  assert_string_not_equal(ia, ib);
+  /* h with the file's Courant number is in the id once; an own dt is named */
+  const char *h4[] = {"grid.h=4", "time.dt=0.05", NULL}, *h4dt[] = {"grid.h=4", "time.dt=0.04", NULL};
+  load("fig6", h4, &a);
+  ver_scene_case_id(&a, ia, sizeof ia);
+  assert_string_equal(ia, "fig6-h4-ppc1");
+  load("fig6", h4dt, &a);
+  ver_scene_case_id(&a, ia, sizeof ia);
+  assert_string_equal(ia, "fig6-h4-ppc1-time.dt=0.04");
+  /* the last value of a key counts */
+  const char *twice[] = {"material.E=1", "material.E=2048", NULL};
+  load("fig6", twice, &a);
+  ver_scene_case_id(&a, ia, sizeof ia);
+  assert_string_equal(ia, ib);
+}
+
+/* docs/scene-keys.md between its two marker lines is the parser's key table. */
+static void test_ver_scene_keys_doc(void **state)
+{
+  (void)state;
+  char path[1024];
+  snprintf(path, sizeof path, "%s/docs/scene-keys.md", src);
+  char *doc = ver_io_slurp(path, NULL, 0);
+  assert_non_null(doc);
+  const char *b = strstr(doc, "<!-- keys: begin -->\n"), *e = strstr(doc, "<!-- keys: end -->");
+  assert_true(b && e && e > b);
+  b += strlen("<!-- keys: begin -->\n");
+  char *tab = NULL;
+  size_t len = 0;
+  FILE *f = open_memstream(&tab, &len);
+  ver_scene_keys_markdown(f);
+  fclose(f);
+  if ((size_t)(e - b) != len || memcmp(b, tab, len))
+    fail_msg("docs/scene-keys.md is not the key table of verify/scene.c; it should read:\n%s", tab);
+  free(tab);
+  free(doc);
+}
+
+int main(int argc, char **argv)
+{
+  if (argc > 1)
+    src = argv[1];
+  const struct CMUnitTest tests[] = {
+      cmocka_unit_test(test_ver_scene_ini_round_trip),
+      cmocka_unit_test(test_ver_scene_case_ids),
+      cmocka_unit_test(test_ver_scene_keys_doc),
+  };
+  return cmocka_run_group_tests(tests, NULL, NULL);
+}
