@@ -9,7 +9,7 @@ DEBS = meson ninja-build pkg-config gcc libgsl-dev libcmocka-dev libinih-dev \
        libcjson-dev gnuplot-nox
 SUDO = $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-.PHONY: all deps build check check-asan fuzz report report-full bench clean
+.PHONY: all deps build check check-asan fuzz report report-full bench docs-keys clean
 
 all: build
 
@@ -70,6 +70,14 @@ report-full: build
 
 bench: build
 	$(BUILD)/delam bench
+
+# docs/scene-keys.md: the table between its markers, from the parser's own key table
+# (make check fails when they differ).
+docs-keys: build
+	$(BUILD)/delam run --keys > $(BUILD)/keys.md
+	awk -v t=$(BUILD)/keys.md '/<!-- keys: end -->/{while ((getline l < t) > 0) print l; skip=0} \
+	  !skip{print} /<!-- keys: begin -->/{skip=1}' docs/scene-keys.md > docs/scene-keys.md.tmp
+	mv docs/scene-keys.md.tmp docs/scene-keys.md
 
 clean:
 	rm -rf $(BUILD) $(BUILD_ASAN) build-fuzz

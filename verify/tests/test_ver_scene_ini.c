@@ -125,7 +125,7 @@ static void test_ver_scene_keys_doc(void **state)
   ver_scene_keys_markdown(f);
   fclose(f);
   if ((size_t)(e - b) != len || memcmp(b, tab, len))
-    fail_msg("docs/scene-keys.md is not the key table of verify/scene.c; it should read:\n%s", tab);
+    fail_msg("docs/scene-keys.md is not the key table of verify/scene.c (`make docs-keys` rewrites it); it should read:\n%s", tab);
   free(tab);
   free(doc);
 }
