@@ -76,7 +76,7 @@ typedef struct {
   int grid_motion;       /* MPM_GRID_FIXED (default, the paper) or MPM_GRID_STRETCH   */
   int shape;             /* MPM_SHAPE_LINEAR (default, the paper) or MPM_SHAPE_GIMP    */
   int fields;            /* MPM_FIELDS_ONE (the paper) or MPM_FIELDS_TWO: one velocity field
-                            per side of a separated band (needs MPM_SHAPE_GIMP; mpm_fields.c) */
+                            per side of a separated band (mpm_fields.c)              */
   double dt;             /* time step                                                  */
   double speed;          /* grip speed (pulls the left end in -x)                      */
   double end_delta;      /* the run never goes past this end displacement              */
@@ -190,10 +190,6 @@ typedef struct {
   double *cw;              /* the weights summed into crk (scratch)                     */
   double nx, ny;           /* the failure plane's normal: side 2 is n . (x - crk) > 0   */
   int nsplit;              /* split nodes this step (0: one field everywhere)           */
-  int cut;                 /* 1 once a separated particle sits in every particle row    */
-  int nrow;                /* particle rows of the bar (reference configuration)        */
-  double drow;             /* their spacing                                             */
-  uint8_t *rowsep;         /* scratch: rows holding a separated particle                 */
 } mpm_fields;
 
 typedef struct {
@@ -290,6 +286,11 @@ typedef struct {
   uint8_t *scratch8;
   int resort;              /* 1: a particle left its strip's safe range; sort before the next step */
   double time_split[5];    /* seconds in: sort, p2g, grid, g2p, constitutive            */
+  int cut;                 /* 1 once the band has cut the bar: a separated particle in every
+                              particle row of the reference lattice (mpm_sim_cut); latched */
+  long cut_seen;           /* n_separate when the rows were last counted                */
+  int nrow;                /* particle rows of the bar                                  */
+  uint8_t *rowsep;         /* scratch: the rows holding a separated particle            */
 } mpm_sim;
 
 enum { MPM_T_SORT = 0, MPM_T_P2G, MPM_T_GRID, MPM_T_G2P, MPM_T_CONST };
@@ -318,6 +319,9 @@ double mpm_sim_delta(const mpm_sim *s);
 void mpm_sim_energy(const mpm_sim *s, mpm_energy *e);
 /* Called at the top of each step: picks the step's thread count (s->nthreads). */
 void mpm_threads_tick(mpm_sim *s);
+
+/* Updates s->cut after new separations (cheap when there are none). */
+void mpm_sim_cut(mpm_sim *s);
 
 /* Total momentum (for conservation tests). */
 void mpm_particles_momentum(const mpm_particles *p, double *px, double *py);

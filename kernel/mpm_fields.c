@@ -6,7 +6,7 @@
  * One velocity per node keeps a separated band coupled: the nodes in the band carry a
  * mean of both parts' velocities, the cells around it keep straining, the band widens
  * and the grip still carries load after separation.  Here, once the band has cut the
- * bar (a separated particle in every particle row: the bar is in two parts), each step:
+ * bar (mpm_sim_cut: a separated particle in every particle row), each step:
  *  1. every node that a separated particle's support covers is "split"; its band centre
  *     crk is the N_ip-weighted mean position of those separated particles;
  *  2. a particle with n . (x_p - c_p) > 0, c_p the band centre its split nodes see
@@ -31,19 +31,16 @@
 
 #include "mpm_gimp.h"
 
-mpm_fields *mpm_fields_alloc(size_t nn, int nrow, double drow, double nx, double ny)
+mpm_fields *mpm_fields_alloc(size_t nn, double nx, double ny)
 {
   mpm_fields *f = calloc(1, sizeof *f);
   if (!f)
     return NULL;
-  f->nrow = nrow;
-  f->drow = drow;
-  f->rowsep = calloc((size_t)nrow, 1);
   f->nd2 = aligned_alloc(_Alignof(mpm_node), nn * sizeof(mpm_node));
   f->split = calloc(nn, 1);
   f->crk = calloc(2 * nn, sizeof(double));
   f->cw = calloc(nn, sizeof(double));
-  if (!f->nd2 || !f->split || !f->crk || !f->cw || !f->rowsep) {
+  if (!f->nd2 || !f->split || !f->crk || !f->cw) {
     mpm_fields_free(f);
     return NULL;
   }
@@ -61,7 +58,6 @@ void mpm_fields_free(mpm_fields *f)
   free(f->split);
   free(f->crk);
   free(f->cw);
-  free(f->rowsep);
   free(f);
 }
 
@@ -72,21 +68,8 @@ void mpm_fields_mark(mpm_sim *s)
   mpm_fields *f = s->g->fld;
   const mpm_particles *p = s->p;
   const mpm_grid *g = s->g;
-  if (!f->cut) { /* a separated particle in every row of the bar's lattice (reference rows) */
-    memset(f->rowsep, 0, (size_t)f->nrow);
-    int rows = 0;
-    for (size_t k = 0; k < p->n; k++)
-      if (p->sep[k]) {
-        const int j = (int)(p->y0[k] / f->drow);
-        if (j >= 0 && j < f->nrow && !f->rowsep[j]) {
-          f->rowsep[j] = 1;
-          rows++;
-        }
-      }
-    if (rows < f->nrow)
-      return;
-    f->cut = 1;
-  }
+  if (!s->cut)
+    return;
   size_t nsep = 0;
   for (size_t k = 0; k < p->n; k++)
     nsep += p->sep[k];
@@ -98,25 +81,47 @@ void mpm_fields_mark(mpm_sim *s)
   f->nsplit = 0;
   if (nsep == 0)
     return;
-  double lcx, lcy;
-  mpm_gimp_lc(s, &lcx, &lcy);
+  const int gimp = s->sc.shape == MPM_SHAPE_GIMP;
+  double lcx = 0.0, lcy = 0.0;
+  if (gimp)
+    mpm_gimp_lc(s, &lcx, &lcy);
   for (size_t k = 0; k < p->n; k++) {
-    if (!p->sep[k] || !mpm_gimp_inside(g, p->x[k], p->y[k]))
-      continue; /* outside: the scatter reports it */
-    mpm_gimp1 sx, sy;
-    mpm_gimp_1d((p->x[k] - g->ox) * g->ihx, lcx, &sx);
-    mpm_gimp_1d((p->y[k] - g->oy) * g->ihy, lcy, &sy);
-    for (int i = 0; i < 3; i++)
-      for (int j = 0; j < 3; j++) {
-        const double w = sx.S[i] * sy.S[j];
-        if (!(w > 0.0))
-          continue;
-        const size_t n = (size_t)(sx.i0 + i) * nny + (size_t)(sy.i0 + j);
-        f->split[n] = 1;
-        f->cw[n] += w;
-        f->crk[2 * n] += w * p->x[k];
-        f->crk[2 * n + 1] += w * p->y[k];
+    if (!p->sep[k])
+      continue;
+    size_t n[9];
+    double w[9];
+    int nw = 0;
+    if (gimp) {
+      if (!mpm_gimp_inside(g, p->x[k], p->y[k]))
+        continue; /* outside: the scatter reports it */
+      mpm_gimp1 sx, sy;
+      mpm_gimp_1d((p->x[k] - g->ox) * g->ihx, lcx, &sx);
+      mpm_gimp_1d((p->y[k] - g->oy) * g->ihy, lcy, &sy);
+      for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++, nw++) {
+          n[nw] = (size_t)(sx.i0 + i) * nny + (size_t)(sy.i0 + j);
+          w[nw] = sx.S[i] * sy.S[j];
+        }
+    } else {
+      mpm_shape sh;
+      if (!mpm_shape_at(g, p->x[k], p->y[k], &sh))
+        continue;
+      const size_t n0 = sh.n00;
+      const size_t nn4[4] = {n0, n0 + nny, n0 + 1, n0 + nny + 1};
+      const double ww4[4] = {sh.wx0 * sh.wy0, sh.wx1 * sh.wy0, sh.wx0 * sh.wy1, sh.wx1 * sh.wy1};
+      for (; nw < 4; nw++) {
+        n[nw] = nn4[nw];
+        w[nw] = ww4[nw];
       }
+    }
+    for (int q = 0; q < nw; q++) {
+      if (!(w[q] > 0.0))
+        continue;
+      f->split[n[q]] = 1;
+      f->cw[n[q]] += w[q];
+      f->crk[2 * n[q]] += w[q] * p->x[k];
+      f->crk[2 * n[q] + 1] += w[q] * p->y[k];
+    }
   }
   for (int q = 0; q < s->ngrip; q++)
     f->split[s->grip[q]] = 0;

@@ -24,7 +24,7 @@ int mpm_gimp_p2g_range(const mpm_grid *g, const mpm_particles *p, size_t a, size
 void mpm_gimp_musl_range(const mpm_grid *g, mpm_particles *p, size_t a, size_t b, double lcx, double lcy);
 
 /* ---- two velocity fields (mpm_fields.c) ---- */
-mpm_fields *mpm_fields_alloc(size_t nn, int nrow, double drow, double nx, double ny);
+mpm_fields *mpm_fields_alloc(size_t nn, double nx, double ny);
 void mpm_fields_free(mpm_fields *f);
 void mpm_fields_mark(mpm_sim *s);  /* before the scatter: split nodes and band centres   */
 void mpm_fields_grid(mpm_sim *s);  /* after grid_update: the second field's eq. 4, contact */
@@ -53,6 +53,31 @@ static inline int mpm_fields_side(const mpm_fields *f, size_t n0, size_t nny, co
   if (!(w > 0.0))
     return 0;
   return f->nx * (x - cx / w) + f->ny * (y - cy / w) > 1e-9 * h;
+}
+
+/* The same for the bilinear stencil: nodes n[4] with weights w[4]. */
+static inline int mpm_fields_side4(const mpm_fields *f, const size_t n[4], const double w[4], double x, double y,
+                                   double h)
+{
+  double ws = 0.0, cx = 0.0, cy = 0.0;
+  for (int q = 0; q < 4; q++)
+    if (f->split[n[q]]) {
+      ws += w[q];
+      cx += w[q] * f->crk[2 * n[q]];
+      cy += w[q] * f->crk[2 * n[q] + 1];
+    }
+  if (!(ws > 0.0))
+    return 0;
+  return f->nx * (x - cx / ws) + f->ny * (y - cy / ws) > 1e-9 * h;
+}
+
+/* 1 if any of the bilinear stencil's nodes is split. */
+static inline int mpm_fields_any4(const mpm_fields *f, size_t n00, size_t nny)
+{
+  if (!f || f->nsplit == 0)
+    return 0;
+  const uint8_t *s = f->split + n00;
+  return (s[0] | s[1] | s[nny] | s[nny + 1]) != 0;
 }
 
 /* The record a particle on side `side` uses at node n. */

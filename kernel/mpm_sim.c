@@ -11,6 +11,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "mpm.h"
 #include "mpm_gimp.h"
@@ -74,7 +75,6 @@ mpm_status mpm_scene_check(const mpm_scene *sc, char *err, size_t errlen)
   if (sc->grid_motion != MPM_GRID_STRETCH && sc->grid_motion != MPM_GRID_FIXED) BAD("grid.motion must be stretch or fixed");
   if (sc->shape != MPM_SHAPE_LINEAR && sc->shape != MPM_SHAPE_GIMP) BAD("grid.shape must be linear or gimp");
   if (sc->fields != MPM_FIELDS_ONE && sc->fields != MPM_FIELDS_TWO) BAD("grid.fields must be one or two");
-  if (sc->fields == MPM_FIELDS_TWO && sc->shape != MPM_SHAPE_GIMP) BAD("grid.fields = two needs grid.shape = gimp");
   if (!(sc->dt > 0.0)) BAD("time.dt must be > 0");
   if (!(sc->speed > 0.0)) BAD("loading.speed must be > 0");
   if (!(sc->end_delta > 0.0)) BAD("run.end_delta must be > 0");
@@ -104,6 +104,7 @@ void mpm_sim_free(mpm_sim *s)
   free(s->scratch8);
   free(s->grip);
   free(s->fixx);
+  free(s->rowsep);
   free(s);
 }
 
@@ -140,7 +141,10 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
    * x = L, which is held too (the fixed support is a wall, like the head on the left). */
   const int nfixcol = sc->shape == MPM_SHAPE_GIMP ? 2 : 1;
   s->fixx = malloc(sizeof(int) * (size_t)(nfixcol * (cy + 1)));
-  int ok = s->g && s->p && s->dws && s->defer && s->head && s->grip && s->fixx;
+  s->nrow = cy * (int)lround(sqrt((double)sc->ppc));
+  s->rowsep = malloc((size_t)s->nrow);
+  s->cut_seen = -1; /* count at the first step: a scene may start with separated particles */
+  int ok = s->g && s->p && s->dws && s->defer && s->head && s->grip && s->fixx && s->rowsep;
   if (ok) {
     const size_t ncell = (size_t)s->g->ncx * (size_t)s->g->ncy;
     s->nstrip = (s->g->ncx + MPM_STRIP - 1) / MPM_STRIP;
@@ -155,9 +159,7 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
       ok = (s->dws[t] = mpm_dwork_alloc()) != NULL;
     if (ok && sc->fields == MPM_FIELDS_TWO) {
       const double a = sc->alpha_deg * (3.14159265358979323846 / 180.0);
-      const int n1 = (int)lround(sqrt((double)sc->ppc));
-      ok = (s->g->fld = mpm_fields_alloc((size_t)s->g->nnx * (size_t)s->g->nny, cy * n1, h / n1, sin(a),
-                                         -cos(a))) != NULL;
+      ok = (s->g->fld = mpm_fields_alloc((size_t)s->g->nnx * (size_t)s->g->nny, sin(a), -cos(a))) != NULL;
     }
   }
   if (!ok) {
@@ -238,6 +240,29 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
   mpm_sim_sort(s);
   *out = s;
   return MPM_OK;
+}
+
+/* The band has cut the bar once every particle row of the reference lattice holds a
+ * separated particle: the bar is then in two parts (the scenes' bands run from the
+ * bottom face to the top one).  Counted again only after new separations. */
+void mpm_sim_cut(mpm_sim *s)
+{
+  if (s->cut || s->n_separate == s->cut_seen)
+    return;
+  s->cut_seen = s->n_separate;
+  const mpm_particles *p = s->p;
+  const double d = s->sc.h / sqrt((double)s->sc.ppc);
+  memset(s->rowsep, 0, (size_t)s->nrow);
+  int rows = 0;
+  for (size_t k = 0; k < p->n; k++)
+    if (p->sep[k]) {
+      const int j = (int)(p->y0[k] / d);
+      if (j >= 0 && j < s->nrow && !s->rowsep[j]) {
+        s->rowsep[j] = 1;
+        rows++;
+      }
+    }
+  s->cut = rows == s->nrow;
 }
 
 double mpm_sim_delta(const mpm_sim *s)

@@ -110,6 +110,7 @@ static int p2g_range(const mpm_grid *gg, const mpm_particles *p, size_t a, size_
   const double *restrict x = p->x, *restrict y = p->y, *restrict vx = p->vx, *restrict vy = p->vy;
   const double *restrict pm = p->m, *restrict V = p->V;
   const double *restrict sxx = p->sxx, *restrict syy = p->syy, *restrict sxy = p->sxy;
+  const mpm_fields *fld = g->fld;
   cell_sums cs = {.cur = SIZE_MAX};
   int out = 0;
   for (size_t k = a; k < b; k++) {
@@ -118,13 +119,25 @@ static int p2g_range(const mpm_grid *gg, const mpm_particles *p, size_t a, size_
       out = 1;
       continue;
     }
-    cell_sums_move(&cs, nd, nny, sh.n00);
     const double mm = pm[k], Vx = V[k] * ihx, Vy = V[k] * ihy;
-    const mpm_v8 P = {mm, mm * vx[k], mm * vy[k], 0.0, 0.0, 0.0, 0.0, 0.0};
+    /* lane 7: the displacement along the failure normal (two fields' contact gap) */
+    const double un = fld ? fld->nx * (x[k] - p->x0[k]) + fld->ny * (y[k] - p->y0[k]) : 0.0;
+    const mpm_v8 P = {mm, mm * vx[k], mm * vy[k], 0.0, 0.0, 0.0, 0.0, mm * un};
     const mpm_v8 FX = {0.0, 0.0, 0.0, Vx * sxx[k], Vx * sxy[k], 0.0, 0.0, 0.0};
     const mpm_v8 FY = {0.0, 0.0, 0.0, Vy * sxy[k], Vy * syy[k], 0.0, 0.0, 0.0};
     const mpm_v8 T0 = sh.wy0 * P + FY, R0 = sh.wy0 * FX;
     const mpm_v8 T1 = sh.wy1 * P - FY, R1 = sh.wy1 * FX;
+    if (mpm_fields_any4(fld, sh.n00, nny)) { /* near a separated band: the field per node */
+      const size_t n[4] = {sh.n00, sh.n00 + nny, sh.n00 + 1, sh.n00 + nny + 1};
+      const double w[4] = {sh.wx0 * sh.wy0, sh.wx1 * sh.wy0, sh.wx0 * sh.wy1, sh.wx1 * sh.wy1};
+      const int side = mpm_fields_side4(fld, n, w, x[k], y[k], g->h);
+      node_add(mpm_fields_node(fld, nd, n[0], side), sh.wx0 * T0 + R0);
+      node_add(mpm_fields_node(fld, nd, n[1], side), sh.wx1 * T0 - R0);
+      node_add(mpm_fields_node(fld, nd, n[2], side), sh.wx0 * T1 + R1);
+      node_add(mpm_fields_node(fld, nd, n[3], side), sh.wx1 * T1 - R1);
+      continue;
+    }
+    cell_sums_move(&cs, nd, nny, sh.n00);
     cs.c00 += sh.wx0 * T0 + R0;
     cs.c10 += sh.wx1 * T0 - R0;
     cs.c01 += sh.wx0 * T1 + R1;
@@ -144,22 +157,41 @@ static void musl_velocity_range(const mpm_grid *gg, mpm_particles *p, size_t a, 
   mpm_node *restrict nd = g->nd;
   const double *restrict x = p->x, *restrict y = p->y, *restrict pm = p->m;
   double *restrict vx = p->vx, *restrict vy = p->vy;
+  const mpm_fields *fld = g->fld;
   cell_sums cs = {.cur = SIZE_MAX};
   for (size_t k = a; k < b; k++) {
     mpm_shape sh;
     mpm_shape_inside(g, x[k], y[k], &sh); /* inside: checked by the first scatter */
     const double rx = sh.wx1, ry = sh.wy1;
     const size_t n00 = sh.n00, n01 = n00 + 1, n10 = n00 + nny, n11 = n10 + 1;
-    const mpm_v4 a00 = node_load4(nd + n00), a10 = node_load4(nd + n10);
-    const mpm_v4 a01 = node_load4(nd + n01), a11 = node_load4(nd + n11);
+    const int two = mpm_fields_any4(fld, n00, nny);
+    mpm_node *r00 = nd + n00, *r10 = nd + n10, *r01 = nd + n01, *r11 = nd + n11;
+    if (two) { /* near a separated band: the particle's own side's records */
+      const size_t n[4] = {n00, n10, n01, n11};
+      const double w[4] = {sh.wx0 * sh.wy0, sh.wx1 * sh.wy0, sh.wx0 * sh.wy1, sh.wx1 * sh.wy1};
+      const int side = mpm_fields_side4(fld, n, w, x[k], y[k], g->h);
+      r00 = mpm_fields_node(fld, nd, n00, side);
+      r10 = mpm_fields_node(fld, nd, n10, side);
+      r01 = mpm_fields_node(fld, nd, n01, side);
+      r11 = mpm_fields_node(fld, nd, n11, side);
+    }
+    const mpm_v4 a00 = node_load4(r00), a10 = node_load4(r10);
+    const mpm_v4 a01 = node_load4(r01), a11 = node_load4(r11);
     const mpm_v4 b0 = a00 + rx * (a10 - a00), b1 = a01 + rx * (a11 - a01);
     const mpm_v4 S = b0 + ry * (b1 - b0);
     const double vxn = vx[k] + S[GFX], vyn = vy[k] + S[GFY];
     vx[k] = vxn;
     vy[k] = vyn;
-    cell_sums_move(&cs, nd, nny, sh.n00);
     const mpm_v8 Q = {0.0, 0.0, 0.0, 0.0, 0.0, pm[k] * vxn, pm[k] * vyn, 0.0};
     const mpm_v8 Q0 = sh.wy0 * Q, Q1 = sh.wy1 * Q;
+    if (two) {
+      node_add(r00, sh.wx0 * Q0);
+      node_add(r10, sh.wx1 * Q0);
+      node_add(r01, sh.wx0 * Q1);
+      node_add(r11, sh.wx1 * Q1);
+      continue;
+    }
+    cell_sums_move(&cs, nd, nny, sh.n00);
     cs.c00 += sh.wx0 * Q0;
     cs.c10 += sh.wx1 * Q0;
     cs.c01 += sh.wx0 * Q1;
@@ -382,8 +414,18 @@ static inline __attribute__((always_inline)) void g2p_strip_impl(mpm_sim *s, int
         mpm_shape_inside(g, x[k], y[k], &sh); /* inside: checked by the scatter */
         const double rx = sh.wx1, ry = sh.wy1;
         const size_t n00 = sh.n00, n01 = n00 + 1, n10 = n00 + nny, n11 = n10 + 1;
-        const mpm_v4 a00 = node_load4(nd + n00), a10 = node_load4(nd + n10);
-        const mpm_v4 a01 = node_load4(nd + n01), a11 = node_load4(nd + n11);
+        const mpm_node *r00 = nd + n00, *r10 = nd + n10, *r01 = nd + n01, *r11 = nd + n11;
+        if (__builtin_expect(mpm_fields_any4(g->fld, n00, nny), 0)) { /* near a separated band */
+          const size_t n[4] = {n00, n10, n01, n11};
+          const double w[4] = {sh.wx0 * sh.wy0, sh.wx1 * sh.wy0, sh.wx0 * sh.wy1, sh.wx1 * sh.wy1};
+          const int side = mpm_fields_side4(g->fld, n, w, x[k], y[k], g->h);
+          r00 = mpm_fields_node(g->fld, (mpm_node *)nd, n00, side);
+          r10 = mpm_fields_node(g->fld, (mpm_node *)nd, n10, side);
+          r01 = mpm_fields_node(g->fld, (mpm_node *)nd, n01, side);
+          r11 = mpm_fields_node(g->fld, (mpm_node *)nd, n11, side);
+        }
+        const mpm_v4 a00 = node_load4(r00), a10 = node_load4(r10);
+        const mpm_v4 a01 = node_load4(r01), a11 = node_load4(r11);
         /* The bilinear field and its gradient (eq. 7) from the same differences:
          * b0, b1 interpolate along x on the cell's lower and upper edges. */
         const mpm_v4 d0 = a10 - a00, d1 = a11 - a01;
@@ -539,8 +581,8 @@ static void head_rigid(mpm_sim *s)
  * right end). */
 static void lay_grid(mpm_sim *s)
 {
-  if (s->sc.grid_motion != MPM_GRID_STRETCH)
-    return;
+  if (s->sc.grid_motion != MPM_GRID_STRETCH || s->cut)
+    return; /* once the band has cut the bar there is no mean stretch to follow: the grid stays */
   mpm_grid *g = s->g;
   const double L = s->sc.L, stretch = 1.0 + mpm_sim_delta(s) / L;
   g->hx = s->sc.h * stretch;
@@ -551,6 +593,7 @@ static void lay_grid(mpm_sim *s)
 mpm_status mpm_sim_step(mpm_sim *s, char *err, size_t errlen)
 {
   mpm_threads_tick(s);
+  mpm_sim_cut(s);
   lay_grid(s);
   double t0 = wall(), t1;
   if (s->resort || s->step % MPM_SORT_EVERY == 0) {

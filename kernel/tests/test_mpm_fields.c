@@ -24,7 +24,7 @@
 
 /* A short bar, 48 x 16, h 2, 1 ppc, decohesion across x (alpha 90), uGIMP, no grip or
  * fixed end; the particle column at x = 23 (the middle) separated. */
-static mpm_sim *blocks(int fields, double v)
+static mpm_sim *blocks_shape(int fields, double v, int shape)
 {
   mpm_scene sc;
   memset(&sc, 0, sizeof sc);
@@ -48,7 +48,7 @@ static mpm_sim *blocks(int fields, double v)
   sc.h = 2.0;
   sc.ppc = 1;
   sc.margin = 8.0;
-  sc.shape = MPM_SHAPE_GIMP;
+  sc.shape = shape;
   sc.fields = fields;
   sc.scheme = MPM_SCHEME_MUSL;
   sc.dt = 0.02;
@@ -76,6 +76,11 @@ static mpm_sim *blocks(int fields, double v)
     }
   }
   return s;
+}
+
+static mpm_sim *blocks(int fields, double v)
+{
+  return blocks_shape(fields, v, MPM_SHAPE_GIMP);
 }
 
 static void run(mpm_sim *s, long n)
@@ -126,6 +131,13 @@ static void test_mpm_fields_separated_blocks_move_apart(void **state)
   assert_rel(vl, -v, 1e-3, "left block speed, two fields");
   assert_rel(vr, v, 1e-3, "right block speed, two fields");
   assert_true(s->g->fld->nsplit > 0);
+  mpm_sim_free(s);
+  /* the same with the paper's bilinear shapes */
+  s = blocks_shape(MPM_FIELDS_TWO, v, MPM_SHAPE_LINEAR);
+  run(s, 200);
+  halves(s, &vl, &vr, &xl, &xr);
+  assert_rel(vl, -v, 1e-3, "left block speed, two fields, bilinear");
+  assert_rel(vr, v, 1e-3, "right block speed, two fields, bilinear");
   mpm_sim_free(s);
   /* one field: the nodes under the band average both blocks, so they drag each other */
   s = blocks(MPM_FIELDS_ONE, v);
