@@ -60,6 +60,10 @@ static void known(ver_check *k, double lo, double hi)
  *    together, each with Le = h / sqrt(ppc): the band dissipates sqrt(ppc) x U0 per area.
  *    This case measures that choice; D, W_ext, delta_sep, softening and curve error are
  *    known-limit, bounded by sqrt(ppc) x the analytic value (+10 %).
+ *  - an inclined band run with the band method (two velocity fields once the band has
+ *    cut the bar, Le = staircase: the narrowest band that can open on the grid) must
+ *    dissipate U0 x area: D_final is pass-class within 10 %, and the crack angle within
+ *    5 deg (issue 13's targets); its other inclined checks keep their classes.
  *  - peak load, elastic slope, energy balance and crack angle are pass-class everywhere.
  */
 /* Curve errors below this fraction of Pmax are at the loading-rate floor. */
@@ -72,6 +76,7 @@ typedef struct {
   int lep;      /* Le = particle with several particles per cell    */
   int ppc1;     /* one particle per cell                            */
   double nside; /* sqrt(ppc)                                        */
+  int band;     /* inclined, with two fields and Le = staircase      */
 } case_class;
 
 /* the run itself */
@@ -160,10 +165,10 @@ static void check_energy(ver_case *c, const case_class *q)
   const double nside = q->nside;
   ver_check *k;
   k = add_check(c, "D_final", c->D_final, a->D_sep, 1);
-  k->tol = 0.02;
+  k->tol = q->band ? 0.10 : 0.02;
   if (lep)
     known(k, -k->tol, 1.1 * nside - 1.0);
-  else if (!a90)
+  else if (!a90 && !q->band)
     known(k, -k->tol, 3.0);
   snprintf(k->note, sizeof k->note, "dissipation at the end vs UD x area = %.4g%s", a->D_sep,
            !a90 && !lep ? " (inclined band: more, paper Fig. 7)" : "");
@@ -213,7 +218,7 @@ static void check_band(ver_case *c, const case_class *q)
    * grid the larger the deviation it can show */
   k = add_check(c, "crack_angle", c->angle, sc->alpha_deg, 0);
   k->measured = c->angle;
-  k->tol = a90 ? 1.0 : 10.0;
+  k->tol = a90 ? 1.0 : (q->band ? 5.0 : 10.0);
   snprintf(k->note, sizeof k->note, "principal axis of the decohered particles' x0, y0 vs alpha (deg)");
 
   k = add_check(c, "curve_l2", c->curve_l2, 0.0, 0);
@@ -252,8 +257,10 @@ static void judge_all(ver_case *c)
 void ver_policy_case(ver_case *c)
 {
   const mpm_scene *sc = &c->vs.sc;
-  const case_class q = {ver_case_a90(c), c->ana.snapback, sc->le_mode == MPM_LE_PARTICLE && sc->ppc > 1,
-                        sc->ppc == 1, sqrt((double)sc->ppc)};
+  const int a90 = ver_case_a90(c);
+  const case_class q = {a90, c->ana.snapback, sc->le_mode == MPM_LE_PARTICLE && sc->ppc > 1, sc->ppc == 1,
+                        sqrt((double)sc->ppc),
+                        !a90 && sc->fields == MPM_FIELDS_TWO && sc->le_mode == MPM_LE_STAIRCASE};
   c->nchk = 0;
   check_run(c);
   check_peak_elastic(c, &q);

@@ -120,6 +120,39 @@ static void test_ver_policy_inclined_known_limit(void **state)
   assert_true(fabs(chk(&c, "crack_angle")->error + 0.5) < 1e-12);
 }
 
+/* The band method (two fields, Le = staircase) on an inclined scene: D must be U0 x
+ * area within 10 % (pass-class, no known-limit), the angle within 5 deg. */
+static void test_ver_policy_band_method(void **state)
+{
+  (void)state;
+  ver_case c;
+  fig6_case(&c, 4);
+  c.vs.sc.alpha_deg = 60;
+  c.vs.sc.fields = MPM_FIELDS_TWO;
+  c.vs.sc.le_mode = MPM_LE_STAIRCASE;
+  c.angle = 64;
+  c.D_final = 1.09 * c.ana.D_sep;
+  ver_policy_case(&c);
+  assert_int_equal(chk(&c, "D_final")->verdict, VER_PASS);
+  assert_int_equal(chk(&c, "crack_angle")->verdict, VER_PASS);
+  c.D_final = 1.11 * c.ana.D_sep; /* the paper's method would call this known-limit */
+  ver_policy_case(&c);
+  assert_int_equal(chk(&c, "D_final")->verdict, VER_FAIL);
+  c.D_final = 0.89 * c.ana.D_sep;
+  ver_policy_case(&c);
+  assert_int_equal(chk(&c, "D_final")->verdict, VER_FAIL);
+  c.D_final = c.ana.D_sep;
+  c.angle = 66; /* 6 deg off: inside the paper method's 10, outside the band method's 5 */
+  ver_policy_case(&c);
+  assert_int_equal(chk(&c, "crack_angle")->verdict, VER_FAIL);
+  /* one field with Le = staircase is not the band method: D stays known-limit */
+  c.vs.sc.fields = MPM_FIELDS_ONE;
+  c.angle = 60;
+  c.D_final = 1.5 * c.ana.D_sep;
+  ver_policy_case(&c);
+  assert_int_equal(chk(&c, "D_final")->verdict, VER_KNOWN);
+}
+
 /* Fig. 8's bar (Mode II at 60 deg, g = 0.446): the analytic softening slope just after
  * the peak is positive (the branch turns back); the run's negative slope is the known
  * limit of an explicit method, a slope softer than -1 x |analytic| relative is not. */
@@ -197,6 +230,7 @@ int main(void)
   const struct CMUnitTest tests[] = {
     cmocka_unit_test(test_ver_policy_fig6_pass_and_fail),
     cmocka_unit_test(test_ver_policy_inclined_known_limit),
+    cmocka_unit_test(test_ver_policy_band_method),
     cmocka_unit_test(test_ver_policy_snapback_softening),
     cmocka_unit_test(test_ver_policy_cross),
   };
