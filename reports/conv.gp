@@ -1,5 +1,5 @@
 # Convergence: curve error and dissipation error against h (1 ppc), fitted orders
-W = 1300; Hgt = 560
+W = 1300; Hgt = 620
 load gpdir.'/common.gp'
 scs = "fig6 fig7 fig8"
 set multiplot layout 1,2 title "Convergence under refinement (1 particle per cell; lines: least-squares fit err = C h^p; open circles: runs that stopped early, not fitted)"
@@ -7,7 +7,10 @@ set logscale xy
 set xrange [0.8:10]
 set xtics (1, 2, 4, 8)
 set xlabel "grid spacing h"
-set key bottom right
+# below the plots: inside, the key would hide points of some scene
+set key below horizontal
+set bmargin 7
+set format y "10^{%T}"
 set ylabel "RMS load error / P_{max}"
 set title "load-deflection curve"
 plot for [i=1:3] sprintf('data/sweep-%s-ppc1.dat', word(scs, i)) u 1:($5 > 0.5 ? $2 : 1/0) w p pt 7 ps 1.5 lc i \

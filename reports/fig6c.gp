@@ -5,6 +5,6 @@ do for [p in "1 4 9"] {
   id = value('sw_fig6_h8_ppc'.p)
   if (strlen(id) > 0) { ids = ids.' '.id; labs = labs.' "'.p.' per cell'.value('sw_fig6_h8_ppc'.p.'_note').'"' }
 }
-set title "Fig. 6(c): transverse laminate, h = 8, particles per cell"
+set title "Fig. 6(c): fig6.ini ({/Symbol a} = 90), USL, h = 8"
 sc = 'fig6'; xmax = 0.6
 load gpdir.'/loadcurves.gp'

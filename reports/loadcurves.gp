@@ -4,7 +4,8 @@ set xlabel "end displacement {/Symbol d}"
 set ylabel "load P"
 set xrange [0:xmax]
 set yrange [*:*]
-set key top right
+if (!exists("keypos")) keypos = "top right"
+set key @keypos
 n = words(ids)
 plot sprintf('data/ana-%s.csv', sc) u 1:2 w l lw 4 lc rgb '#999999' title 'analytic', \
      for [i=1:n] load_csv(word(ids, i)) u 2:3 w l lw 1.8 title word(labs, i)

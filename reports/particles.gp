@@ -3,7 +3,7 @@
 # the run ended), ttl, and optionally x0, x1, y0, y1 (the window).
 set multiplot layout rows,cols title ttl
 set size ratio -1
-set cbrange [0:1]
+if (exists("cbmax")) { set cbrange [0:cbmax] } else { set cbrange [0:1] }
 set cblabel "{/Symbol l}"
 set xlabel "x"
 set ylabel "y"

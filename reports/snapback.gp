@@ -1,6 +1,8 @@
 # Snapback scenes: analytic g < 1 against the runs
 W = 1500; Hgt = 520
 load gpdir.'/common.gp'
+# the elastic branch runs from the origin to the peak: the empty corner is top left
+keypos = "top left"
 set multiplot layout 1,3 title "Snapback scenes (analytic g < 1: the load should drop vertically at the peak)"
 set title sprintf("a45, {/Symbol a} = 45 (g = %.3g)", g_a45)
 ids = id_a45_h4_ppc1.' '.id_a45_h2_ppc1; labs = '"h = 4" "h = 2"'

@@ -57,6 +57,35 @@ static int num_arg(const char *opt, const char *v, double *out)
   return 0;
 }
 
+/* The command line's overrides, as --set assignments (dt scaled with h unless given:
+ * the file's Courant number is kept); 0, or 2 with err. */
+static int apply_overrides(ver_scene *vs, double h, double ppc, double dt, double until, const char *const *sets,
+                           int nset, char *err, size_t len)
+{
+  char buf[128], num[40];
+  if (h > 0 && dt <= 0 && vs->sc.h > 0)
+    dt = vs->sc.dt * h / vs->sc.h;
+  const char *key[4] = {"grid.h", "grid.ppc", "time.dt", "run.end_delta"};
+  const double val[4] = {h, ppc, dt, until};
+  for (int k = 0; k < 3; k++)
+    if (val[k] > 0) {
+      ver_scene_fmt_num(val[k], num, sizeof num);
+      snprintf(buf, sizeof buf, "%s=%s", key[k], num);
+      if (ver_scene_set(vs, buf, err, len))
+        return 2;
+    }
+  for (int i = 0; i < nset; i++)
+    if (ver_scene_set(vs, sets[i], err, len))
+      return 2;
+  if (until > 0) {
+    ver_scene_fmt_num(until, num, sizeof num);
+    snprintf(buf, sizeof buf, "%s=%s", key[3], num);
+    if (ver_scene_set(vs, buf, err, len) || ver_scene_set(vs, "run.stop_margin=0", err, len))
+      return 2;
+  }
+  return 0;
+}
+
 int ver_cmd_run(int argc, char **argv)
 {
   const char *path = NULL, *outdir = NULL;
@@ -117,31 +146,9 @@ int ver_cmd_run(int argc, char **argv)
     fprintf(stderr, "%s\n", err);
     return 2;
   }
-  char buf[128], num[40];
-  if (h > 0) {
-    if (dt <= 0 && vs.sc.h > 0)
-      dt = vs.sc.dt * h / vs.sc.h; /* keep the file's Courant number */
-    ver_scene_fmt_num(h, num, sizeof num);
-    snprintf(buf, sizeof buf, "grid.h=%s", num);
-    if (ver_scene_set(&vs, buf, err, sizeof err)) { fprintf(stderr, "%s\n", err); return 2; }
-  }
-  if (ppc > 0) {
-    ver_scene_fmt_num(ppc, num, sizeof num);
-    snprintf(buf, sizeof buf, "grid.ppc=%s", num);
-    if (ver_scene_set(&vs, buf, err, sizeof err)) { fprintf(stderr, "%s\n", err); return 2; }
-  }
-  if (dt > 0) {
-    ver_scene_fmt_num(dt, num, sizeof num);
-    snprintf(buf, sizeof buf, "time.dt=%s", num);
-    if (ver_scene_set(&vs, buf, err, sizeof err)) { fprintf(stderr, "%s\n", err); return 2; }
-  }
-  for (int i = 0; i < nset; i++)
-    if (ver_scene_set(&vs, sets[i], err, sizeof err)) { fprintf(stderr, "%s\n", err); return 2; }
-  if (until > 0) {
-    ver_scene_fmt_num(until, num, sizeof num);
-    snprintf(buf, sizeof buf, "run.end_delta=%s", num);
-    if (ver_scene_set(&vs, buf, err, sizeof err)) { fprintf(stderr, "%s\n", err); return 2; }
-    if (ver_scene_set(&vs, "run.stop_margin=0", err, sizeof err)) { fprintf(stderr, "%s\n", err); return 2; }
+  if (apply_overrides(&vs, h, ppc, dt, until, sets, nset, err, sizeof err)) {
+    fprintf(stderr, "%s\n", err);
+    return 2;
   }
   vs.allow_unstable = allow;
   if (ver_scene_validate(&vs, err, sizeof err)) {

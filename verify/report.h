@@ -1,6 +1,9 @@
 /*
- * report.h - private to `delam report` (cmd_report.c, report_run.c, report_data.c):
- * the cases the figures need, how they are run, and what is measured from them.
+ * report.h - private to `delam report`: the cases the figures need (report_cases.c),
+ * how they are run (report_run.c), what is measured from them (report_data.c), the
+ * plot data and gnuplot (report_plot.c), the checks and the paper's numbers
+ * (report_judge.c), the text (report_text.c, templates in reports/text/) and the one
+ * document model rendered to REPORT.md and index.html (report_doc.c).
  */
 #ifndef DELAM_REPORT_H
 #define DELAM_REPORT_H
@@ -8,6 +11,7 @@
 #include <stddef.h>
 
 #include "ana.h"
+#include "report_doc.h"
 
 #define REP_PATH 1024
 #define REP_MAX_CASES 160
@@ -39,6 +43,7 @@ typedef struct {
   int role;             /* REP_* mask                                                         */
   double tag;           /* role-specific: dt / dt_crit, separation threshold, ...            */
   double cost;          /* estimated particle-updates, to start the longest runs first       */
+  double speed;         /* the scene's grip speed (energy.csv's t to delta)                  */
   double last_snap;     /* the scene's last snapshot (REP_PIC results must hold it); -1 none  */
   /* where its results are and how the run ended */
   char dir[REP_PATH];   /* folder with summary.json, load.csv, snapshots                      */
@@ -52,6 +57,7 @@ typedef struct {
   long steps;
   double particles;
   char error[256];      /* summary.json "error", if any                                       */
+  char scheme[16];      /* "usl" or "musl" (summary.json)                                     */
   double sep_threshold; /* the run's separation threshold (summary.json)                     */
   /* measured here against the analytic bar */
   ana_bar bar;          /* the scene's analytic bar                                          */
@@ -80,6 +86,77 @@ typedef struct {
   int have_musl;           /* the scene files accept time.scheme=musl           */
 } rep_ctx;
 
+
+/* The sweep over h and ppc: its scenes and how far the runs made here go. */
+#define REP_NSWEEP 3
+extern const char *const rep_sweep_scene[REP_NSWEEP];
+extern const double rep_sweep_until[REP_NSWEEP];
+
+/* err = exp(c) h^p over the complete 1-ppc runs of a sweep scene */
+typedef struct {
+  double p_curve, c_curve, p_diss, c_diss;
+  int n;
+} rep_fit;
+
+#define REP_MAX_FIGS 24
+typedef struct {
+  char name[32];           /* reports/<name>.gp -> OUT/<name>.png, .svg; reports/text/<name>.md */
+  int status;              /* gnuplot's exit status for the PNG (-1: not run)   */
+} rep_fig;
+
+struct cJSON;
+typedef struct {
+  rep_ctx r;
+  struct cJSON *verify;    /* verify.json of the checks (--from, or the report's own) */
+  char verify_dir[REP_PATH]; /* where it came from                               */
+  int verify_rc;           /* exit status of the report's own delam verify; -1 none */
+  int sweep_from;          /* sweep points taken from the verify folder         */
+  rep_fit fits[REP_NSWEEP];
+  rep_fig fig[REP_MAX_FIGS];
+  int nfig;
+  double t_runs, t0;
+  rep_vars vars;           /* the placeholders of the templates                 */
+  rep_doc doc;
+} report;
+
+/* report_cases.c */
+double ver_report_dt_crit(const rep_ctx *r, const char *scene, double h);
+int ver_report_find_sweep(const rep_ctx *r, const char *scene, double h, int ppc);
+const rep_case *ver_report_first(const rep_ctx *r, int role, const char *scene);
+const rep_case *ver_report_sweep(const rep_ctx *r, const char *scene, double h, int ppc); /* with results */
+const rep_case *ver_report_case(const rep_ctx *r, const char *id);                     /* with results */
+void ver_report_build_cases(report *R);
+
+/* report_plot.c */
+/* Fig. 3's bars: q = rep_fig3_q[i], g = rep_fig3_g[j] (alpha 90, r0 1, L = E U0 / g). */
+extern const double rep_fig3_q[3], rep_fig3_g[3];
+int ver_report_fig3_bar(int i, int j, ana_bar *b);
+/* OUT/data/: plot data, vars.gp, and a copy of each run's files (nothing links out). */
+void ver_report_write_data(report *R);
+/* Time-step sweep: REP_STABLE, REP_NOISY or REP_BLOWN against the smallest-dt error. */
+int ver_report_stab_outcome(const rep_case *c, double base);
+double ver_report_stab_base(const rep_ctx *r);
+#define REP_STAB_NOISY 0.02 /* curve error (RMS / Pmax) above the smallest dt's by this: noisy */
+void ver_report_gnuplot(report *R);
+
+/* report_judge.c */
+/* Without --from: runs `delam verify --quick` into CACHE/verify, which then serves as
+ * --from.  0, or 2 if it could not be started. */
+int ver_report_run_verify(report *R);
+/* Reads FROM/verify.json (NULL if missing). */
+struct cJSON *ver_report_read_verify(const char *from);
+/* Adds the verdict sections (per case, counts, every check) to the document. */
+void ver_report_verdicts(report *R);
+/* Adds the table of the paper's numbers beside the measured ones. */
+void ver_report_paper_table(report *R);
+
+/* report_text.c */
+/* The figures, in the report's order (sets R->fig). */
+void ver_report_plan_figs(report *R);
+/* Sets the template placeholders from the runs. */
+void ver_report_set_vars(report *R);
+/* The whole document: introduction, verdicts, paper table, figures, all runs. */
+void ver_report_compose(report *R);
 
 /* path made absolute against the working folder (not resolved further). */
 void ver_report_abs(const char *path, char *out, size_t len);

@@ -37,6 +37,7 @@ int ver_report_read_summary(rep_case *c)
   c->steps = u->steps;
   c->particles = (double)u->particles;
   c->sep_threshold = d.sep_threshold;
+  snprintf(c->scheme, sizeof c->scheme, "%s", d.scheme);
   snprintf(c->error, sizeof c->error, "%.255s", d.error);
   return 0;
 }

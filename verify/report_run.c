@@ -96,6 +96,7 @@ int ver_report_add(rep_ctx *r, const char *scene, double h, int ppc, double dt, 
     end = vs.sc.end_delta;
     speed = vs.sc.speed;
   }
+  c->speed = speed;
   if (dt > 0)
     dts = dt;
   if (until > 0)
@@ -173,7 +174,7 @@ static void keep_scene(const rep_ctx *r, const rep_case *c)
 {
   char src[REP_PATH + 64], dst[REP_PATH + 32];
   snprintf(src, sizeof src, "%s/%s.ini", r->scenes, c->scene);
-  snprintf(dst, sizeof dst, "%s/scene.ini", c->dir);
+  snprintf(dst, sizeof dst, "%s/source.ini", c->dir);
   ver_io_copy(src, dst);
 }
 
@@ -182,7 +183,7 @@ static void keep_scene(const rep_ctx *r, const rep_case *c)
 static int try_reuse(const rep_ctx *r, rep_case *c, const char *dir, int check_scene)
 {
   char p[REP_PATH + 64], q[REP_PATH + 64];
-  snprintf(p, sizeof p, "%s/scene.ini", dir);
+  snprintf(p, sizeof p, "%s/source.ini", dir);
   snprintf(q, sizeof q, "%s/%s.ini", r->scenes, c->scene);
   if (check_scene && !same_file(p, q))
     return 0; /* made with another version of the scene file */
@@ -246,10 +247,12 @@ static int by_cost_desc(const void *a, const void *b)
   return (x < y) - (x > y);
 }
 
-int ver_report_run_cases(rep_ctx *r)
+/* The cases without results: reused from --from or the cache where possible, the rest
+ * into todo; returns how many are to run. */
+static int plan_runs(rep_ctx *r, rep_case **todo, int *reused)
 {
-  rep_case *todo[REP_MAX_CASES];
-  int ntodo = 0, reused = 0;
+  int ntodo = 0;
+  *reused = 0;
   for (int i = 0; i < r->n; i++) {
     rep_case *c = &r->c[i];
     if (c->have)
@@ -258,18 +261,63 @@ int ver_report_run_cases(rep_ctx *r)
     if (r->from[0]) {
       snprintf(d, sizeof d, "%.800s/%.150s", r->from, c->id);
       if (try_reuse(r, c, d, 0)) {
-        reused++;
+        (*reused)++;
         continue;
       }
     }
     snprintf(d, sizeof d, "%.800s/%.150s", r->cache, c->id);
     if (!r->rerun && try_reuse(r, c, d, 1)) {
-      reused++;
+      (*reused)++;
       continue;
     }
     snprintf(c->dir, sizeof c->dir, "%s", d);
     todo[ntodo++] = c;
   }
+  return ntodo;
+}
+
+enum { NARG = 32, ALEN = REP_PATH + 64 };
+
+/* The `delam run` command line of case c in av (strings in s, NARG x ALEN). */
+static void run_argv(const rep_ctx *r, const rep_case *c, char **av, char *s)
+{
+  int k = 0;
+#define ARG(...) (snprintf(s + (size_t)k * ALEN, ALEN, __VA_ARGS__), av[k] = s + (size_t)k * ALEN, k++)
+  av[k++] = (char *)r->exe;
+  ARG("run");
+  ARG("%.900s/%.40s.ini", r->scenes, c->scene);
+  ARG("--h");
+  ARG("%.17g", c->h);
+  ARG("--ppc");
+  ARG("%d", c->ppc);
+  if (c->dt > 0) {
+    ARG("--dt");
+    ARG("%.17g", c->dt);
+  }
+  if (c->until > 0) {
+    ARG("--until");
+    ARG("%.17g", c->until);
+  }
+  for (int j = 0; j < c->nset; j++) {
+    ARG("--set");
+    ARG("%s", c->set[j]);
+  }
+  if (c->allow_unstable)
+    ARG("--allow-unstable");
+  ARG("--threads");
+  ARG("1");
+  ARG("--quiet");
+  ARG("--out");
+  ARG("%.1000s", c->dir);
+#undef ARG
+  av[k] = NULL;
+}
+
+int ver_report_run_cases(rep_ctx *r)
+{
+  rep_case *todo[REP_MAX_CASES];
+  int reused;
+  int ntodo = plan_runs(r, todo, &reused);
   double total = 0;
   for (int i = 0; i < ntodo; i++)
     total += todo[i]->cost;
@@ -279,57 +327,23 @@ int ver_report_run_cases(rep_ctx *r)
     return 0;
   /* longest first, so that the last ones to finish are short */
   qsort(todo, (size_t)ntodo, sizeof todo[0], by_cost_desc);
-
   /* argument vectors: every string lives in one block per case */
-  enum { NARG = 32, ALEN = REP_PATH + 64 };
   char *store = calloc((size_t)ntodo, NARG * ALEN);
   char ***argvs = calloc((size_t)ntodo, sizeof *argvs);
   char **argvbuf = calloc((size_t)ntodo * (NARG + 1), sizeof *argvbuf);
-  char **logs = calloc((size_t)ntodo, sizeof *logs);
-  char **names = calloc((size_t)ntodo, sizeof *names);
+  char **logs = calloc((size_t)ntodo, sizeof *logs), **names = calloc((size_t)ntodo, sizeof *names);
   char *logstore = calloc((size_t)ntodo, REP_PATH + 16);
   int *status = calloc((size_t)ntodo, sizeof *status);
   int failed = 0;
   if (!store || !argvs || !argvbuf || !logs || !names || !logstore || !status) {
     fprintf(stderr, "delam report: out of memory\n");
     failed = ntodo;
-    goto out;
+    ntodo = 0;
   }
   for (int i = 0; i < ntodo; i++) {
     rep_case *c = todo[i];
-    char **av = argvbuf + (size_t)i * (NARG + 1);
-    char *s = store + (size_t)i * NARG * ALEN;
-    int k = 0;
-#define ARG(...) (snprintf(s + (size_t)k * ALEN, ALEN, __VA_ARGS__), av[k] = s + (size_t)k * ALEN, k++)
-    av[k++] = r->exe;
-    ARG("run");
-    ARG("%.900s/%.40s.ini", r->scenes, c->scene);
-    ARG("--h");
-    ARG("%.17g", c->h);
-    ARG("--ppc");
-    ARG("%d", c->ppc);
-    if (c->dt > 0) {
-      ARG("--dt");
-      ARG("%.17g", c->dt);
-    }
-    if (c->until > 0) {
-      ARG("--until");
-      ARG("%.17g", c->until);
-    }
-    for (int j = 0; j < c->nset; j++) {
-      ARG("--set");
-      ARG("%s", c->set[j]);
-    }
-    if (c->allow_unstable)
-      ARG("--allow-unstable");
-    ARG("--threads");
-    ARG("1");
-    ARG("--quiet");
-    ARG("--out");
-    ARG("%.1000s", c->dir);
-#undef ARG
-    av[k] = NULL;
-    argvs[i] = av;
+    argvs[i] = argvbuf + (size_t)i * (NARG + 1);
+    run_argv(r, c, argvs[i], store + (size_t)i * NARG * ALEN);
     /* the log sits beside the run's files; the folder must exist before the child opens it */
     ver_mkdir_p(c->dir);
     logs[i] = logstore + (size_t)i * (REP_PATH + 16);
@@ -349,7 +363,6 @@ int ver_report_run_cases(rep_ctx *r)
     if (status[i] != 0 && !c->allow_unstable)
       fprintf(stderr, "delam report: %s: delam run exit status %d (see %s)\n", c->id, status[i], logs[i]);
   }
-out:
   free(store);
   free(argvs);
   free(argvbuf);

@@ -1,0 +1,186 @@
+/*
+ * report_cases.c - the cases behind the figures of `delam report` (report.h): the
+ * pictures (each paper scene from its own file), the h x ppc sweep (joined by the runs
+ * of the verify folder), the time-step sweep, the snapback scenes, the separation
+ * threshold and the USL/MUSL pair; and finding them again.
+ */
+#include <dirent.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "report.h"
+#include "scene.h"
+#include "summary.h"
+
+#define PROG "delam report"
+
+const char *const rep_sweep_scene[REP_NSWEEP] = {"fig6", "fig7", "fig8"};
+const double rep_sweep_until[REP_NSWEEP] = {0.6, 1.2, 1.2};
+static const double stab_ratio[] = {0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.72, 0.74, 0.76, 0.78, 0.8, 0.9, 1.0, 1.1};
+#define NSTAB (int)(sizeof stab_ratio / sizeof stab_ratio[0])
+
+/* h / c, MODEL.md's 1-D bound: the unit of the time-step sweep, so that the figure
+ * shows where the step really fails (1/sqrt(2) of it).  The kernel validates the 2-D
+ * bound mpm_scene_dt_crit() = h / (c sqrt 2). */
+double ver_report_dt_crit(const rep_ctx *r, const char *scene, double h)
+{
+  char path[REP_PATH + 64], err[256];
+  ver_scene vs;
+  snprintf(path, sizeof path, "%.900s/%.60s.ini", r->scenes, scene);
+  if (ver_scene_load(path, &vs, err, sizeof err) != 0)
+    return NAN;
+  vs.sc.h = h;
+  return sqrt(2.0) * mpm_scene_dt_crit(&vs.sc);
+}
+
+/* Does the scene table know time.scheme=musl (the modified-USL option)? */
+static int knows_musl(const rep_ctx *r)
+{
+  char path[REP_PATH + 64], err[256];
+  ver_scene vs;
+  snprintf(path, sizeof path, "%s/fig6.ini", r->scenes);
+  if (ver_scene_parse(path, &vs, err, sizeof err) != 0)
+    return 0;
+  return ver_scene_set(&vs, "time.scheme=musl", err, sizeof err) == 0;
+}
+
+/* The sweep case of (scene, h, ppc), or -1. */
+int ver_report_find_sweep(const rep_ctx *r, const char *scene, double h, int ppc)
+{
+  for (int i = 0; i < r->n; i++) {
+    const rep_case *c = &r->c[i];
+    if ((c->role & REP_SWEEP) && !strcmp(c->scene, scene) && c->h == h && c->ppc == ppc)
+      return i;
+  }
+  return -1;
+}
+
+/* --from DIR: every DIR/<case>/summary.json run with the scene's defaults joins the sweep. */
+static int scan_from(report *R)
+{
+  rep_ctx *r = &R->r;
+  DIR *d = opendir(r->from);
+  int n = 0;
+  if (!d)
+    return 0;
+  const struct dirent *e;
+  while ((e = readdir(d)) && r->n < REP_MAX_CASES) {
+    if (e->d_name[0] == '.')
+      continue;
+    rep_case tmp;
+    memset(&tmp, 0, sizeof tmp);
+    snprintf(tmp.dir, sizeof tmp.dir, "%.800s/%.200s", r->from, e->d_name);
+    if (ver_report_read_summary(&tmp) != 0 || !tmp.complete)
+      continue;
+    ver_summary_doc sd;
+    if (ver_summary_read(tmp.dir, &sd) != 0)
+      continue;
+    int ok = sd.scene[0] && isfinite(sd.h) && sd.ppc > 0 && isfinite(sd.dt) &&
+             (!sd.le[0] || !strcmp(sd.le, "cell")) && (!isfinite(sd.sep_threshold) || sd.sep_threshold == 0.98);
+    /* the paper's time step only: dt / h as in the scene file */
+    if (ok) {
+      const double crit = ver_report_dt_crit(r, sd.scene, sd.h);
+      const double ref = ver_report_dt_crit(r, sd.scene, 8.0);
+      ok = isfinite(crit) && fabs(sd.dt / crit - 0.1 / ref) < 1e-6 && ver_report_find_sweep(r, sd.scene, sd.h, sd.ppc) < 0;
+    }
+    if (ok) {
+      rep_case *c = &r->c[r->n++];
+      *c = tmp;
+      snprintf(c->id, sizeof c->id, "%.80s", e->d_name);
+      if (ver_report_find(r, c->id) != r->n - 1)
+        snprintf(c->id, sizeof c->id, "%.80s@verify", e->d_name);
+      snprintf(c->scene, sizeof c->scene, "%.31s", sd.scene);
+      c->h = sd.h;
+      c->ppc = sd.ppc;
+      c->role = REP_SWEEP;
+      c->have = c->reused = 1;
+      c->exit_status = 0;
+      c->last_snap = -1;
+      c->curve_err = c->max_dev = c->diss_err = c->k_soft = c->drop_width = NAN;
+      n++;
+    }
+  }
+  closedir(d);
+  return n;
+}
+
+/* The grid of a scene file (h 8, 1 ppc if it does not load). */
+static void scene_grid(const rep_ctx *r, const char *scene, double *h, int *ppc)
+{
+  char path[REP_PATH + 64], err[256];
+  ver_scene vs;
+  snprintf(path, sizeof path, "%.900s/%.60s.ini", r->scenes, scene);
+  const int ok = ver_scene_load(path, &vs, err, sizeof err) == 0;
+  *h = ok ? vs.sc.h : 8;
+  *ppc = ok ? vs.sc.ppc : 1;
+}
+
+void ver_report_build_cases(report *R)
+{
+  rep_ctx *r = &R->r;
+  /* pictures: each paper scene as its file says (its grid, scheme, all its snapshots),
+   * so that every picture shows the scene file it names */
+  static const char *const pics[3] = {"fig6", "fig7", "fig8"};
+  for (int i = 0; i < 3; i++) {
+    double h = 0;
+    int ppc = 0;
+    scene_grid(r, pics[i], &h, &ppc);
+    ver_report_add(r, pics[i], h, ppc, 0, 0, NULL, NULL, i == 2 ? REP_PIC | REP_SNAP : REP_PIC, 0);
+  }
+  /* sweep over h and particles per cell, to a little past separation */
+  const int from_n = r->from[0] ? scan_from(R) : 0;
+  R->sweep_from = from_n;
+  if (from_n)
+    fprintf(stderr, PROG ": %d runs of %s join the h x ppc sweep\n", from_n, r->from);
+  /* the sweep's points that --from does not have are run here */
+  for (int s = 0; s < REP_NSWEEP; s++)
+      for (int ppc = 1; ppc <= 9; ppc += ppc == 1 ? 3 : 5)
+        /* 9 ppc at h = 2 only where it is cheap (fig6 stops at 0.6): inclined runs to 1.2
+         * at h = 2 with 9 ppc cost ~28 CPU-s each, a fifth of the report's budget */
+        for (double h = 8; h >= (ppc == 1 ? 1 : ppc == 9 && s > 0 ? 4 : 2); h /= 2)
+          if (ver_report_find_sweep(r, rep_sweep_scene[s], h, ppc) < 0)
+            ver_report_add(r, rep_sweep_scene[s], h, ppc, 0, rep_sweep_until[s], NULL, NULL, REP_SWEEP, 0);
+  /* time-step sweep: fig6, h = 8, 1 ppc, to delta 0.5 */
+  const double crit = ver_report_dt_crit(r, "fig6", 8);
+  for (int i = 0; i < NSTAB; i++)
+    ver_report_add(r, "fig6", 8, 1, stab_ratio[i] * crit, 0.5, NULL, NULL, REP_STAB, stab_ratio[i]);
+  /* snapback scenes (g < 1) on two grids */
+  for (double h = 4; h >= 2; h /= 2) {
+    ver_report_add(r, "a45", h, 1, 0, 0, NULL, NULL, REP_SNAP, 0);
+    ver_report_add(r, "a30", h, 1, 0, 0, NULL, NULL, REP_SNAP, 0);
+  }
+  /* separation threshold */
+  ver_report_add(r, "fig6", 8, 4, 0, 0.6, "decohesion.separation=0.98", NULL, REP_SEP, 0.98);
+  ver_report_add(r, "fig6", 8, 4, 0, 0.6, "decohesion.separation=0.8", NULL, REP_SEP, 0.8);
+  /* usl vs musl on an inclined scene, if the option exists */
+  r->have_musl = knows_musl(r);
+  if (r->have_musl) {
+    ver_report_add(r, "fig7", 4, 1, 0, 1.0, "time.scheme=usl", NULL, REP_SCHEME, 0);
+    ver_report_add(r, "fig7", 4, 1, 0, 1.0, "time.scheme=musl", NULL, REP_SCHEME, 1);
+    ver_report_add(r, "fig8", 4, 1, 0, 1.0, "time.scheme=usl", NULL, REP_SCHEME, 0);
+    ver_report_add(r, "fig8", 4, 1, 0, 1.0, "time.scheme=musl", NULL, REP_SCHEME, 1);
+  }
+}
+
+const rep_case *ver_report_first(const rep_ctx *r, int role, const char *scene)
+{
+  for (int i = 0; i < r->n; i++)
+    if ((r->c[i].role & role) && !strcmp(r->c[i].scene, scene))
+      return &r->c[i];
+  return NULL;
+}
+
+const rep_case *ver_report_case(const rep_ctx *r, const char *id)
+{
+  const int k = ver_report_find(r, id);
+  return k >= 0 && r->c[k].have ? &r->c[k] : NULL;
+}
+
+const rep_case *ver_report_sweep(const rep_ctx *r, const char *scene, double h, int ppc)
+{
+  const int k = ver_report_find_sweep(r, scene, h, ppc);
+  return k >= 0 && r->c[k].have ? &r->c[k] : NULL;
+}
+
