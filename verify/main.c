@@ -1,5 +1,5 @@
 /*
- * main.c - `delam`: dispatch to the subcommands (analytic, run, verify, report, bench).
+ * main.c - `delam`: dispatch to the subcommands (analytic, run, verify, report, bench, check).
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -31,6 +31,7 @@ static const struct {
   {"verify", ver_cmd_verify, "sweeps over h and particles per cell, checked against the analytic bar"},
   {"report", ver_cmd_report, "figures and the report (reports/out/)"},
   {"bench", ver_cmd_bench, "kernel speed: particle-updates per second and time split"},
+  {"check", ver_cmd_check, "judge a run folder written by any code against a scene's checks"},
 };
 
 static void usage(FILE *f)
@@ -91,6 +92,6 @@ int main(int argc, char **argv)
       free(args);
       return rc;
     }
-  fprintf(stderr, "delam: unknown command '%s' (allowed: analytic, run, verify, report, bench)\n", argv[1]);
+  fprintf(stderr, "delam: unknown command '%s' (allowed: analytic, run, verify, report, bench, check)\n", argv[1]);
   return 2;
 }

@@ -271,6 +271,16 @@ void ver_policy_case(ver_case *c)
   judge_all(c);
 }
 
+void ver_policy_drop(ver_case *c, const char *name)
+{
+  int m = 0;
+  for (int i = 0; i < c->nchk; i++)
+    if (strcmp(c->chk[i].name, name))
+      c->chk[m++] = c->chk[i];
+  c->nchk = m;
+  judge_all(c);
+}
+
 /* ------------------------------------------------------------------ across cases */
 
 static int cross_add(ver_cross *x, int *nx, const char *name, const char *scene, const char *over, double fixed)

@@ -90,6 +90,8 @@ void ver_case_read(const ver_verify_opts *o, ver_case *c);
 /* policy.c */
 /* The checks of one case (c->chk, c->verdict) from its measured numbers. */
 void ver_policy_case(ver_case *c);
+/* Removes check `name` from c (an input the case does not have) and judges c again. */
+void ver_policy_drop(ver_case *c, const char *name);
 /* The cross-case checks over cs into x (at most VER_MAXCROSS); their number. */
 int ver_policy_cross(ver_case *cs, int n, ver_cross *x);
 
@@ -98,6 +100,10 @@ int ver_sweep_write_json(const ver_verify_opts *o, const ver_case *cs, int n, co
                          double wall, int rc);
 int ver_sweep_write_csv(const ver_verify_opts *o, const ver_case *cs, int n);
 void ver_sweep_print_check(const char *id, const ver_check *k);
+/* One check as a JSON object (name, class, measured, reference, error, tolerance,
+ * bounds, verdict, note), for verify.json and check.json. */
+struct cJSON;
+struct cJSON *ver_check_json(const ver_check *k);
 void ver_sweep_print_table(const ver_case *cs, int n, const ver_cross *x, int nx);
 
 #endif

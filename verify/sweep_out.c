@@ -18,7 +18,7 @@ static cJSON *num_or_null(double v)
   return isfinite(v) ? cJSON_CreateNumber(v) : cJSON_CreateNull();
 }
 
-static cJSON *check_json(const ver_check *k)
+cJSON *ver_check_json(const ver_check *k)
 {
   cJSON *o = cJSON_CreateObject();
   cJSON_AddStringToObject(o, "name", k->name);
@@ -92,7 +92,7 @@ int ver_sweep_write_json(const ver_verify_opts *o, const ver_case *cs, int n, co
     }
     cJSON *ck = cJSON_AddArrayToObject(co, "checks");
     for (int j = 0; j < c->nchk; j++) {
-      cJSON_AddItemToArray(ck, check_json(&c->chk[j]));
+      cJSON_AddItemToArray(ck, ver_check_json(&c->chk[j]));
       counts[c->chk[j].verdict]++;
     }
     cfail += c->verdict == VER_FAIL;
@@ -101,7 +101,7 @@ int ver_sweep_write_json(const ver_verify_opts *o, const ver_case *cs, int n, co
   cJSON *xa = cJSON_AddArrayToObject(root, "cross");
   for (int i = 0; i < nx; i++) {
     const ver_cross *g = &x[i];
-    cJSON *go = check_json(&g->chk);
+    cJSON *go = ver_check_json(&g->chk);
     cJSON_AddStringToObject(go, "scene", g->scene);
     cJSON_AddStringToObject(go, "over", g->over);
     cJSON_AddNumberToObject(go, strcmp(g->over, "h") ? "h" : "ppc", g->fixed);

@@ -1,0 +1,474 @@
+/*
+ * cmd_check.c - `delam check --scene SCENE DIR`: judges a run folder that any code
+ * wrote, with the checks `delam verify` applies to delam's own runs (policy.c, the
+ * measurements of metrics.h; nothing here decides a tolerance).
+ *
+ * Input (docs/output-formats.md, "Checking a run of another code"):
+ *   DIR/load.csv     required: a header naming at least delta and P_grip (P_fixed is
+ *                    used when present), then one row per output time;
+ *   DIR/energy.csv   optional: W_ext, KE, SE, W_coh, D; gives the dissipation and the
+ *                    energy balance; without it the external work is the area under
+ *                    the load-deflection curve and those two checks are left out;
+ *   DIR/final.csv    optional (or --particles FILE): the final particles, x0, y0 and
+ *                    lambda; gives the band width and the crack angle.
+ * A first line starting with '#' (delam's schema line) and blank lines are skipped.
+ * Output: one line per check, the verdict, DIR/check.json.  Exit status 0 every check
+ * passed (or is within a known limit), 1 a check failed, 2 unusable input (the file,
+ * line and column are named).
+ */
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include <cjson/cJSON.h>
+
+#include "build_info.h"
+#include "cmd.h"
+#include "datadir.h"
+#include "io.h"
+#include "metrics.h"
+#include "separation.h"
+#include "summary.h"
+#include "sweep.h"
+
+#define PROG "delam check"
+#define CHECK_SCHEMA 1
+#define MAXCOL 16
+
+static void usage(FILE *f)
+{
+  fprintf(f,
+    "usage: delam check --scene SCENE DIR [options]\n"
+    "Judges a run folder written by any code against the closed-form bar of SCENE, with\n"
+    "the checks of `delam verify` (peak load, elastic and softening slopes, separation,\n"
+    "load-curve error, external work; dissipation and energy balance when energy.csv is\n"
+    "there; band width and crack angle when final particles are).\n\n"
+    "DIR holds load.csv (header with at least delta and P_grip), optionally energy.csv\n"
+    "(W_ext, KE, SE, W_coh, D) and final.csv (x0, y0, lambda); see docs/output-formats.md.\n\n"
+    "options:\n"
+    "  --scene SCENE     the scene the run was meant to compute (a file, or a name: fig6)\n"
+    "  --h H, --ppc N    the run's grid spacing and particles per cell (default: from\n"
+    "                    DIR/scene.ini when delam wrote the folder, else the scene's)\n"
+    "  --set S.K=V       set a key of the scene, as for delam run (repeatable)\n"
+    "  --particles FILE  the final particle CSV (default DIR/final.csv when present)\n"
+    "  --out FILE        where check.json goes (default DIR/check.json)\n"
+    "  --help            this text\n"
+    "exit status: 0 all checks pass (or are within a known limit), 1 a check failed,\n"
+    "2 bad usage or unusable input (file, line and column named)\n");
+}
+
+/* A numeric CSV, strictly: every wanted field of every row a finite number. */
+typedef struct {
+  long n;                  /* rows                                   */
+  double *col[MAXCOL];     /* the wanted columns (NULL: not in file) */
+} table;
+
+static void table_free(table *t)
+{
+  for (int j = 0; j < MAXCOL; j++)
+    free(t->col[j]);
+  memset(t, 0, sizeof *t);
+}
+
+static char *trim(char *s)
+{
+  while (*s == ' ' || *s == '\t' || *s == '"')
+    s++;
+  char *e = s + strlen(s);
+  while (e > s && (e[-1] == ' ' || e[-1] == '\t' || e[-1] == '\r' || e[-1] == '"'))
+    *--e = '\0';
+  return s;
+}
+
+/* Reads path; the columns names[0..nname-1], of which the first nreq are required.
+ * 0, 1 (file missing), or 2 with "file:line:column: ..." in err. */
+static int read_table(const char *path, const char *const *names, int nname, int nreq, table *t, char *err,
+                      size_t errlen)
+{
+  memset(t, 0, sizeof *t);
+  char *txt = ver_io_slurp(path, NULL, 64u << 20);
+  if (!txt) {
+    struct stat st;
+    if (stat(path, &st) != 0 && errno == ENOENT)
+      return 1;
+    snprintf(err, errlen, "%s: cannot read (or larger than 64 MiB): %s", path, strerror(errno));
+    return 2;
+  }
+  long rows = 0;
+  for (const char *s = txt; *s; s++)
+    rows += *s == '\n';
+  int idx[MAXCOL];
+  for (int j = 0; j < nname; j++)
+    idx[j] = -1;
+  int line = 0, have_header = 0, rc = 0, ncol = 0;
+  for (char *ln = txt, *next; *ln && !rc; ln = next) {
+    char *nl = strchr(ln, '\n');
+    next = nl ? nl + 1 : ln + strlen(ln);
+    if (nl)
+      *nl = '\0';
+    line++;
+    char *s = trim(ln);
+    if (!*s || (*s == '#' && !have_header))
+      continue;
+    if (!have_header) {
+      have_header = 1;
+      char *hs = NULL;
+      ncol = 0;
+      for (char *f = strtok_r(s, ",", &hs); f; f = strtok_r(NULL, ",", &hs), ncol++)
+        for (int j = 0; j < nname; j++)
+          if (!strcmp(trim(f), names[j]))
+            idx[j] = ncol;
+      for (int j = 0; j < nreq; j++)
+        if (idx[j] < 0) {
+          snprintf(err, errlen, "%s:%d: the header has no column '%s' (needed: ", path, line, names[j]);
+          for (int q = 0; q < nreq; q++)
+            snprintf(err + strlen(err), errlen - strlen(err), "%s%s", q ? ", " : "", names[q]);
+          snprintf(err + strlen(err), errlen - strlen(err), ")");
+          rc = 2;
+        }
+      for (int j = 0; j < nname && !rc; j++)
+        if (idx[j] >= 0 && !(t->col[j] = malloc(sizeof(double) * (size_t)(rows + 1)))) {
+          snprintf(err, errlen, "%s: out of memory", path);
+          rc = 2;
+        }
+      continue;
+    }
+    /* a data row: split it once, then take the wanted fields */
+    char *fields[256];
+    int nf = 0;
+    for (char *p = s;;) {
+      if (nf == 256)
+        break;
+      fields[nf++] = p;
+      char *c = strchr(p, ',');
+      if (!c)
+        break;
+      *c = '\0';
+      p = c + 1;
+    }
+    for (int j = 0; j < nname && !rc; j++) {
+      if (idx[j] < 0)
+        continue;
+      if (idx[j] >= nf) {
+        snprintf(err, errlen, "%s:%d:%d: no field for column '%s' (the row has %d fields, the header %d)", path,
+                 line, idx[j] + 1, names[j], nf, ncol);
+        rc = 2;
+        break;
+      }
+      char *f = trim(fields[idx[j]]), *end;
+      errno = 0;
+      const double v = strtod(f, &end);
+      if (end == f || *end || !isfinite(v)) {
+        snprintf(err, errlen, "%s:%d:%d: column '%s': '%.40s' is not a finite number", path, line, idx[j] + 1,
+                 names[j], f);
+        rc = 2;
+        break;
+      }
+      t->col[j][t->n] = v;
+    }
+    t->n++;
+  }
+  free(txt);
+  if (!rc && !have_header) {
+    snprintf(err, errlen, "%s:1: no header line (expected at least: %s%s%s)", path, names[0], nreq > 1 ? ", " : "",
+             nreq > 1 ? names[1] : "");
+    rc = 2;
+  } else if (!rc && t->n < 3) {
+    snprintf(err, errlen, "%s:%d: %ld data rows; at least 3 are needed", path, line, t->n);
+    rc = 2;
+  }
+  if (rc)
+    table_free(t);
+  return rc;
+}
+
+/* The scene the folder is judged against: SCENE with --set, h and ppc. */
+static int build_scene(const char *arg, const char *dir, double h, double ppc, const char **sets, int nset,
+                       ver_scene *vs, char *err, size_t errlen)
+{
+  char path[4400], buf[160], num[40];
+  if (ver_scene_resolve(arg, path, sizeof path, err, errlen) || ver_scene_parse(path, vs, err, errlen))
+    return 2;
+  if (h <= 0 || ppc <= 0) { /* a folder delam wrote says its own */
+    char own[1400];
+    ver_scene ds;
+    snprintf(own, sizeof own, "%s/scene.ini", dir);
+    if (ver_scene_parse(own, &ds, buf, sizeof buf) == 0) {
+      if (h <= 0)
+        h = ds.sc.h;
+      if (ppc <= 0)
+        ppc = ds.sc.ppc;
+    }
+  }
+  if (h > 0) {
+    ver_scene_fmt_num(vs->sc.dt * h / vs->sc.h, num, sizeof num); /* the file's Courant number */
+    snprintf(buf, sizeof buf, "time.dt=%s", num);
+    if (ver_scene_set(vs, buf, err, errlen))
+      return 2;
+    ver_scene_fmt_num(h, num, sizeof num);
+    snprintf(buf, sizeof buf, "grid.h=%s", num);
+    if (ver_scene_set(vs, buf, err, errlen))
+      return 2;
+  }
+  if (ppc > 0) {
+    ver_scene_fmt_num(ppc, num, sizeof num);
+    snprintf(buf, sizeof buf, "grid.ppc=%s", num);
+    if (ver_scene_set(vs, buf, err, errlen))
+      return 2;
+  }
+  for (int i = 0; i < nset; i++)
+    if (ver_scene_set(vs, sets[i], err, errlen))
+      return 2;
+  vs->allow_unstable = 1; /* nothing is run here */
+  return ver_scene_validate(vs, err, errlen);
+}
+
+/* The measurements verify takes from a run (metrics.h, separation.h), from the tables. */
+static void measure(ver_case *c, const table *ld, const table *en, const table *pt)
+{
+  const mpm_scene *sc = &c->vs.sc;
+  const double *d = ld->col[0], *P = ld->col[1], *Pf = ld->col[2] ? ld->col[2] : ld->col[1];
+  const size_t n = (size_t)ld->n;
+  c->complete = 1;
+  c->exit_code = 0;
+  c->peak_P = -INFINITY;
+  for (size_t i = 0; i < n; i++)
+    if (P[i] > c->peak_P) {
+      c->peak_P = P[i];
+      c->delta_peak = d[i];
+    }
+  c->delta_end = d[n - 1];
+  c->k_elastic = ver_elastic_slope(d, P, n, c->peak_P, c->delta_peak, VER_ELASTIC_LO, VER_ELASTIC_HI);
+  c->k_soft = ver_softening_slope(d, P, n, VER_SOFT_HI, VER_SOFT_LO);
+  if (c->have_ana)
+    c->curve_l2 = ver_curve_err_bar(&c->ana, d, P, n, ver_curve_end(&c->ana, sc->sep_threshold), NULL);
+  /* separation by the load, with the run's window of 4 L / c in delta */
+  const double cw = sqrt(sc->E / (1.0 - sc->nu * sc->nu) / sc->rho);
+  const double step = (d[n - 1] - d[0]) / (double)(n - 1);
+  const long win = step > 0 ? (long)fmax(1.0, ceil(4.0 * sc->L / cw * sc->speed / step)) : 1;
+  ver_sep sep;
+  c->delta_sep = NAN;
+  if (ver_sep_init(&sep, sc->H, sc->h, sc->ppc, win, c->vs.sep_load_frac) == 0) {
+    double peak = -INFINITY, dpk = 0.0;
+    for (size_t i = 0; i < n; i++) {
+      if (P[i] > peak) {
+        peak = P[i];
+        dpk = d[i];
+      }
+      ver_sep_load(&sep, d[i], P[i], Pf[i], peak, dpk);
+    }
+    if (sep.delta_sep >= 0)
+      c->delta_sep = sep.delta_sep;
+    ver_sep_free(&sep);
+  }
+  if (en) { /* W_ext, KE, SE, W_coh, D */
+    const size_t m = (size_t)en->n;
+    c->W_ext_final = en->col[0][m - 1];
+    c->D_final = en->col[4][m - 1];
+    double wmax = 0.0, res = 0.0;
+    for (size_t i = 0; i < m; i++)
+      wmax = fmax(wmax, fabs(en->col[0][i]));
+    for (size_t i = 0; i < m && wmax > 0; i++)
+      res = fmax(res, fabs(en->col[0][i] - en->col[1][i] - en->col[2][i] - en->col[3][i]) / wmax);
+    c->energy_residual = wmax > 0 ? res : NAN;
+  } else { /* the external work is the area under the load-deflection curve */
+    double w = 0.5 * P[0] * d[0];
+    for (size_t i = 1; i < n; i++)
+      w += 0.5 * (P[i] + P[i - 1]) * (d[i] - d[i - 1]);
+    c->W_ext_final = w;
+    c->D_final = c->energy_residual = NAN;
+  }
+  c->band_width = c->angle = c->D_diffuse = NAN;
+  if (pt) {
+    const size_t m = (size_t)pt->n;
+    c->band_width = ver_band_width(pt->col[0], pt->col[1], pt->col[2], m, VER_BAND_LAMBDA, sc->alpha_deg, sc->h,
+                                   sc->ppc, sc->H, &c->band_extent, &c->band_count);
+    c->angle = ver_crack_angle(pt->col[0], pt->col[1], pt->col[2], m, VER_BAND_LAMBDA);
+    if (c->have_ana && c->ana.D_sep > 0.0 && isfinite(c->D_final))
+      c->D_diffuse = ver_diffuse_share(pt->col[2], m, VER_BAND_LAMBDA) * c->D_final / c->ana.D_sep;
+  }
+}
+
+static int write_json(const char *out, const ver_case *c, const char *dir, const char *scene_path, int have_en,
+                      const char *pfile, int rc)
+{
+  cJSON *o = cJSON_CreateObject();
+  cJSON_AddNumberToObject(o, "schema", CHECK_SCHEMA);
+  cJSON_AddStringToObject(o, "dir", dir);
+  cJSON_AddStringToObject(o, "scene", c->vs.name);
+  cJSON_AddStringToObject(o, "scene_file", scene_path);
+  cJSON_AddNumberToObject(o, "h", c->vs.sc.h);
+  cJSON_AddNumberToObject(o, "ppc", c->vs.sc.ppc);
+  cJSON *ov = cJSON_AddArrayToObject(o, "overrides");
+  for (int i = 0; i < c->vs.nover; i++)
+    cJSON_AddItemToArray(ov, cJSON_CreateString(c->vs.over[i]));
+  cJSON *in = cJSON_AddObjectToObject(o, "inputs");
+  cJSON_AddStringToObject(in, "load", "load.csv");
+  if (have_en)
+    cJSON_AddStringToObject(in, "energy", "energy.csv");
+  if (pfile)
+    cJSON_AddStringToObject(in, "particles", pfile);
+  cJSON_AddStringToObject(o, "checked_by", ver_build_version());
+  cJSON *ck = cJSON_AddArrayToObject(o, "checks");
+  for (int j = 0; j < c->nchk; j++)
+    cJSON_AddItemToArray(ck, ver_check_json(&c->chk[j]));
+  cJSON_AddStringToObject(o, "verdict", ver_verdict_name(c->verdict));
+  cJSON_AddNumberToObject(o, "exit_status", rc);
+  char *txt = cJSON_Print(o);
+  cJSON_Delete(o);
+  if (!txt)
+    return -1;
+  const size_t len = strlen(txt);
+  char *t2 = realloc(txt, len + 2);
+  if (!t2) {
+    free(txt);
+    return -1;
+  }
+  t2[len] = '\n';
+  t2[len + 1] = '\0';
+  const int r = ver_io_write_atomic(out, t2);
+  free(t2);
+  return r;
+}
+
+static int num_opt(const char *opt, const char *v, double *out)
+{
+  char *end;
+  *out = v ? strtod(v, &end) : NAN;
+  if (!v || end == v || *end || !isfinite(*out) || *out <= 0) {
+    fprintf(stderr, PROG ": %s: '%s' is not a number > 0\n", opt, v ? v : "");
+    return 2;
+  }
+  return 0;
+}
+
+int ver_cmd_check(int argc, char **argv)
+{
+  const char *scene = NULL, *dir = NULL, *out = NULL, *pfile = NULL, *sets[VER_MAX_OVER];
+  int nset = 0;
+  double h = 0, ppc = 0;
+  for (int i = 1; i < argc; i++) {
+    const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
+    int r = 0;
+    if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
+      usage(stdout);
+      return 0;
+    } else if (!strcmp(a, "--scene") || !strcmp(a, "--out") || !strcmp(a, "--particles") || !strcmp(a, "--set")) {
+      if (!v) {
+        fprintf(stderr, PROG ": %s needs a value (see delam check --help)\n", a);
+        return 2;
+      }
+      if (!strcmp(a, "--scene")) scene = v;
+      else if (!strcmp(a, "--out")) out = v;
+      else if (!strcmp(a, "--particles")) pfile = v;
+      else if (nset < VER_MAX_OVER) sets[nset++] = v;
+      else { fprintf(stderr, PROG ": more than %d --set\n", VER_MAX_OVER); return 2; }
+      i++;
+    } else if (!strcmp(a, "--h")) { r = num_opt(a, v, &h); i++; }
+    else if (!strcmp(a, "--ppc")) { r = num_opt(a, v, &ppc); i++; }
+    else if (a[0] == '-' && a[1]) {
+      fprintf(stderr, PROG ": unknown option '%s' (see delam check --help)\n", a);
+      return 2;
+    } else if (!dir) dir = a;
+    else { fprintf(stderr, PROG ": one folder only ('%s' is extra)\n", a); return 2; }
+    if (r) return r;
+  }
+  if (!scene || !dir) {
+    fprintf(stderr, PROG ": needs --scene SCENE and a run folder (usage: delam check --scene SCENE DIR)\n");
+    return 2;
+  }
+  static ver_case c; /* large; one per process */
+  memset(&c, 0, sizeof c);
+  char err[4800];
+  if (build_scene(scene, dir, h, ppc, sets, nset, &c.vs, err, sizeof err)) {
+    fprintf(stderr, PROG ": %s\n", err);
+    return 2;
+  }
+  char aerr[256];
+  c.have_ana = ver_scene_bar(&c.vs.sc, &c.ana, aerr, sizeof aerr) == 0;
+  snprintf(c.scene, sizeof c.scene, "%s", c.vs.name);
+  snprintf(c.id, sizeof c.id, "%.100s", dir);
+
+  static const char *const lnames[] = {"delta", "P_grip", "P_fixed"};
+  static const char *const enames[] = {"W_ext", "KE", "SE", "W_coh", "D"};
+  static const char *const pnames[] = {"x0", "y0", "lambda"};
+  char path[1400], ppath[1400];
+  table ld, en, pt;
+  snprintf(path, sizeof path, "%s/load.csv", dir);
+  int r = read_table(path, lnames, 3, 2, &ld, err, sizeof err);
+  if (r == 1)
+    snprintf(err, sizeof err, "%s: no such file (the load-deflection curve is required)", path);
+  if (r) {
+    fprintf(stderr, PROG ": %s\n", err);
+    return 2;
+  }
+  snprintf(path, sizeof path, "%s/energy.csv", dir);
+  r = read_table(path, enames, 5, 5, &en, err, sizeof err);
+  if (r == 2) {
+    fprintf(stderr, PROG ": %s\n", err);
+    table_free(&ld);
+    return 2;
+  }
+  const int have_en = r == 0;
+  snprintf(ppath, sizeof ppath, "%s", pfile ? pfile : "");
+  if (!pfile)
+    snprintf(ppath, sizeof ppath, "%s/final.csv", dir);
+  r = read_table(ppath, pnames, 3, 3, &pt, err, sizeof err);
+  if (r == 2 || (r == 1 && pfile)) {
+    if (r == 1)
+      snprintf(err, sizeof err, "%s: no such file", ppath);
+    fprintf(stderr, PROG ": %s\n", err);
+    table_free(&ld);
+    if (have_en)
+      table_free(&en);
+    return 2;
+  }
+  const int have_pt = r == 0;
+
+  measure(&c, &ld, have_en ? &en : NULL, have_pt ? &pt : NULL);
+  ver_policy_case(&c);
+  /* the checks whose input is not there are left out, not failed; "run" (delam's own
+   * stop rule) says nothing of another code's folder */
+  ver_policy_drop(&c, "run");
+  if (!have_en) {
+    ver_policy_drop(&c, "D_final");
+    ver_policy_drop(&c, "energy_residual");
+  }
+  if (!have_pt) {
+    ver_policy_drop(&c, "band_width");
+    ver_policy_drop(&c, "crack_angle");
+  }
+  char label[160];
+  snprintf(label, sizeof label, "%s vs %s-h%g-ppc%d", dir, c.vs.name, c.vs.sc.h, c.vs.sc.ppc);
+  for (int j = 0; j < c.nchk; j++)
+    ver_sweep_print_check(label, &c.chk[j]);
+  const int rc = c.verdict == VER_FAIL ? 1 : 0;
+  printf("check: %s", ver_verdict_name(c.verdict));
+  if (rc) {
+    printf(", failed:");
+    for (int j = 0; j < c.nchk; j++)
+      if (c.chk[j].verdict == VER_FAIL)
+        printf(" %s", c.chk[j].name);
+  }
+  printf(" (%d checks; %s%s)\n", c.nchk, have_en ? "with energy.csv" : "no energy.csv: D and energy balance left out",
+         have_pt ? ", with particles" : ", no particles: band width and angle left out");
+  char jpath[1400];
+  snprintf(jpath, sizeof jpath, "%s", out ? out : "");
+  if (!out)
+    snprintf(jpath, sizeof jpath, "%s/check.json", dir);
+  int wrc = write_json(jpath, &c, dir, c.vs.path, have_en, have_pt ? ppath : NULL, rc);
+  table_free(&ld);
+  if (have_en)
+    table_free(&en);
+  if (have_pt)
+    table_free(&pt);
+  if (wrc) {
+    fprintf(stderr, PROG ": %s: cannot write: %s\n", jpath, strerror(errno));
+    return 2;
+  }
+  printf("check: -> %s\n", jpath);
+  return rc;
+}
