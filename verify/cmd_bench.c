@@ -134,16 +134,47 @@ static void usage(FILE *f)
     "  --h 1 --ppc 4 --until 0.1 --threads 1\n");
 }
 
-int ver_cmd_bench(int argc, char **argv)
+/* The scene of a bench case: its file at the case's h and ppc (dt scaled with h), its
+ * overrides, to delta 1; and its analytic bar.  0, or 2 with a message on stderr. */
+static int bench_scene(const bench_case *bc, ver_scene *vs, ana_bar *bar)
 {
-  int threads = 0, json = 0, repeat = 3;
-  double scale = 1.0;
+  char err[1024], set[64];
+  char path[4400];
+  if (ver_scene_resolve(bc->scene, path, sizeof path, err, sizeof err) ||
+      ver_scene_parse(path, vs, err, sizeof err)) {
+    fprintf(stderr, "delam bench: %s (run from the source folder)\n", err);
+    return 2;
+  }
+  vs->sc.dt *= bc->h / vs->sc.h;
+  snprintf(set, sizeof set, "grid.h=%g", bc->h);
+  ver_scene_set(vs, set, err, sizeof err);
+  snprintf(set, sizeof set, "grid.ppc=%d", bc->ppc);
+  ver_scene_set(vs, set, err, sizeof err);
+  if (apply_sets(vs, bc->sets, err, sizeof err)) {
+    fprintf(stderr, "delam bench: %s\n", err);
+    return 2;
+  }
+  vs->sc.end_delta = 1.0;
+  if (ver_scene_validate(vs, err, sizeof err)) {
+    fprintf(stderr, "delam bench: %s\n", err);
+    return 2;
+  }
+  if (ver_scene_bar(&vs->sc, bar, err, sizeof err) != 0) {
+    fprintf(stderr, "delam bench: %s\n", err);
+    return 2;
+  }
+  return 0;
+}
+
+/* The options; 0, 1 (--help: done) or 2 (bad usage). */
+static int bench_args(int argc, char **argv, int *threads, int *json, int *repeat, double *scale)
+{
   for (int i = 1; i < argc; i++) {
     if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
       usage(stdout);
-      return 0;
+      return 1;
     } else if (!strcmp(argv[i], "--json")) {
-      json = 1;
+      *json = 1;
     } else if (!strcmp(argv[i], "--threads") || !strcmp(argv[i], "--repeat") ||
                !strcmp(argv[i], "--steps-scale")) {
       char *end;
@@ -155,17 +186,27 @@ int ver_cmd_bench(int argc, char **argv)
         return 2;
       }
       if (argv[i][2] == 't')
-        threads = (int)v;
+        *threads = (int)v;
       else if (argv[i][2] == 'r')
-        repeat = (int)v;
+        *repeat = (int)v;
       else
-        scale = v;
+        *scale = v;
       i++;
     } else {
       fprintf(stderr, "delam bench: unknown option '%s' (see delam bench --help)\n", argv[i]);
       return 2;
     }
   }
+  return 0;
+}
+
+int ver_cmd_bench(int argc, char **argv)
+{
+  int threads = 0, json = 0, repeat = 3;
+  double scale = 1.0;
+  const int pa = bench_args(argc, argv, &threads, &json, &repeat, &scale);
+  if (pa)
+    return pa == 1 ? 0 : 2;
   const int tlist[2] = {threads ? threads : 1, 2};
   const int ntl = threads ? 1 : 2;
   if (!json)
@@ -174,32 +215,10 @@ int ver_cmd_bench(int argc, char **argv)
   for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++)
     for (int ti = 0; ti < ntl; ti++) {
       ver_scene vs;
-      char err[1024], set[64];
-      char path[4400];
-      if (ver_scene_resolve(cases[c].scene, path, sizeof path, err, sizeof err) ||
-          ver_scene_parse(path, &vs, err, sizeof err)) {
-        fprintf(stderr, "delam bench: %s (run from the source folder)\n", err);
-        return 2;
-      }
-      vs.sc.dt *= cases[c].h / vs.sc.h;
-      snprintf(set, sizeof set, "grid.h=%g", cases[c].h);
-      ver_scene_set(&vs, set, err, sizeof err);
-      snprintf(set, sizeof set, "grid.ppc=%d", cases[c].ppc);
-      ver_scene_set(&vs, set, err, sizeof err);
-      if (apply_sets(&vs, cases[c].sets, err, sizeof err)) {
-        fprintf(stderr, "delam bench: %s\n", err);
-        return 2;
-      }
-      vs.sc.end_delta = 1.0;
-      if (ver_scene_validate(&vs, err, sizeof err)) {
-        fprintf(stderr, "delam bench: %s\n", err);
-        return 2;
-      }
       ana_bar bar;
-      if (ver_scene_bar(&vs.sc, &bar, err, sizeof err) != 0) {
-        fprintf(stderr, "delam bench: %s\n", err);
+      char err[1024];
+      if (bench_scene(&cases[c], &vs, &bar))
         return 2;
-      }
       mpm_sim *s = NULL;
       const long steps = (long)(cases[c].steps * scale);
       double wall = INFINITY, cpu = 0.0;

@@ -22,26 +22,11 @@
 
 #include "build_info.h"
 #include "scene.h"
-
-typedef enum { K_DBL, K_INT, K_LE, K_SCHEME, K_MOTION, K_SHAPE, K_FIELDS, K_LIST } ktype;
-
-/* Range kinds: (lo, hi) open, [lo, hi) half open, etc. encoded by flags. */
-enum { LO_OPEN = 1, LO_CLOSED = 2, HI_OPEN = 4, HI_CLOSED = 8 };
-
-typedef struct {
-  const char *section, *key;
-  ktype type;
-  size_t off;          /* offset in ver_scene (K_DBL, K_INT, K_LE, ...) */
-  int required;        /* 1 always, 2 only when decohesion.model > 0, 0 optional */
-  double lo, hi;
-  int range;           /* LO_* | HI_* */
-  double def;          /* default when optional */
-  const char *allowed; /* human text of the range */
-} keydef;
+#include "scene_keys.h"
 
 #define OFF(f) offsetof(ver_scene, sc.f) /* the kernel's description */
 #define VOFF(f) offsetof(ver_scene, f)  /* run control, not the kernel's */
-static const keydef keys[] = {
+const keydef ver_scene_keys[] = {
   {"bar", "L", K_DBL, OFF(L), 1, 0, 0, LO_OPEN, 0, "> 0"},
   {"bar", "H", K_DBL, OFF(H), 1, 0, 0, LO_OPEN, 0, "> 0"},
   {"material", "E", K_DBL, OFF(E), 1, 0, 0, LO_OPEN, 0, "> 0"},
@@ -75,17 +60,9 @@ static const keydef keys[] = {
   {"output", "snapshots", K_LIST, 0, 0, 0, 0, LO_CLOSED, 0, "a comma-separated list of end displacements >= 0"},
   {"output", "interval", K_DBL, 0, 0, 0, 0, LO_OPEN, -1, "> 0 (default: 0.0005)"},
 };
-#define NKEYS (int)(sizeof keys / sizeof keys[0])
+const int ver_scene_nkeys = (int)(sizeof ver_scene_keys / sizeof ver_scene_keys[0]);
 
-_Static_assert(NKEYS <= VER_NKEYS, "VER_NKEYS too small for the key table");
-
-/* Size limits: far above any sensible scene, low enough that every count fits in an
- * int and every allocation in memory (and that no double-to-integer cast overflows). */
-#define MAX_NODES 1e8     /* grid nodes                        */
-#define MAX_PARTICLES 1e8 /* particles                         */
-#define MAX_STEPS 1e12    /* time steps to run.end_delta       */
-#define MAX_ROWS 1e7      /* rows of load.csv and energy.csv   */
-#define MAX_LINE 500      /* characters on a line of the file  */
+_Static_assert(sizeof ver_scene_keys / sizeof ver_scene_keys[0] <= VER_NKEYS, "VER_NKEYS too small for the key table");
 
 typedef struct {
   ver_scene *vs;
@@ -97,31 +74,31 @@ typedef struct {
 } parse_ctx;
 
 /* 1 if key i is the first of its section in the table. */
-static int first_of_section(int i)
+int ver_scene_key_first(int i)
 {
   for (int j = 0; j < i; j++)
-    if (!strcmp(keys[j].section, keys[i].section))
+    if (!strcmp(ver_scene_keys[j].section, ver_scene_keys[i].section))
       return 0;
   return 1;
 }
 
 /* Index of a section among the distinct sections of the table, or -1. */
-static int section_index(const char *section)
+int ver_scene_key_section(const char *section)
 {
-  for (int i = 0, n = 0; i < NKEYS; i++)
-    if (first_of_section(i)) {
+  for (int i = 0, n = 0; i < ver_scene_nkeys; i++)
+    if (ver_scene_key_first(i)) {
       assert(n < VER_NSECT);
-      if (!strcmp(keys[i].section, section))
+      if (!strcmp(ver_scene_keys[i].section, section))
         return n;
       n++;
     }
   return -1;
 }
 
-static int find_key(const char *section, const char *key)
+int ver_scene_key_find(const char *section, const char *key)
 {
-  for (int i = 0; i < NKEYS; i++)
-    if (!strcmp(keys[i].section, section) && !strcmp(keys[i].key, key))
+  for (int i = 0; i < ver_scene_nkeys; i++)
+    if (!strcmp(ver_scene_keys[i].section, section) && !strcmp(ver_scene_keys[i].key, key))
       return i;
   return -1;
 }
@@ -146,14 +123,14 @@ static void list_names(const char *section, char *buf, size_t len)
 {
   buf[0] = '\0';
   size_t n = 0;
-  for (int i = 0; i < NKEYS && n < len; i++) {
-    if (section ? strcmp(keys[i].section, section) != 0 : !first_of_section(i))
+  for (int i = 0; i < ver_scene_nkeys && n < len; i++) {
+    if (section ? strcmp(ver_scene_keys[i].section, section) != 0 : !ver_scene_key_first(i))
       continue;
-    n += (size_t)snprintf(buf + n, len - n, "%s%s", n ? ", " : "", section ? keys[i].key : keys[i].section);
+    n += (size_t)snprintf(buf + n, len - n, "%s%s", n ? ", " : "", section ? ver_scene_keys[i].key : ver_scene_keys[i].section);
   }
 }
 
-static int in_range(const keydef *k, double v)
+int ver_scene_key_in_range(const keydef *k, double v)
 {
   if ((k->range & LO_OPEN) && !(v > k->lo)) return 0;
   if ((k->range & LO_CLOSED) && !(v >= k->lo)) return 0;
@@ -163,7 +140,7 @@ static int in_range(const keydef *k, double v)
 }
 
 /* A finite number with nothing but blanks after it: 0; 1 not a number; 2 not finite. */
-static int parse_num(const char *s, double *v)
+int ver_scene_key_num(const char *s, double *v)
 {
   char *end;
   errno = 0;
@@ -182,7 +159,7 @@ static int parse_num(const char *s, double *v)
 /* Checks value for key ki and stores it; 0, or 2 with a message (no location) in msg. */
 static int set_key(ver_scene *vs, int ki, const char *value, char *msg, size_t len)
 {
-  const keydef *k = &keys[ki];
+  const keydef *k = &ver_scene_keys[ki];
   char sv[48];
   char *base = (char *)vs;
   while (*value == ' ' || *value == '\t')
@@ -234,7 +211,7 @@ static int set_key(ver_scene *vs, int ki, const char *value, char *msg, size_t l
         snprintf(msg, len, "%s.%s: more than %d snapshots (%s)", k->section, k->key, VER_MAX_SNAP, k->allowed);
         return 2;
       }
-      const int r = parse_num(t, &v[n]);
+      const int r = ver_scene_key_num(t, &v[n]);
       if (r || v[n] < 0.0) {
         snprintf(msg, len, "%s.%s: '%s' is %s (%s)", k->section, k->key, shown(t, sv, sizeof sv),
                  r == 1 ? "not a number" : r == 2 ? "not a finite number" : "negative", k->allowed);
@@ -249,7 +226,7 @@ static int set_key(ver_scene *vs, int ki, const char *value, char *msg, size_t l
     vs->nsnap = n;
   } else {
     double v;
-    const int r = parse_num(value, &v);
+    const int r = ver_scene_key_num(value, &v);
     if (r) {
       snprintf(msg, len, "%s.%s: '%s' is %s (%s)", k->section, k->key, shown(value, sv, sizeof sv),
                r == 1 ? "not a number" : "not a finite number", k->allowed);
@@ -260,7 +237,7 @@ static int set_key(ver_scene *vs, int ki, const char *value, char *msg, size_t l
                k->allowed);
       return 2;
     }
-    if (!in_range(k, v)) {
+    if (!ver_scene_key_in_range(k, v)) {
       snprintf(msg, len, "%s.%s: %s is out of range (%s)", k->section, k->key, shown(value, sv, sizeof sv),
                k->allowed);
       return 2;
@@ -312,7 +289,7 @@ static int check_line(parse_ctx *c, const char *s, size_t n)
       return fail(c, "[%s]: text after the section header ('%s')", shown(p + 1, sv, sizeof sv),
                   shown(rest, sr, sizeof sr));
     }
-    const int si = section_index(p + 1);
+    const int si = ver_scene_key_section(p + 1);
     if (si < 0) {
       char all[256];
       list_names(NULL, all, sizeof all);
@@ -375,7 +352,7 @@ static int handler(void *user, const char *section, const char *name, const char
     return 0;
   if (!section[0])
     return !fail(c, "%s: a key before any [section] header", shown(name, sv, sizeof sv));
-  const int ki = find_key(section, name);
+  const int ki = ver_scene_key_find(section, name);
   if (ki < 0) {
     char all[256];
     list_names(section, all, sizeof all);
@@ -404,13 +381,13 @@ static void scene_defaults(ver_scene *vs, const char *path)
   if (dot && !strcmp(dot, ".ini"))
     *dot = '\0';
   char *base = (char *)vs;
-  for (int i = 0; i < NKEYS; i++) {
-    if (keys[i].required || keys[i].type == K_LIST || !strcmp(keys[i].section, "output"))
+  for (int i = 0; i < ver_scene_nkeys; i++) {
+    if (ver_scene_keys[i].required || ver_scene_keys[i].type == K_LIST || !strcmp(ver_scene_keys[i].section, "output"))
       continue;
-    if (keys[i].type == K_DBL)
-      *(double *)(base + keys[i].off) = keys[i].def;
+    if (ver_scene_keys[i].type == K_DBL)
+      *(double *)(base + ver_scene_keys[i].off) = ver_scene_keys[i].def;
     else
-      *(int *)(base + keys[i].off) = (int)keys[i].def;
+      *(int *)(base + ver_scene_keys[i].off) = (int)ver_scene_keys[i].def;
   }
   vs->interval = -1;
 }
@@ -504,16 +481,16 @@ int ver_scene_set(ver_scene *vs, const char *assignment, char *err, size_t errle
   char *key = dot + 1;
   for (char *e = eq; e > key && isspace((unsigned char)e[-1]);)
     *--e = '\0';
-  const int ki = find_key(buf, key);
+  const int ki = ver_scene_key_find(buf, key);
   if (ki < 0) {
     char all[256];
-    if (section_index(buf) >= 0)
+    if (ver_scene_key_section(buf) >= 0)
       list_names(buf, all, sizeof all);
     else
       list_names(NULL, all, sizeof all);
     snprintf(err, errlen, "%s: command line: %s: unknown key (allowed%s%s%s: %s)", vs->path,
-             shown(assignment, sv, sizeof sv), section_index(buf) >= 0 ? " in [" : " sections",
-             section_index(buf) >= 0 ? buf : "", section_index(buf) >= 0 ? "]" : "", all);
+             shown(assignment, sv, sizeof sv), ver_scene_key_section(buf) >= 0 ? " in [" : " sections",
+             ver_scene_key_section(buf) >= 0 ? buf : "", ver_scene_key_section(buf) >= 0 ? "]" : "", all);
     return 2;
   }
   if (set_key(vs, ki, eq + 1, msg, sizeof msg)) {
@@ -530,133 +507,7 @@ int ver_scene_set(ver_scene *vs, const char *assignment, char *err, size_t errle
   const char *val = eq + 1;
   while (*val == ' ' || *val == '\t')
     val++;
-  snprintf(vs->over[vs->nover++], sizeof vs->over[0], "%s.%s=%s", keys[ki].section, keys[ki].key, val);
-  return 0;
-}
-
-/* "file:line" of key ki: its line, else its section's header, else the file's end. */
-static const char *key_at(const ver_scene *vs, int ki, char *buf, size_t len)
-{
-  int line = vs->line[ki];
-  if (line < 0) {
-    snprintf(buf, len, "%s: command line", vs->path);
-    return buf;
-  }
-  if (!line)
-    line = vs->sect_line[section_index(keys[ki].section)];
-  if (!line)
-    line = vs->nlines > 0 ? vs->nlines : 1;
-  snprintf(buf, len, "%s:%d", vs->path, line);
-  return buf;
-}
-
-static int kidx(const char *section, const char *key)
-{
-  const int i = find_key(section, key);
-  assert(i >= 0);
-  return i;
-}
-
-int ver_scene_validate(ver_scene *vs, char *err, size_t errlen)
-{
-  mpm_scene *sc = &vs->sc;
-  char at[600];
-  for (int i = 0; i < NKEYS; i++) {
-    const int need = keys[i].required == 1 || (keys[i].required == 2 && sc->model > 0);
-    if (need && !vs->seen[i]) {
-      const int si = section_index(keys[i].section);
-      snprintf(err, errlen, "%s: %s.%s: missing%s%s%s (%s)", key_at(vs, i, at, sizeof at), keys[i].section,
-               keys[i].key, vs->sect_line[si] ? "" : ", and there is no [", vs->sect_line[si] ? "" : keys[i].section,
-               vs->sect_line[si] ? "" : "] section", keys[i].allowed);
-      return 2;
-    }
-  }
-  if (!vs->seen[kidx("decohesion", "s0")])
-    sc->s0 = sc->snf;
-  if (!vs->seen[kidx("imperfection", "x")])
-    sc->imp_x = 0.5 * sc->L;
-  if (!vs->seen[kidx("imperfection", "y")])
-    sc->imp_y = 0.5 * sc->H;
-  if (vs->interval <= 0)
-    vs->interval = 0.0005;
-  /* Sizes first: the checks after them round L / h and H / h to integers. */
-  const int hi = kidx("grid", "h");
-  key_at(vs, hi, at, sizeof at);
-  const double nx = (sc->L + 2.0 * sc->margin) / sc->h + 4.0, ny = (sc->H + 2.0 * sc->margin) / sc->h + 4.0;
-  if (!(nx * ny <= MAX_NODES)) {
-    snprintf(err, errlen, "%s: grid.h: %g gives a grid of %.3g x %.3g nodes for bar.L, bar.H and grid.margin "
-             "(allowed: at most %.0e nodes)", at, sc->h, nx, ny, MAX_NODES);
-    return 2;
-  }
-  /* The grid also spans the grip's travel, to the left of the bar. */
-  const double nt = sc->end_delta / sc->h;
-  if (!((nx + nt) * ny <= MAX_NODES)) {
-    snprintf(err, errlen, "%s: run.end_delta: %g is %.3g cells of grip travel at grid.h = %g, a grid of %.3g x %.3g "
-             "nodes (allowed: at most %.0e nodes)", key_at(vs, kidx("run", "end_delta"), at, sizeof at),
-             sc->end_delta, nt, sc->h, nx + nt, ny, MAX_NODES);
-    return 2;
-  }
-  /* h divides L and H (as the kernel rounds it), ppc is a square. */
-  for (int d = 0; d < 2; d++) {
-    const double len = d ? sc->H : sc->L, r = len / sc->h, n = round(r);
-    if (!(n >= 1 && fabs(r - n) < 1e-9 * r)) {
-      snprintf(err, errlen, "%s: grid.h: %g does not divide bar.%s = %g (allowed: h = %s / n for a whole n)", at,
-               sc->h, d ? "H" : "L", len, d ? "H" : "L");
-      return 2;
-    }
-  }
-  const int n1 = (int)lround(sqrt((double)sc->ppc));
-  if (n1 * n1 != sc->ppc) {
-    snprintf(err, errlen, "%s: grid.ppc: %d is not a perfect square (allowed: 1, 4, 9, 16, ...)",
-             key_at(vs, kidx("grid", "ppc"), at, sizeof at), sc->ppc);
-    return 2;
-  }
-  const double np = round(sc->L / sc->h) * round(sc->H / sc->h) * sc->ppc;
-  if (np > MAX_PARTICLES) {
-    snprintf(err, errlen, "%s: grid.h: %g with grid.ppc = %d gives %.3g particles (allowed: at most %.0e)",
-             key_at(vs, hi, at, sizeof at), sc->h, sc->ppc, np, MAX_PARTICLES);
-    return 2;
-  }
-  /* The imperfection is at the particle nearest (x, y): a point of the bar. */
-  if (!(sc->imp_x >= 0 && sc->imp_x <= sc->L) || !(sc->imp_y >= 0 && sc->imp_y <= sc->H)) {
-    const int x = !(sc->imp_x >= 0 && sc->imp_x <= sc->L);
-    snprintf(err, errlen, "%s: imperfection.%s: %g is outside the bar (allowed: 0 <= %s <= bar.%s = %g)",
-             key_at(vs, kidx("imperfection", x ? "x" : "y"), at, sizeof at), x ? "x" : "y", x ? sc->imp_x : sc->imp_y,
-             x ? "x" : "y", x ? "L" : "H", x ? sc->L : sc->H);
-    return 2;
-  }
-  const double dtc = mpm_scene_dt_crit(sc);
-  if (!(sc->dt < dtc) && !vs->allow_unstable) {
-    snprintf(err, errlen, "%s: time.dt: %g is at or above the CFL bound h / (c sqrt 2) = %.4g (allowed: dt < %.4g, or --allow-unstable)",
-             key_at(vs, kidx("time", "dt"), at, sizeof at), sc->dt, dtc, dtc);
-    return 2;
-  }
-  const double vdt = sc->speed * sc->dt;
-  if (!(sc->end_delta / vdt <= MAX_STEPS)) {
-    snprintf(err, errlen, "%s: run.end_delta: %g at loading.speed = %g and time.dt = %g takes %.3g time steps "
-             "(allowed: at most %.0e)", key_at(vs, kidx("run", "end_delta"), at, sizeof at), sc->end_delta,
-             sc->speed, sc->dt, sc->end_delta / vdt, MAX_STEPS);
-    return 2;
-  }
-  /* A row every max(interval, one step): the rows are held in memory until the end. */
-  const int ii = kidx("output", "interval");
-  const double rows = sc->end_delta / fmax(vs->interval, vdt);
-  if (!(rows <= MAX_ROWS)) {
-    snprintf(err, errlen, "%s: output.interval: %g gives %.3g rows of load.csv to run.end_delta = %g "
-             "(allowed: at most %.0e rows)", key_at(vs, ii, at, sizeof at), vs->interval, rows, sc->end_delta, MAX_ROWS);
-    return 2;
-  }
-  if (!(vs->interval / vdt <= MAX_STEPS)) {
-    snprintf(err, errlen, "%s: output.interval: %g is %.3g time steps (allowed: at most %.0e)",
-             key_at(vs, ii, at, sizeof at), vs->interval, vs->interval / vdt, MAX_STEPS);
-    return 2;
-  }
-  /* The kernel's own check: every rule it has is above, so this is a backstop. */
-  char e2[256];
-  if (mpm_scene_check(sc, e2, sizeof e2) != MPM_OK) {
-    snprintf(err, errlen, "%s:%d: %s", vs->path, vs->nlines > 0 ? vs->nlines : 1, e2);
-    return 2;
-  }
+  snprintf(vs->over[vs->nover++], sizeof vs->over[0], "%s.%s=%s", ver_scene_keys[ki].section, ver_scene_keys[ki].key, val);
   return 0;
 }
 
@@ -666,148 +517,3 @@ int ver_scene_load(const char *path, ver_scene *vs, char *err, size_t errlen)
   return r ? r : ver_scene_validate(vs, err, errlen);
 }
 
-void ver_scene_base_id(const ver_scene *vs, char *buf, size_t len)
-{
-  snprintf(buf, len, "%s-h%g-ppc%d", vs->name, vs->sc.h, vs->sc.ppc);
-}
-
-void ver_scene_fmt_num(double v, char *buf, size_t len)
-{
-  for (int prec = 1; prec <= 17; prec++) {
-    snprintf(buf, len, "%.*g", prec, v);
-    if (strtod(buf, NULL) == v)
-      return;
-  }
-}
-
-void ver_scene_case_id(const ver_scene *vs, char *buf, size_t len)
-{
-  ver_scene_base_id(vs, buf, len);
-  size_t n = strlen(buf);
-  for (int i = 0; i < vs->nover; i++) {
-    const char *o = vs->over[i], *eq = strchr(o, '=');
-    const size_t klen = (size_t)(eq - o);
-    int later = 0; /* a later override of the same key wins */
-    for (int j = i + 1; j < vs->nover && !later; j++)
-      later = !strncmp(vs->over[j], o, klen + 1);
-    if (later || !strncmp(o, "grid.h=", 7) || !strncmp(o, "grid.ppc=", 9))
-      continue;
-    if (!strncmp(o, "time.dt=", 8) && vs->file_h > 0 &&
-        fabs(vs->sc.dt - vs->file_dt * vs->sc.h / vs->file_h) <= 1e-12 * vs->sc.dt)
-      continue; /* the dt --h scales to: no choice of the user's */
-    char val[64];
-    double v;
-    if (parse_num(eq + 1, &v) == 0)
-      ver_scene_fmt_num(v, val, sizeof val);
-    else
-      snprintf(val, sizeof val, "%s", eq + 1);
-    for (char *c = val; *c; c++)
-      if (*c == '/' || *c == ' ' || *c == ',')
-        *c = '_'; /* a folder name */
-    if (n < len)
-      n += (size_t)snprintf(buf + n, len - n, "-%.*s=%s", (int)klen, o, val);
-  }
-}
-
-static const char *enum_word(ktype t, int v)
-{
-  switch (t) {
-  case K_LE: return v == MPM_LE_PARTICLE ? "particle" : v == MPM_LE_STAIRCASE ? "staircase" : "cell";
-  case K_SCHEME: return v == MPM_SCHEME_MUSL ? "musl" : "usl";
-  case K_MOTION: return v == MPM_GRID_STRETCH ? "stretch" : "fixed";
-  case K_SHAPE: return v == MPM_SHAPE_GIMP ? "gimp" : "linear";
-  case K_FIELDS: return v == MPM_FIELDS_TWO ? "two" : "one";
-  default: return "";
-  }
-}
-
-static int is_enum(ktype t)
-{
-  return t == K_LE || t == K_SCHEME || t == K_MOTION || t == K_SHAPE || t == K_FIELDS;
-}
-
-int ver_scene_write_ini(const ver_scene *vs, FILE *f)
-{
-  const char *base = (const char *)vs;
-  char id[512];
-  ver_scene_case_id(vs, id, sizeof id);
-  fprintf(f, "; delam scene.ini schema %d, written by delam %s\n", VER_SCHEMA_SCENE, ver_build_version());
-  fprintf(f, "; effective scene of case %s: every key as the run used it\n; from %s", id, vs->path);
-  for (int i = 0; i < vs->nover; i++)
-    fprintf(f, "%s%s", i ? ", " : " with ", vs->over[i]);
-  fprintf(f, "\n");
-  char num[40];
-  for (int si = 0; si < NKEYS; si++) {
-    if (!first_of_section(si))
-      continue;
-    fprintf(f, "\n[%s]\n", keys[si].section);
-  for (int i = si; i < NKEYS; i++) {
-    const keydef *k = &keys[i];
-    if (strcmp(k->section, keys[si].section))
-      continue;
-    if (k->type == K_LIST) {
-      if (vs->nsnap == 0)
-        continue;
-      fprintf(f, "%s = ", k->key);
-      for (int j = 0; j < vs->nsnap; j++) {
-        ver_scene_fmt_num(vs->snap[j], num, sizeof num);
-        fprintf(f, "%s%s", j ? ", " : "", num);
-      }
-      fprintf(f, "\n");
-      continue;
-    }
-    if (is_enum(k->type)) {
-      int v;
-      memcpy(&v, base + k->off, sizeof v);
-      fprintf(f, "%s = %s\n", k->key, enum_word(k->type, v));
-      continue;
-    }
-    double v;
-    if (!strcmp(k->section, "output"))
-      v = vs->interval;
-    else if (k->type == K_INT) {
-      int iv;
-      memcpy(&iv, base + k->off, sizeof iv);
-      v = iv;
-    } else
-      memcpy(&v, base + k->off, sizeof v);
-    /* a key the scene does not use (decohesion keys of model 0) stays out */
-    if (!vs->seen[i] && (k->required || !in_range(k, v)))
-      continue;
-    ver_scene_fmt_num(v, num, sizeof num);
-    fprintf(f, "%s = %s\n", k->key, num);
-  }
-  }
-  return ferror(f) ? -1 : 0;
-}
-
-static const char *type_name(ktype t)
-{
-  switch (t) {
-  case K_DBL: return "number";
-  case K_INT: return "integer";
-  case K_LIST: return "list of numbers";
-  default: return "word";
-  }
-}
-
-void ver_scene_keys_markdown(FILE *f)
-{
-  fprintf(f, "| section | key | type | required | allowed | default |\n|---|---|---|---|---|---|\n");
-  for (int i = 0; i < NKEYS; i++) {
-    const keydef *k = &keys[i];
-    char def[64];
-    if (k->required)
-      snprintf(def, sizeof def, "-");
-    else if (is_enum(k->type))
-      snprintf(def, sizeof def, "%s", enum_word(k->type, (int)k->def));
-    else if (k->type == K_LIST)
-      snprintf(def, sizeof def, "none");
-    else if (k->def < 0)
-      snprintf(def, sizeof def, "derived");
-    else
-      snprintf(def, sizeof def, "%g", k->def);
-    fprintf(f, "| %s | %s | %s | %s | %s | %s |\n", k->section, k->key, type_name(k->type),
-            k->required == 1 ? "yes" : k->required == 2 ? "when decohesion.model > 0" : "no", k->allowed, def);
-  }
-}

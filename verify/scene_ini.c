@@ -1,0 +1,159 @@
+/*
+ * scene_ini.c - what a scene says about itself (scene.h): the case id, numbers as the
+ * scene files write them, the effective scene as an INI file that reruns bit for bit,
+ * and the key table as Markdown (docs/scene-keys.md).
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "build_info.h"
+#include "scene.h"
+#include "scene_keys.h"
+
+void ver_scene_base_id(const ver_scene *vs, char *buf, size_t len)
+{
+  snprintf(buf, len, "%s-h%g-ppc%d", vs->name, vs->sc.h, vs->sc.ppc);
+}
+
+void ver_scene_fmt_num(double v, char *buf, size_t len)
+{
+  for (int prec = 1; prec <= 17; prec++) {
+    snprintf(buf, len, "%.*g", prec, v);
+    if (strtod(buf, NULL) == v)
+      return;
+  }
+}
+
+void ver_scene_case_id(const ver_scene *vs, char *buf, size_t len)
+{
+  ver_scene_base_id(vs, buf, len);
+  size_t n = strlen(buf);
+  for (int i = 0; i < vs->nover; i++) {
+    const char *o = vs->over[i], *eq = strchr(o, '=');
+    const size_t klen = (size_t)(eq - o);
+    int later = 0; /* a later override of the same key wins */
+    for (int j = i + 1; j < vs->nover && !later; j++)
+      later = !strncmp(vs->over[j], o, klen + 1);
+    if (later || !strncmp(o, "grid.h=", 7) || !strncmp(o, "grid.ppc=", 9))
+      continue;
+    if (!strncmp(o, "time.dt=", 8) && vs->file_h > 0 &&
+        fabs(vs->sc.dt - vs->file_dt * vs->sc.h / vs->file_h) <= 1e-12 * vs->sc.dt)
+      continue; /* the dt --h scales to: no choice of the user's */
+    char val[64];
+    double v;
+    if (ver_scene_key_num(eq + 1, &v) == 0)
+      ver_scene_fmt_num(v, val, sizeof val);
+    else
+      snprintf(val, sizeof val, "%s", eq + 1);
+    for (char *c = val; *c; c++)
+      if (*c == '/' || *c == ' ' || *c == ',')
+        *c = '_'; /* a folder name */
+    if (n < len)
+      n += (size_t)snprintf(buf + n, len - n, "-%.*s=%s", (int)klen, o, val);
+  }
+}
+
+static const char *enum_word(ktype t, int v)
+{
+  switch (t) {
+  case K_LE: return v == MPM_LE_PARTICLE ? "particle" : v == MPM_LE_STAIRCASE ? "staircase" : "cell";
+  case K_SCHEME: return v == MPM_SCHEME_MUSL ? "musl" : "usl";
+  case K_MOTION: return v == MPM_GRID_STRETCH ? "stretch" : "fixed";
+  case K_SHAPE: return v == MPM_SHAPE_GIMP ? "gimp" : "linear";
+  case K_FIELDS: return v == MPM_FIELDS_TWO ? "two" : "one";
+  default: return "";
+  }
+}
+
+static int is_enum(ktype t)
+{
+  return t == K_LE || t == K_SCHEME || t == K_MOTION || t == K_SHAPE || t == K_FIELDS;
+}
+
+int ver_scene_write_ini(const ver_scene *vs, FILE *f)
+{
+  const char *base = (const char *)vs;
+  char id[512];
+  ver_scene_case_id(vs, id, sizeof id);
+  fprintf(f, "; delam scene.ini schema %d, written by delam %s\n", VER_SCHEMA_SCENE, ver_build_version());
+  fprintf(f, "; effective scene of case %s: every key as the run used it\n; from %s", id, vs->path);
+  for (int i = 0; i < vs->nover; i++)
+    fprintf(f, "%s%s", i ? ", " : " with ", vs->over[i]);
+  fprintf(f, "\n");
+  char num[40];
+  for (int si = 0; si < ver_scene_nkeys; si++) {
+    if (!ver_scene_key_first(si))
+      continue;
+    fprintf(f, "\n[%s]\n", ver_scene_keys[si].section);
+  for (int i = si; i < ver_scene_nkeys; i++) {
+    const keydef *k = &ver_scene_keys[i];
+    if (strcmp(k->section, ver_scene_keys[si].section))
+      continue;
+    if (k->type == K_LIST) {
+      if (vs->nsnap == 0)
+        continue;
+      fprintf(f, "%s = ", k->key);
+      for (int j = 0; j < vs->nsnap; j++) {
+        ver_scene_fmt_num(vs->snap[j], num, sizeof num);
+        fprintf(f, "%s%s", j ? ", " : "", num);
+      }
+      fprintf(f, "\n");
+      continue;
+    }
+    if (is_enum(k->type)) {
+      int v;
+      memcpy(&v, base + k->off, sizeof v);
+      fprintf(f, "%s = %s\n", k->key, enum_word(k->type, v));
+      continue;
+    }
+    double v;
+    if (!strcmp(k->section, "output"))
+      v = vs->interval;
+    else if (k->type == K_INT) {
+      int iv;
+      memcpy(&iv, base + k->off, sizeof iv);
+      v = iv;
+    } else
+      memcpy(&v, base + k->off, sizeof v);
+    /* a key the scene does not use (decohesion keys of model 0) stays out */
+    if (!vs->seen[i] && (k->required || !ver_scene_key_in_range(k, v)))
+      continue;
+    ver_scene_fmt_num(v, num, sizeof num);
+    fprintf(f, "%s = %s\n", k->key, num);
+  }
+  }
+  return ferror(f) ? -1 : 0;
+}
+
+static const char *type_name(ktype t)
+{
+  switch (t) {
+  case K_DBL: return "number";
+  case K_INT: return "integer";
+  case K_LIST: return "list of numbers";
+  default: return "word";
+  }
+}
+
+void ver_scene_keys_markdown(FILE *f)
+{
+  fprintf(f, "| section | key | type | required | allowed | default |\n|---|---|---|---|---|---|\n");
+  for (int i = 0; i < ver_scene_nkeys; i++) {
+    const keydef *k = &ver_scene_keys[i];
+    char def[64];
+    if (k->required)
+      snprintf(def, sizeof def, "-");
+    else if (is_enum(k->type))
+      snprintf(def, sizeof def, "%s", enum_word(k->type, (int)k->def));
+    else if (k->type == K_LIST)
+      snprintf(def, sizeof def, "none");
+    else if (k->def < 0)
+      snprintf(def, sizeof def, "derived");
+    else
+      snprintf(def, sizeof def, "%g", k->def);
+    fprintf(f, "| %s | %s | %s | %s | %s | %s |\n", k->section, k->key, type_name(k->type),
+            k->required == 1 ? "yes" : k->required == 2 ? "when decohesion.model > 0" : "no", k->allowed, def);
+  }
+}
