@@ -35,7 +35,6 @@
 #include "sweep.h"
 
 #define PROG "delam check"
-#define CHECK_SCHEMA 1
 #define MAXCOL 16
 
 static void usage(FILE *f)
@@ -296,7 +295,7 @@ static int write_json(const char *out, const ver_case *c, const char *dir, const
                       const char *pfile, int rc)
 {
   cJSON *o = cJSON_CreateObject();
-  cJSON_AddNumberToObject(o, "schema", CHECK_SCHEMA);
+  cJSON_AddNumberToObject(o, "schema", VER_SCHEMA_CHECK);
   cJSON_AddStringToObject(o, "dir", dir);
   cJSON_AddStringToObject(o, "scene", c->vs.name);
   cJSON_AddStringToObject(o, "scene_file", scene_path);

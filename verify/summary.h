@@ -39,6 +39,8 @@ typedef struct {
 #define VER_SCHEMA_LOAD 1
 #define VER_SCHEMA_ENERGY 1
 #define VER_SCHEMA_PARTICLES 1
+#define VER_SCHEMA_VERIFY 1     /* verify.json and verify.csv                       */
+#define VER_SCHEMA_CHECK 1      /* check.json                                        */
 /* scene.ini: VER_SCHEMA_SCENE in scene.h */
 
 /* What summary.json says: the run's description and its ver_summary. */

@@ -11,6 +11,7 @@
 #include <cjson/cJSON.h>
 
 #include "io.h"
+#include "summary.h"
 #include "sweep.h"
 
 static cJSON *num_or_null(double v)
@@ -50,6 +51,7 @@ int ver_sweep_write_json(const ver_verify_opts *o, const ver_case *cs, int n, co
                       int rc)
 {
   cJSON *root = cJSON_CreateObject();
+  cJSON_AddNumberToObject(root, "schema", VER_SCHEMA_VERIFY);
   cJSON_AddStringToObject(root, "mode", o->merge_found ? "found" : o->full ? "full" : "quick");
   cJSON_AddStringToObject(root, "dir", o->outdir);
   cJSON_AddBoolToObject(root, "merged", o->merge);
@@ -153,9 +155,11 @@ int ver_sweep_write_csv(const ver_verify_opts *o, const ver_case *cs, int n)
   if (!buf)
     return -1;
   len += (size_t)snprintf(buf + len, cap - len,
+                          "# delam verify.csv schema %d\n"
                           "case,scene,variant,h,ppc,verdict,complete,exit_status,wall_s,peak_P,peak_err,"
                           "k_elastic_err,k_soft,k_soft_err,delta_sep,delta_sep_err,D_final,D_err,D_diffuse,W_ext_final,"
-                          "W_err,energy_residual,band_width,band_extent,crack_angle,curve_l2,n_fail,n_known,error\n");
+                          "W_err,energy_residual,band_width,band_extent,crack_angle,curve_l2,n_fail,n_known,error\n",
+                          VER_SCHEMA_VERIFY);
   for (int i = 0; i < n; i++) {
     const ver_case *c = &cs[i];
     int nf = 0, nk = 0;
