@@ -51,7 +51,7 @@ const keydef ver_scene_keys[] = {
   {"time", "dt", K_DBL, OFF(dt), 1, 0, 0, LO_OPEN, 0, "> 0 and below the CFL bound h / (c sqrt 2)"},
   {"time", "scheme", K_SCHEME, OFF(scheme), 0, 0, 0, 0, MPM_SCHEME_USL, "usl (the paper) or musl"},
   {"grid", "motion", K_MOTION, OFF(grid_motion), 0, 0, 0, 0, MPM_GRID_FIXED, "fixed (the paper) or stretch (follows the bar's mean stretch)"},
-  {"grid", "fields", K_FIELDS, OFF(fields), 0, 0, 0, 0, MPM_FIELDS_ONE, "one (the paper) or two (one per side of a separated band; needs shape = gimp)"},
+  {"grid", "fields", K_FIELDS, OFF(fields), 0, 0, 0, 0, MPM_FIELDS_ONE, "one (the paper) or two (one per side of a band once it has cut the bar)"},
   {"grid", "shape", K_SHAPE, OFF(shape), 0, 0, 0, 0, MPM_SHAPE_LINEAR, "linear (the paper's bilinear hats) or gimp (uGIMP)"},
   {"loading", "speed", K_DBL, OFF(speed), 1, 0, 0, LO_OPEN, 0, "> 0"},
   {"run", "end_delta", K_DBL, OFF(end_delta), 1, 0, 0, LO_OPEN, 0, "> 0"},
