@@ -35,8 +35,24 @@ enum { MPM_LE_CELL = 0, MPM_LE_PARTICLE = 1, MPM_LE_STAIRCASE = 2 };
 enum { MPM_DCOH_NONE = 0, MPM_DCOH_MODEL1 = 1, MPM_DCOH_MODEL2 = 2 };
 /* USL: strain from v^L (the paper, eq. 7).  MUSL: strain from the nodal velocity
  * re-projected from the updated particle velocities, which keeps nearly empty nodes
- * (tiny m_i, finite f_i) from injecting huge strain increments. */
-enum { MPM_SCHEME_USL = 0, MPM_SCHEME_MUSL = 1 };
+ * (tiny m_i, finite f_i) from injecting huge strain increments.  USF: the stress is
+ * updated first, from the projected nodal velocity v_i, and the nodal forces come from
+ * the new stress (Bardenhagen 2002).  USAVG: half the strain increment as USF before
+ * the forces, half as USL after them (Nairn 2003).  mpm_step.c has the energy of each. */
+enum { MPM_SCHEME_USL = 0, MPM_SCHEME_MUSL = 1, MPM_SCHEME_USF = 2, MPM_SCHEME_USAVG = 3 };
+/* How a held node enters the FLIP update (eq. 6), mpm_step.c grid_update.
+ * LAGRANGIAN: the constraint is set on v^L only, so the increment at a held node is
+ *   v_bc - v_i, with v_i the projected velocity: it pulls the particles there toward the
+ *   held velocity every step (a damper: mpm_ledger.L_bc).
+ * BOTH: set on v_i and v^L, increment 0, but the reaction still the one of the jump
+ *   from the projected v_i: the particles do not receive the impulse the load reports.
+ * CONSISTENT: the increment at a held node is the change of the held velocity (0 at a
+ *   constant grip speed) and the reaction is what the particles then receive,
+ *   R = m dv_bc / dt - f_i: no energy leaves through the constraint but its work. */
+enum { MPM_BC_LAGRANGIAN = 0, MPM_BC_BOTH = 1, MPM_BC_CONSISTENT = 2 };
+/* The grip: RIGID is the paper's rigid head (MPM_MAT_HEAD); NONE grips the node column
+ * x = 0 alone (no head particles: the free-vibration scene). */
+enum { MPM_HEAD_RIGID = 0, MPM_HEAD_NONE = 1 };
 /* The background grid is discarded every step (sec. 2), so it may be laid anywhere.
  * STRETCH lays it along the bar's mean stretch, x_i = L + (X_i - L)(1 + delta / L): the
  * gripped and fixed node columns stay on the bar's ends and no particle crosses them
@@ -77,6 +93,11 @@ typedef struct {
   int shape;             /* MPM_SHAPE_LINEAR (default, the paper) or MPM_SHAPE_GIMP    */
   int fields;            /* MPM_FIELDS_ONE (the paper) or MPM_FIELDS_TWO: one velocity field
                             per side of a separated band (mpm_fields.c)              */
+  int bc;                /* MPM_BC_* (how a held node enters eq. 6)                   */
+  int head;              /* MPM_HEAD_RIGID (default) or MPM_HEAD_NONE                 */
+  int vib_mode;          /* > 0: start from axial mode m, vx += vib_amp sin(m pi X / L) */
+  double vib_amp;        /* its velocity amplitude                                    */
+  double vib_periods;    /* the run's length in periods (the driver sets end_delta from it) */
   double dt;             /* time step                                                  */
   double speed;          /* grip speed (pulls the left end in -x)                      */
   double end_delta;      /* the run never goes past this end displacement              */
@@ -96,6 +117,7 @@ typedef struct {
   double snf, stf;       /* failure tractions (eq. 23)                                 */
   double U0, s0, q;      /* eq. 19-20                                                  */
   double ubar0;          /* U0 / s0                                                    */
+  double irho;           /* 1 / rho (the ledger's V = m / rho)                         */
   double Le;             /* effective length V_e / A_d (eq. 41), fixed for the run     */
   double sep_threshold;  /* eqs. 56-58 take over when lambda would pass this           */
   /* derived (mpm_material_derive), so that the hot paths multiply instead of divide */
@@ -216,6 +238,13 @@ typedef struct {
   double SE;     /* elastic strain energy                                             */
   double W_coh;  /* work of the traction on the decohesion surfaces, int s . d up dA   */
   double D;      /* dissipation, U0 min(lambda, 1) per unit failure area (eq. 10)      */
+  /* The ledger (mpm_step.c, "Energy"): what the step itself removes, accumulated, so
+   * that W_ext + KE(0) = KE + SE + W_coh + L_bc + L_flip + L_scheme + W_head up to the
+   * constitutive update's own integration error. */
+  double L_bc;     /* removed at held nodes by the constraint's velocity jump          */
+  double L_flip;   /* lost interpolating the nodal velocity increments to the particles */
+  double L_scheme; /* the time integration's own loss (negative: gain)                */
+  double W_head;   /* taken by the rigid head (its KE change and its projection)      */
 } mpm_energy;
 
 /* ---- threads: the count a step uses (mpm_threads.c) ---- */
@@ -243,6 +272,19 @@ typedef struct {
 
 /* Sets up t for `requested` threads (<= 0: automatic, up to OpenMP's default). */
 void mpm_threads_init(mpm_threads *t, int requested, size_t particles);
+/* The ledger's sums (mpm_step.c), accumulated step by step in a fixed order. */
+typedef struct {
+  double L_bc, L_flip, L_scheme, W_head;
+  double KE_head0;         /* the head's kinetic energy at the start                   */
+  double head_reset;       /* kinetic energy the head's rigid projection removed so far */
+  /* this step's held-node and serial sums (mpm_step.c; reset every step) */
+  double s_A, s_K, s_B, s_Bheld, s_Bstart, s_H, s_Wtrue, s_Wbook;
+} mpm_ledger;
+
+/* Per-strip partial sums of one step (fixed partition: the same sums for any thread
+ * count).  Node terms: A = sum m v . d, K = sum m |d|^2 / 2, B = -dt sum f . u;
+ * particle terms: Kp = sum m |dv_p|^2 / 2, Q = sum V dsigma : deps / 2. */
+enum { MPM_LED_A = 0, MPM_LED_K, MPM_LED_B, MPM_LED_KP, MPM_LED_Q, MPM_LED_N };
 
 /* ---- the simulation ---- */
 /* Particles whose elastic trial left the elastic domain, waiting for the full
@@ -291,6 +333,8 @@ typedef struct {
   long cut_seen;           /* n_separate when the rows were last counted                */
   int nrow;                /* particle rows of the bar                                  */
   uint8_t *rowsep;         /* scratch: the rows holding a separated particle            */
+  mpm_ledger led;          /* the energy ledger                                        */
+  double (*led_part)[MPM_LED_N]; /* per-strip partial sums of the step (nstrip rows)  */
 } mpm_sim;
 
 enum { MPM_T_SORT = 0, MPM_T_P2G, MPM_T_GRID, MPM_T_G2P, MPM_T_CONST };

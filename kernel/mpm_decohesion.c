@@ -96,6 +96,7 @@ void mpm_material_derive(mpm_material *m)
 {
   const int on = m->model != MPM_DCOH_NONE;
   const double nx = m->nx, ny = m->ny, tx = m->tx, ty = m->ty;
+  m->irho = 1.0 / m->rho;
   m->isnf = 1.0 / m->snf;
   m->istf = 1.0 / m->stf;
   m->isnf2 = m->isnf * m->isnf;

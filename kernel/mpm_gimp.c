@@ -85,8 +85,9 @@ int mpm_gimp_p2g_range(const mpm_grid *gg, const mpm_particles *p, size_t a, siz
   return out;
 }
 
-void mpm_gimp_musl_range(const mpm_grid *gg, mpm_particles *p, size_t a, size_t b, double lcx, double lcy)
+double mpm_gimp_musl_range(const mpm_grid *gg, mpm_particles *p, size_t a, size_t b, double lcx, double lcy)
 {
+  double kp = 0.0; /* the ledger's sum m |dv_p|^2 (mpm_step.c) */
   const mpm_grid geo = *gg, *g = &geo;
   const size_t nny = (size_t)g->nny;
   const double ihx = g->ihx, ihy = g->ihy, ox = g->ox, oy = g->oy;
@@ -112,6 +113,7 @@ void mpm_gimp_musl_range(const mpm_grid *gg, mpm_particles *p, size_t a, size_t 
     else
       mpm_gimp_gather(nd, nny, &sx, &sy, &S, &DX, &DY);
     const double vxn = vx[k] + S[GFX], vyn = vy[k] + S[GFY];
+    kp += p->m[k] * (S[GFX] * S[GFX] + S[GFY] * S[GFY]);
     vx[k] = vxn;
     vy[k] = vyn;
     const mpm_v8 Q = {0.0, 0.0, 0.0, 0.0, 0.0, pm[k] * vxn, pm[k] * vyn, 0.0};
@@ -134,4 +136,5 @@ void mpm_gimp_musl_range(const mpm_grid *gg, mpm_particles *p, size_t a, size_t 
   }
   if (cur != SIZE_MAX)
     stencil_flush(nd, cur, nny, c);
+  return kp;
 }

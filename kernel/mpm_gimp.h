@@ -20,8 +20,9 @@ static inline void mpm_gimp_lc(const mpm_sim *s, double *lcx, double *lcy)
 
 /* eqs. 2, 3 for the particles [a, b); 1 if one of them is outside the grid. */
 int mpm_gimp_p2g_range(const mpm_grid *g, const mpm_particles *p, size_t a, size_t b, double lcx, double lcy);
-/* MUSL: eq. 6 from lanes (fx, fy), the new momentum into lanes (qx, qy). */
-void mpm_gimp_musl_range(const mpm_grid *g, mpm_particles *p, size_t a, size_t b, double lcx, double lcy);
+/* MUSL: eq. 6 from lanes (fx, fy), the new momentum into lanes (qx, qy); returns the
+ * energy ledger's sum m |dv_p|^2 over the range (mpm_step.c). */
+double mpm_gimp_musl_range(const mpm_grid *g, mpm_particles *p, size_t a, size_t b, double lcx, double lcy);
 
 /* ---- two velocity fields (mpm_fields.c) ---- */
 mpm_fields *mpm_fields_alloc(size_t nn, double nx, double ny);

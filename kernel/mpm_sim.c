@@ -71,7 +71,11 @@ mpm_status mpm_scene_check(const mpm_scene *sc, char *err, size_t errlen)
   const int n = (int)lround(sqrt((double)sc->ppc));
   if (sc->ppc < 1 || n * n != sc->ppc) BAD("grid.ppc must be a perfect square (1, 4, 9, ...)");
   if (!(sc->margin >= 0.0)) BAD("grid.margin must be >= 0");
-  if (sc->scheme != MPM_SCHEME_USL && sc->scheme != MPM_SCHEME_MUSL) BAD("time.scheme must be usl or musl");
+  if (sc->scheme < MPM_SCHEME_USL || sc->scheme > MPM_SCHEME_USAVG) BAD("time.scheme must be usl, musl, usf or usavg");
+  if (sc->bc < MPM_BC_LAGRANGIAN || sc->bc > MPM_BC_CONSISTENT) BAD("grid.bc must be lagrangian, both or consistent");
+  if (sc->head != MPM_HEAD_RIGID && sc->head != MPM_HEAD_NONE) BAD("loading.head must be rigid or none");
+  if (sc->vib_mode < 0) BAD("vibration.mode must be >= 0");
+  if (sc->vib_mode > 0 && !isfinite(sc->vib_amp)) BAD("vibration.amplitude must be finite");
   if (sc->grid_motion != MPM_GRID_STRETCH && sc->grid_motion != MPM_GRID_FIXED) BAD("grid.motion must be stretch or fixed");
   if (sc->shape != MPM_SHAPE_LINEAR && sc->shape != MPM_SHAPE_GIMP) BAD("grid.shape must be linear or gimp");
   if (sc->fields != MPM_FIELDS_ONE && sc->fields != MPM_FIELDS_TWO) BAD("grid.fields must be one or two");
@@ -105,6 +109,7 @@ void mpm_sim_free(mpm_sim *s)
   free(s->grip);
   free(s->fixx);
   free(s->rowsep);
+  free(s->led_part);
   free(s);
 }
 
@@ -127,9 +132,10 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
   s->g = mpm_grid_alloc(padl + cx + pad, cy + 2 * pad, -padl * h, -pad * h, h);
   const int n1 = (int)lround(sqrt((double)sc->ppc));
   const size_t nbar = (size_t)cx * (size_t)cy * (size_t)sc->ppc;
-  const size_t nhead = (size_t)MPM_HEAD_CELLS * (size_t)cy * (size_t)sc->ppc;
+  const size_t nhead = sc->head == MPM_HEAD_NONE ? 0 : (size_t)MPM_HEAD_CELLS * (size_t)cy * (size_t)sc->ppc;
   const size_t np = nbar + nhead;
-  const int ngrip = (padl - pad + 1) * (cy + 1);
+  const int grip0 = sc->head == MPM_HEAD_NONE ? padl : pad; /* first gripped node column */
+  const int ngrip = (padl - grip0 + 1) * (cy + 1);
   mpm_threads_init(&s->thr, nthreads, np);
   s->nthreads = s->thr.use;
   s->p = mpm_particles_alloc(np);
@@ -154,7 +160,8 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
     s->count = malloc((ncell + 1) * sizeof(size_t));
     s->scratch = malloc(np * sizeof(double));
     s->scratch8 = malloc(np);
-    ok = s->strip_start && s->key && s->perm && s->count && s->scratch && s->scratch8;
+    s->led_part = calloc((size_t)s->nstrip, sizeof *s->led_part);
+    ok = s->strip_start && s->key && s->perm && s->count && s->scratch && s->scratch8 && s->led_part;
     for (int t = 0; ok && t < s->thr.nmax; t++)
       ok = (s->dws[t] = mpm_dwork_alloc()) != NULL;
     if (ok && sc->fields == MPM_FIELDS_TWO) {
@@ -200,6 +207,8 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
       p->x[k] = p->x0[k] = (i + 0.5) * d;
       p->y[k] = p->y0[k] = (j + 0.5) * d;
       p->vx[k] = -sc->speed * (sc->L - p->x[k]) / sc->L;
+      if (sc->vib_mode > 0) /* free vibration: mode m of the bar held at both ends */
+        p->vx[k] += sc->vib_amp * sin(sc->vib_mode * 3.14159265358979323846 * p->x[k] / sc->L);
       p->m[k] = mp;
       p->V[k] = d * d;
       const double r2 = (p->x[k] - sc->imp_x) * (p->x[k] - sc->imp_x) +
@@ -213,7 +222,7 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
     p->mat[imp] = MPM_MAT_IMP;
   /* The head: the same lattice continued MPM_HEAD_CELLS cells beyond x = 0, moving with
    * the grip. */
-  for (int j = 0; j < cy * n1; j++)
+  for (int j = 0; nhead && j < cy * n1; j++)
     for (int i = -MPM_HEAD_CELLS * n1; i < 0; i++, k++) {
       p->x[k] = p->x0[k] = (i + 0.5) * d;
       p->y[k] = p->y0[k] = (j + 0.5) * d;
@@ -227,7 +236,7 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
    * 0..H); the column x = L is fixed in x, its mid-height node in y as well. */
   const mpm_grid *g = s->g;
   int q = 0;
-  for (int i = pad; i <= padl; i++)
+  for (int i = grip0; i <= padl; i++)
     for (int j = 0; j <= cy; j++)
       s->grip[q++] = (int)mpm_grid_node(g, i, j + pad);
   for (int c = 0; c < nfixcol; c++)
@@ -237,6 +246,8 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
   s->ngrip = ngrip;
   s->nfixx = nfixcol * (cy + 1);
   s->fixy = s->fixx[cy / 2];
+  for (size_t i = nbar; i < np; i++)
+    s->led.KE_head0 += 0.5 * p->m[i] * (p->vx[i] * p->vx[i] + p->vy[i] * p->vy[i]);
   mpm_sim_sort(s);
   *out = s;
   return MPM_OK;
@@ -292,4 +303,8 @@ void mpm_sim_energy(const mpm_sim *s, mpm_energy *e)
   e->SE = se;
   e->W_coh = wc;
   e->D = dd;
+  e->L_bc = s->led.L_bc;
+  e->L_flip = s->led.L_flip;
+  e->L_scheme = s->led.L_scheme;
+  e->W_head = s->led.W_head;
 }

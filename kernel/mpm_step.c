@@ -1,6 +1,7 @@
 /*
  * mpm_step.c - one explicit MPM step, update-stress-last as in the paper
- * (sec. 2, eqs. 2-7), with the boundary conditions and their reactions.
+ * (sec. 2, eqs. 2-7), with the boundary conditions, their reactions and the energy
+ * ledger.
  *
  *   p2g   m_i, (m v)_i, f_i = -sum_p V_p sigma_p . G_ip            eqs. 2, 3
  *   grid  v_i = (m v)_i / m_i,  v^L_i = v_i + dt f_i / m_i; BCs      eq. 4
@@ -15,9 +16,50 @@
  *
  * N and G are taken at the start of the step in every pass (mpm_shape.h).
  *
- * Boundary conditions are applied to v^L only.  Applying them to v_i as well (as
- * MODEL.md sec. 2 reads) would make v^L - v_i = 0 at a gripped node, so the FLIP
- * update (eq. 6) could never bring the particles there to the grip's speed.
+ * USF (time.scheme = usf) takes the strain from the projected v_i first,
+ * de_p = dt sym(sum v_i (x) G_ip), updates the stress, scatters the forces of the new
+ * stress, and then moves the particles with v^L; USAVG takes half the strain increment
+ * as USF before the forces and half as USL after them (Bardenhagen 2002, Nairn 2003).
+ *
+ * Boundary conditions (grid_update, hold; scene key grid.bc).  A held node's v^L is
+ * the held velocity v_bc.  What the FLIP update (eq. 6) adds at it is the choice:
+ *  - lagrangian: d = v_bc - v_i, with v_i the projected velocity.  The projection is an
+ *    average over the node's support, so even a particle field that moves exactly with
+ *    the bar projects a v_i != v_bc next to a held node, and this d pulls those
+ *    particles toward v_bc every step: a damper (the free vibration keeps 76 % of its
+ *    energy at h 8 instead of 92 %);
+ *  - both: d = 0, but the reaction is still the one of the jump from the projected v_i,
+ *    R = m (v_bc - v^L_free) / dt, which the particles never receive: the load and the
+ *    work it books are off by m (v_bc - v_i) (Fig. 6 h 8: a 7 % energy residual);
+ *  - consistent: d = the change of v_bc over the step (0 at a constant grip speed:
+ *    the held node's true acceleration), and the reaction is the impulse the
+ *    particles do receive, R dt = m d - dt f_i.  The particles follow the held node
+ *    through v^L (positions, strain), and the constraint exchanges no energy but its
+ *    work R v_bc dt.
+ *
+ * Energy (the ledger: mpm_ledger, mpm_energy; energy.csv).  With d_i the FLIP
+ * increment at node i and dv_p = sum d_i N_ip the particles', one step changes
+ *   KE_p by  A + Kp,          A = sum m_i v_i . d_i,  Kp = sum m_p |dv_p|^2 / 2,
+ * exactly (sum_p m_p v_p N_ip = m_i v_i), and SE + W_coh by the stress work
+ *   B + Q,   B = -dt sum f_i . u_i,  Q = sum V_p dsigma_p : de_p / 2,
+ * where u_i is the nodal velocity the strain is taken from (B is sum V sigma : de at the
+ * old stress, by linearity of de in u; Q is exact for the elastic part, and the
+ * decohesion update's own error is left over).  With K = sum m_i |d_i|^2 / 2 and the
+ * work W = R v_bc dt booked in W_ext, the step's loss W - dE splits into
+ *   L_flip   = K - Kp >= 0: kinetic energy lost interpolating the increments to the
+ *              particles (Jensen); it includes any node pattern the particles do not
+ *              see (1 ppc: the checkerboard), which MUSL and USF regain in L_scheme;
+ *   L_bc     = -H + (W - W_true): at held nodes, H = sum m (d . (v - v_bc) + |d|^2 / 2)
+ *              (lagrangian: -m |v_bc - v_i|^2 / 2; both and consistent: 0) and, for
+ *              both, the work booked that the particles did not receive;
+ *   L_scheme = W_true - A - K - B - Q + H: the time integration's own loss (USL at a
+ *              free node: m |dv|^2 / 2 - Q; a gain where negative),
+ * and the rigid head takes W_head (its kinetic energy change and what its projection
+ * removes).  Every term is a sum the step forms anyway, over nodes or, in the passes
+ * that already touch each particle, over particles, in a fixed order.  So
+ * W_ext + KE(0) + SE(0) = KE + SE + W_coh + L_bc + L_flip + L_scheme + W_head holds to
+ * rounding and the constitutive update's error; what does not close is the run's
+ * energy residual (summary.json).
  *
  * Threads: the scatters run strip by strip, even strips then odd (mpm_sort.c); the
  * gathers are independent per particle.  Results are bit-for-bit the same for any
@@ -149,8 +191,9 @@ static int p2g_range(const mpm_grid *gg, const mpm_particles *p, size_t a, size_
 
 /* MUSL first half, for the particles [a, b): eq. 6 from v^L - v (lanes fx, fy), and
  * the new momentum m_p v_p N_ip summed into lanes qx, qy.  The pass reads lanes that
- * it never writes, so one pass does both; as it scatters, it runs by colour. */
-static void musl_velocity_range(const mpm_grid *gg, mpm_particles *p, size_t a, size_t b)
+ * it never writes, so one pass does both; as it scatters, it runs by colour.  Returns
+ * the ledger's sum m |dv_p|^2 over the range. */
+static double musl_velocity_range(const mpm_grid *gg, mpm_particles *p, size_t a, size_t b)
 {
   const mpm_grid geo = *gg, *g = &geo;
   const size_t nny = (size_t)g->nny;
@@ -159,6 +202,7 @@ static void musl_velocity_range(const mpm_grid *gg, mpm_particles *p, size_t a, 
   double *restrict vx = p->vx, *restrict vy = p->vy;
   const mpm_fields *fld = g->fld;
   cell_sums cs = {.cur = SIZE_MAX};
+  double kp = 0.0;
   for (size_t k = a; k < b; k++) {
     mpm_shape sh;
     mpm_shape_inside(g, x[k], y[k], &sh); /* inside: checked by the first scatter */
@@ -180,6 +224,7 @@ static void musl_velocity_range(const mpm_grid *gg, mpm_particles *p, size_t a, 
     const mpm_v4 b0 = a00 + rx * (a10 - a00), b1 = a01 + rx * (a11 - a01);
     const mpm_v4 S = b0 + ry * (b1 - b0);
     const double vxn = vx[k] + S[GFX], vyn = vy[k] + S[GFY];
+    kp += pm[k] * (S[GFX] * S[GFX] + S[GFY] * S[GFY]);
     vx[k] = vxn;
     vy[k] = vyn;
     const mpm_v8 Q = {0.0, 0.0, 0.0, 0.0, 0.0, pm[k] * vxn, pm[k] * vyn, 0.0};
@@ -198,6 +243,7 @@ static void musl_velocity_range(const mpm_grid *gg, mpm_particles *p, size_t a, 
     cs.c11 += sh.wx1 * Q1;
   }
   cell_sums_flush(&cs, nd, nny);
+  return kp;
 }
 
 /* Scatter over the strips, colour by colour (deterministic, no atomics).  which = 0:
@@ -220,81 +266,223 @@ static int scatter(mpm_sim *s, int which)
       if (which == 0)
         out |= gimp ? mpm_gimp_p2g_range(g, p, a, b, lcx, lcy) : p2g_range(g, p, a, b);
       else if (gimp)
-        mpm_gimp_musl_range(g, p, a, b, lcx, lcy);
+        s->led_part[q][MPM_LED_KP] = mpm_gimp_musl_range(g, p, a, b, lcx, lcy);
       else
-        musl_velocity_range(g, p, a, b);
+        s->led_part[q][MPM_LED_KP] = musl_velocity_range(g, p, a, b);
     }
   }
   return out;
 }
 
-/* eq. 4 and the reactions.  After this px, py hold v^L and fx, fy hold v^L - v. */
-static void grid_update(mpm_sim *s)
+/* The node index range [k0, k1) of strip q's node columns (the last strip takes the
+ * last node column too): the fixed partition of the grid passes' ledger sums. */
+static inline void strip_nodes(const mpm_sim *s, int q, long *k0, long *k1)
+{
+  const long nny = s->g->nny, nn = (long)s->g->nnx * nny;
+  *k0 = (long)q * MPM_STRIP * nny;
+  *k1 = q == s->nstrip - 1 ? nn : *k0 + MPM_STRIP * nny;
+}
+
+/* The held-node sums of one grid_update, in registers while its loops run. */
+typedef struct {
+  double A, K, B, Bheld, H, Wtrue;
+} hold_sums;
+
+/* One held velocity component of node n (lane y: 0 for x, 1 for y) at v_bc, after the
+ * free update left v^L (lane p) and dv = v^L - v (lane f) in it.  Sets the lanes to the
+ * treatment's v^L = v_bc and increment d, books the ledger's held-node terms (replacing
+ * the free-node ones grid_update summed for it), and returns the reaction's impulse,
+ * R dt = m (v_bc - v^L_free) for LAGRANGIAN and BOTH, m d - dt f for CONSISTENT. */
+static inline double hold(int bc, mpm_node *n, int y, double vbc, double bfac, hold_sums *h)
+{
+  double *lp = y ? &n->py : &n->px, *lf = y ? &n->fy : &n->fx;
+  const double m = n->m, vL = *lp, dv = *lf, v = vL - dv;
+  double d, R;
+  if (bc == MPM_BC_LAGRANGIAN) {
+    d = dv + (vbc - vL); /* = v_bc - v: the FLIP increment pulls toward v_bc */
+    R = m * (vbc - vL);
+  } else {
+    d = 0.0; /* the change of v_bc over the step: the grip speed is constant */
+    R = bc == MPM_BC_BOTH ? m * (vbc - vL) : m * (d - dv);
+  }
+  *lp = vbc;
+  *lf = d;
+  /* the free-node terms grid_update added for this component, replaced by the held ones */
+  h->A += m * v * (d - dv);
+  h->K += m * (d * d - dv * dv);
+  h->B += bfac * (m * dv * vL - m * dv * vbc);
+  h->Bheld -= m * dv * vbc;
+  h->H += m * (d * (v - vbc) + 0.5 * d * d);
+  h->Wtrue += m * (d - dv) * vbc;
+  return R;
+}
+
+/* The free update of every node (eq. 4) and the ledger's node sums, strip by strip:
+ * A + bfac B (with B the stress power of the share bfac of the strain taken from v^L)
+ * and K.  usl (bfac = 1): A + B = -K exactly, so only K is summed. */
+static inline __attribute__((always_inline)) void grid_nodes(mpm_sim *s, double bfac, const int usl)
 {
   mpm_grid *g = s->g;
   const double dt = s->sc.dt, mmin = MPM_MASS_EPS * s->p->m[0];
-  const long nn = (long)g->nnx * (long)g->nny;
 #ifdef _OPENMP
 #pragma omp parallel for schedule(static) num_threads(s->nthreads)
 #endif
-  for (long k = 0; k < nn; k++) {
-    mpm_node *n = &g->nd[k];
-    if (n->m > mmin) {
-      const double im = 1.0 / n->m;
-      const double dvx = dt * n->fx * im, dvy = dt * n->fy * im;
-      n->px = n->px * im + dvx;
-      n->py = n->py * im + dvy;
-      n->fx = dvx;
-      n->fy = dvy;
-    } else {
-      n->px = n->py = n->fx = n->fy = 0.0;
+  for (int q = 0; q < s->nstrip; q++) {
+    long k0, k1;
+    strip_nodes(s, q, &k0, &k1);
+    double A = 0.0, K = 0.0, B = 0.0;
+    /* simd reduction: the ledger's sums may be added in vector lanes (a fixed order for
+     * a given build, whatever the threads), so the loop stays vectorised */
+#ifdef _OPENMP
+#pragma omp simd reduction(+ : A, K, B)
+#endif
+    for (long k = k0; k < k1; k++) {
+      mpm_node *n = &g->nd[k];
+      if (n->m > mmin) {
+        const double im = 1.0 / n->m;
+        const double dvx = dt * n->fx * im, dvy = dt * n->fy * im;
+        if (usl) { /* m |dv|^2 = dt f . dv; A + B = -m |dv|^2 (USL: u = v^L = v + dv) */
+          K += dt * (n->fx * dvx + n->fy * dvy);
+        } else {
+          const double vx = n->px * im, vy = n->py * im, mdx = n->m * dvx, mdy = n->m * dvy;
+          A += mdx * vx + mdy * vy;
+          K += mdx * dvx + mdy * dvy;
+          B -= mdx * (vx + dvx) + mdy * (vy + dvy);
+        }
+        n->px = n->px * im + dvx;
+        n->py = n->py * im + dvy;
+        n->fx = dvx;
+        n->fy = dvy;
+      } else {
+        n->px = n->py = n->fx = n->fy = 0.0;
+      }
     }
+    s->led_part[q][MPM_LED_A] += usl ? -K : A + bfac * B;
+    s->led_part[q][MPM_LED_K] += K;
   }
-  /* Reaction of a constraint: the force that turns the free v^L into the prescribed one,
-   * R = m (v_bc - v^L_free) / dt.  Tension is positive in both loads. */
-  const double vg = -s->sc.speed;
-  double Rg = 0.0, Rf = 0.0;
-  for (int q = 0; q < s->ngrip; q++) {
-    const int k = s->grip[q];
-    const double jump = vg - g->nd[k].px;
-    Rg += g->nd[k].m * jump;
-    g->nd[k].px = vg;
-    g->nd[k].fx += jump;
-  }
-  for (int q = 0; q < s->nfixx; q++) {
-    const int k = s->fixx[q];
-    const double jump = -g->nd[k].px;
-    Rf += g->nd[k].m * jump;
-    g->nd[k].px = 0.0;
-    g->nd[k].fx += jump;
-  }
-  g->nd[s->fixy].fy -= g->nd[s->fixy].py;
-  g->nd[s->fixy].py = 0.0;
-  s->P_grip = -Rg / dt;
-  s->P_fixed = Rf / dt;
-  s->W_ext += (Rg / dt) * vg * dt; /* power of the grip's force; the fixed nodes do no work */
 }
 
-/* MUSL: v' = q / m with the same boundary conditions, into (fx, fy). */
+/* eq. 4 and the reactions.  After this px, py hold v^L and fx, fy hold the FLIP
+ * increment (v^L - v at a free node; at a held node what sc.bc says).  bfac: the share
+ * of the strain increment taken from v^L after this update (USL 1, USAVG 1/2, MUSL and
+ * USF 0), for the ledger's stress power B.  The GIMP path calls this too. */
+static void grid_update(mpm_sim *s, double bfac)
+{
+  mpm_grid *g = s->g;
+  const double dt = s->sc.dt;
+  if (bfac == 1.0)
+    grid_nodes(s, 1.0, 1);
+  else
+    grid_nodes(s, bfac, 0);
+  /* The constraints (sc.bc; mpm.h), serial in node order.  Tension is positive in both
+   * loads. */
+  const double vg = -s->sc.speed;
+  const int bc = s->sc.bc;
+  double Rg = 0.0, Rf = 0.0;
+  hold_sums h = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+  for (int q = 0; q < s->ngrip; q++)
+    Rg += hold(bc, &g->nd[s->grip[q]], 0, vg, bfac, &h);
+  for (int q = 0; q < s->nfixx; q++)
+    Rf += hold(bc, &g->nd[s->fixx[q]], 0, 0.0, bfac, &h);
+  hold(bc, &g->nd[s->fixy], 1, 0.0, bfac, &h);
+  mpm_ledger *L = &s->led;
+  L->s_A += h.A;
+  L->s_K += h.K;
+  L->s_B += h.B;
+  L->s_Bheld += h.Bheld;
+  L->s_H += h.H;
+  L->s_Wtrue += h.Wtrue;
+  s->P_grip = -Rg / dt;
+  s->P_fixed = Rf / dt;
+  const double W = (Rg / dt) * vg * dt; /* power of the grip's force; the fixed nodes do no work */
+  s->W_ext += W;
+  s->led.s_Wbook += W;
+}
+
+/* USF and USAVG: the projected nodal velocity v_i = p_i / m_i with the constraints
+ * (v_bc at a held node), into lanes (fx, fy), for the strain increment taken before
+ * the forces; the ledger's stress power of that share (frac) of the increment,
+ * B = -frac dt sum f . v_i, from the forces still in the lanes. */
+static void grid_start_velocity(mpm_sim *s, double frac)
+{
+  mpm_grid *g = s->g;
+  const double c = frac * s->sc.dt, mmin = MPM_MASS_EPS * s->p->m[0];
+  const double vg = -s->sc.speed;
+  /* held components first, while the lanes hold the forces: the loop below sums
+   * -c f . p / m for them; B wants -c f . v_bc */
+  double Bh = 0.0;
+  for (int q = 0; q < s->ngrip + s->nfixx + 1; q++) {
+    const int y = q == s->ngrip + s->nfixx;
+    const mpm_node *n = &g->nd[q < s->ngrip ? s->grip[q] : y ? s->fixy : s->fixx[q - s->ngrip]];
+    const double im = n->m > mmin ? 1.0 / n->m : 0.0, vbc = q < s->ngrip ? vg : 0.0;
+    const double f = y ? n->fy : n->fx, v = (y ? n->py : n->px) * im;
+    Bh += c * f * v - c * f * vbc;
+  }
+#ifdef _OPENMP
+#pragma omp parallel for schedule(static) num_threads(s->nthreads)
+#endif
+  for (int q = 0; q < s->nstrip; q++) {
+    long k0, k1;
+    strip_nodes(s, q, &k0, &k1);
+    double B = 0.0;
+    for (long k = k0; k < k1; k++) {
+      mpm_node *n = &g->nd[k];
+      const double im = n->m > mmin ? 1.0 / n->m : 0.0;
+      const double vx = n->px * im, vy = n->py * im;
+      B -= c * (n->fx * vx + n->fy * vy);
+      n->fx = vx;
+      n->fy = vy;
+    }
+    s->led_part[q][MPM_LED_B] += B;
+  }
+  for (int q = 0; q < s->ngrip; q++)
+    g->nd[s->grip[q]].fx = vg;
+  for (int q = 0; q < s->nfixx; q++)
+    g->nd[s->fixx[q]].fx = 0.0;
+  g->nd[s->fixy].fy = 0.0;
+  s->led.s_Bstart += Bh;
+}
+
+/* MUSL: v' = q / m with the same boundary conditions, into (fx, fy); the ledger's
+ * stress power B = -dt sum f . v' (dt f = m dv at a free component, and the held
+ * components' dt f . v_bc booked by hold()). */
 static void grid_musl_velocity(mpm_sim *s)
 {
   mpm_grid *g = s->g;
   const double mmin = MPM_MASS_EPS * s->p->m[0];
-  const long nn = (long)g->nnx * (long)g->nny;
+  /* held components, before their v' is set: -m dv . v' was summed with the
+   * increment d in place of dv; take it out (d q = m d v') */
+  double corr = 0.0;
+  for (int q = 0; q < s->ngrip; q++)
+    corr += g->nd[s->grip[q]].fx * g->nd[s->grip[q]].qx;
+  for (int q = 0; q < s->nfixx; q++)
+    corr += g->nd[s->fixx[q]].fx * g->nd[s->fixx[q]].qx;
+  corr += g->nd[s->fixy].fy * g->nd[s->fixy].qy;
 #ifdef _OPENMP
 #pragma omp parallel for schedule(static) num_threads(s->nthreads)
 #endif
-  for (long k = 0; k < nn; k++) {
-    mpm_node *n = &g->nd[k];
-    const double im = n->m > mmin ? 1.0 / n->m : 0.0;
-    n->fx = n->qx * im;
-    n->fy = n->qy * im;
+  for (int q = 0; q < s->nstrip; q++) {
+    long k0, k1;
+    strip_nodes(s, q, &k0, &k1);
+    double B = 0.0;
+#ifdef _OPENMP
+#pragma omp simd reduction(+ : B)
+#endif
+    for (long k = k0; k < k1; k++) {
+      mpm_node *n = &g->nd[k];
+      const double im = n->m > mmin ? 1.0 / n->m : 0.0;
+      B -= n->fx * n->qx + n->fy * n->qy; /* -m dv . v' */
+      n->fx = n->qx * im;
+      n->fy = n->qy * im;
+    }
+    s->led_part[q][MPM_LED_B] += B;
   }
   for (int q = 0; q < s->ngrip; q++)
     g->nd[s->grip[q]].fx = -s->sc.speed;
   for (int q = 0; q < s->nfixx; q++)
     g->nd[s->fixx[q]].fx = 0.0;
   g->nd[s->fixy].fy = 0.0;
+  s->led.s_Bstart += corr + s->led.s_Bheld;
 }
 
 /* Names the first particle whose state is not finite; 0 if there is none. */
@@ -324,13 +512,15 @@ typedef struct {
 } g2p_acc;
 
 /* The full decohesion update (sec. 4) of the particles in the thread's list, in list
- * order, off the hot loop; one timing per batch. */
-static __attribute__((noinline)) void constitutive_flush(const mpm_sim *s, mpm_particles *restrict p,
-                                                          mpm_defer *d, mpm_dwork *dw, g2p_acc *acc)
+ * order, off the hot loop; one timing per batch.  Returns the ledger's
+ * sum V dsigma : deps over them. */
+static __attribute__((noinline)) double constitutive_flush(const mpm_sim *s, mpm_particles *restrict p,
+                                                            mpm_defer *d, mpm_dwork *dw, g2p_acc *acc)
 {
   if (d->n == 0)
-    return;
+    return 0.0;
   const double t0 = wall();
+  double qs = 0.0;
   for (size_t i = 0; i < d->n; i++) {
     const size_t k = d->k[i];
     const mpm_material *m = &s->mat[p->mat[k]];
@@ -341,6 +531,8 @@ static __attribute__((noinline)) void constitutive_flush(const mpm_sim *s, mpm_p
       acc->bad = 1;
       acc->bad_k = k;
     }
+    const double *de = d->de[i];
+    qs += p->V[k] * ((o.sxx - in.sxx) * de[0] + (o.syy - in.syy) * de[1] + 2.0 * (o.sxy - in.sxy) * de[2]);
     p->sxx[k] = o.sxx;
     p->syy[k] = o.syy;
     p->sxy[k] = o.sxy;
@@ -356,22 +548,40 @@ static __attribute__((noinline)) void constitutive_flush(const mpm_sim *s, mpm_p
   }
   d->n = 0;
   acc->tconst += wall() - t0;
+  return qs;
 }
+
+/* What a gather pass does (g2p_strip_impl): move the particles (eq. 5), update their
+ * velocities (eq. 6), and take a strain increment (eq. 7) from lanes (px, py) or
+ * (fx, fy), then the constitutive update. */
+enum {
+  G2P_X = 1,        /* x += dt sum v^L N (lanes px, py)                  */
+  G2P_V = 2,        /* v += sum d N (lanes fx, fy)                       */
+  G2P_STRAIN_P = 4, /* strain from lanes px, py (USL: v^L)               */
+  G2P_STRAIN_F = 8  /* strain from lanes fx, fy (MUSL: v'; USF: v_i)     */
+};
+#define G2P_USL (G2P_X | G2P_V | G2P_STRAIN_P)
+#define G2P_MUSL (G2P_X | G2P_STRAIN_F)
+#define G2P_MOVE (G2P_X | G2P_V)
 
 /* eqs. 5-7 and the constitutive update for the particles of strip q.  The four node
  * records give, in one weighted sum each, the interpolated values of every lane (S) and
  * their x and y derivatives (GX, GY).  USL: strain from v^L (lanes px, py).  MUSL:
- * velocities were already updated; strain from v' (lanes fx, fy). */
-static inline __attribute__((always_inline)) void g2p_strip_impl(mpm_sim *s, int q, const int musl,
-                                                                  const int gimp, mpm_defer *d, mpm_dwork *dw,
+ * velocities were already updated; strain from v' (lanes fx, fy).  USF: a strain pass
+ * from v_i (lanes fx, fy) and, after the new forces, a pass that only moves.  frac: the
+ * share of the step's strain increment (USAVG: 1/2 in each of two passes).  Adds the
+ * ledger's particle sums of strip q. */
+static inline __attribute__((always_inline)) void g2p_strip_impl(mpm_sim *s, int q, const int mode, const int gimp,
+                                                                  double frac, mpm_defer *d, mpm_dwork *dw,
                                                                   g2p_acc *acc)
 {
   const mpm_grid geo = *s->g, *g = &geo; /* a local copy: no store below can alias it */
   const mpm_particles *p = s->p;
   const double ihx = g->ihx, ihy = g->ihy, dt = s->sc.dt, ox = g->ox;
   const size_t nny = (size_t)g->nny;
-  const int ux = musl ? GFX : GPX, uy = ux + 1; /* the lanes of the strain velocity */
-  const double dtihx = dt * ihx, dtihy = dt * ihy;
+  const int strain = mode & (G2P_STRAIN_P | G2P_STRAIN_F);
+  const int ux = (mode & G2P_STRAIN_F) ? GFX : GPX, uy = ux + 1; /* the lanes of the strain velocity */
+  const double dtihx = frac * dt * ihx, dtihy = frac * dt * ihy;
   /* the safe columns [q S - 1, (q + 1) S + 1) of strip q (mpm_sort.c); for uGIMP's
    * wider support, half a column of the dual grid beyond the strip */
   const double drift = gimp ? 0.5 : 1.0, shift = gimp ? 0.5 : 0.0;
@@ -381,6 +591,8 @@ static inline __attribute__((always_inline)) void g2p_strip_impl(mpm_sim *s, int
     mpm_gimp_lc(s, &lcx, &lcy);
   const size_t end = s->strip_start[q + 1];
   int resort = 0;
+  double qs = 0.0; /* ledger: sum V dsigma : deps, and sum m |dv_p|^2 in kv */
+  mpm_v4 kv = {0.0, 0.0, 0.0, 0.0};
   /* Chunks of at most MPM_DEFER particles: the list cannot overflow inside one, and the
    * full updates run after it, outside the restrict-qualified block. */
   for (size_t c0 = s->strip_start[q]; c0 < end; c0 += MPM_DEFER) {
@@ -388,14 +600,14 @@ static inline __attribute__((always_inline)) void g2p_strip_impl(mpm_sim *s, int
     const mpm_node *restrict nd = g->nd;
     double *restrict x = p->x, *restrict y = p->y, *restrict vx = p->vx, *restrict vy = p->vy;
     double *restrict sxx = p->sxx, *restrict syy = p->syy, *restrict sxy = p->sxy;
-    const double *restrict str2 = p->str2;
+    const double *restrict str2 = p->str2, *restrict pm = p->m;
     const uint8_t *restrict pmat = p->mat;
     const mpm_material *restrict mat = s->mat;
     size_t *restrict dk = d->k;
     double(*restrict dde)[3] = d->de;
     size_t nd_ = 0;
     for (size_t k = c0; k < c1; k++) {
-      mpm_v4 S, GX, GY; /* field, dt d/dx, dt d/dy */
+      mpm_v4 S, GX, GY; /* field, frac dt d/dx, frac dt d/dy */
       if (gimp) {
         mpm_gimp1 sx, sy;
         mpm_gimp_1d((x[k] - ox) * ihx, lcx, &sx);
@@ -435,75 +647,83 @@ static inline __attribute__((always_inline)) void g2p_strip_impl(mpm_sim *s, int
         GY = dtihy * db;
       }
       /* eq. 5 (and eq. 6 for USL) */
-      const double xn = x[k] + dt * S[GPX];
-      x[k] = xn;
-      y[k] += dt * S[GPY];
-      double vxn = vx[k], vyn = vy[k];
-      if (!musl) {
-        vxn += S[GFX];
-        vyn += S[GFY];
-        vx[k] = vxn;
-        vy[k] = vyn;
+      double xn = x[k];
+      if (mode & G2P_X) {
+        xn += dt * S[GPX];
+        x[k] = xn;
+        y[k] += dt * S[GPY];
       }
-      const double de0 = GX[ux], de1 = GY[uy], de2 = 0.5 * (GY[ux] + GX[uy]);
-      /* sec. 4: the elastic trial, kept where F <= 0 (eq. 23), tested as
-       * <s_nn / snf>^2 + (s_nt / stf)^2 < (1 - lambda^q)^2 with the strength cached
-       * (str2 < 0 once separated: always the full update).  It rounds differently from
-       * the full update, so anything within MPM_TRIAL_SAFE of the surface goes on the
-       * list for the full update, which decides.  A non-finite trial makes b NaN
-       * (NaN * 0 is NaN), fails the test, and is reported by the full update: the
-       * finiteness check of the state costs nothing here.  (A non-finite velocity
-       * or position shows up one step later, in the strain or in the scatter.) */
-      const mpm_material *m = &mat[pmat[k]];
-      const double txx = sxx[k] + m->E1 * de0 + m->E2 * de1;
-      const double tyy = syy[k] + m->E2 * de0 + m->E1 * de1;
-      const double txy = sxy[k] + 2.0 * m->G * de2;
-      const double sn = m->fn[0] * txx + m->fn[1] * tyy + m->fn[2] * txy, a = sn > 0.0 ? sn : 0.0;
-      const double b = m->ft[0] * txx + m->ft[1] * tyy + m->ft[2] * txy;
-      if (__builtin_expect(!(a * a + b * b < MPM_TRIAL_SAFE * str2[k]), 0)) {
-        dk[nd_] = k;
-        dde[nd_][0] = de0;
-        dde[nd_][1] = de1;
-        dde[nd_][2] = de2;
-        nd_++;
-      } else {
-        sxx[k] = txx;
-        syy[k] = tyy;
-        sxy[k] = txy;
+      if (mode & G2P_V) {
+        vx[k] += S[GFX];
+        vy[k] += S[GFY];
+        kv += pm[k] * (S * S); /* lanes GFX, GFY: m |dv_p|^2 */
       }
-      const double col = (xn - ox) * ihx + shift;
-      resort |= (col < clo) | (col >= chi);
+      if (strain) {
+        const double de0 = GX[ux], de1 = GY[uy], de2 = 0.5 * (GY[ux] + GX[uy]);
+        /* sec. 4: the elastic trial, kept where F <= 0 (eq. 23), tested as
+         * <s_nn / snf>^2 + (s_nt / stf)^2 < (1 - lambda^q)^2 with the strength cached
+         * (str2 < 0 once separated: always the full update).  It rounds differently from
+         * the full update, so anything within MPM_TRIAL_SAFE of the surface goes on the
+         * list for the full update, which decides.  A non-finite trial makes b NaN
+         * (NaN * 0 is NaN), fails the test, and is reported by the full update: the
+         * finiteness check of the state costs nothing here.  (A non-finite velocity
+         * or position shows up one step later, in the strain or in the scatter.) */
+        const mpm_material *m = &mat[pmat[k]];
+        const double txx = sxx[k] + m->E1 * de0 + m->E2 * de1;
+        const double tyy = syy[k] + m->E2 * de0 + m->E1 * de1;
+        const double txy = sxy[k] + 2.0 * m->G * de2;
+        const double sn = m->fn[0] * txx + m->fn[1] * tyy + m->fn[2] * txy, a = sn > 0.0 ? sn : 0.0;
+        const double b = m->ft[0] * txx + m->ft[1] * tyy + m->ft[2] * txy;
+        if (__builtin_expect(!(a * a + b * b < MPM_TRIAL_SAFE * str2[k]), 0)) {
+          dk[nd_] = k;
+          dde[nd_][0] = de0;
+          dde[nd_][1] = de1;
+          dde[nd_][2] = de2;
+          nd_++;
+        } else {
+          qs += pm[k] * m->irho * ((txx - sxx[k]) * de0 + (tyy - syy[k]) * de1 + 2.0 * (txy - sxy[k]) * de2);
+          sxx[k] = txx;
+          syy[k] = tyy;
+          sxy[k] = txy;
+        }
+      }
+      if (mode & G2P_X) {
+        const double col = (xn - ox) * ihx + shift;
+        resort |= (col < clo) | (col >= chi);
+      }
     }
     d->n = nd_;
-    constitutive_flush(s, s->p, d, dw, acc);
+    qs += constitutive_flush(s, s->p, d, dw, acc);
   }
   acc->resort |= resort;
+  s->led_part[q][MPM_LED_KP] += kv[GFX] + kv[GFY];
+  s->led_part[q][MPM_LED_Q] += qs;
 }
 
-/* One copy of the loop per scheme and shape, so that each reads only the lanes it
- * needs and the bilinear loop stays as it was. */
-static void g2p_strip(mpm_sim *s, int q, int musl, int gimp, mpm_defer *d, mpm_dwork *dw, g2p_acc *acc)
+/* One copy of the loop per pass kind and shape, so that each reads only the lanes it
+ * needs and the bilinear USL loop stays as it was. */
+static void g2p_strip(mpm_sim *s, int q, int mode, double frac, mpm_defer *d, mpm_dwork *dw, g2p_acc *acc)
 {
-  if (gimp) {
-    if (musl)
-      g2p_strip_impl(s, q, 1, 1, d, dw, acc);
-    else
-      g2p_strip_impl(s, q, 0, 1, d, dw, acc);
-  } else if (musl)
-    g2p_strip_impl(s, q, 1, 0, d, dw, acc);
-  else
-    g2p_strip_impl(s, q, 0, 0, d, dw, acc);
-}
-
-static mpm_status g2p(mpm_sim *s, char *err, size_t errlen)
-{
-  const int musl = s->sc.scheme == MPM_SCHEME_MUSL, gimp = s->sc.shape == MPM_SHAPE_GIMP;
-  if (musl) {
-    scatter(s, 1);
-    grid_musl_velocity(s);
-    if (s->g->fld)
-      mpm_fields_musl(s);
+  if (s->sc.shape == MPM_SHAPE_GIMP) {
+    switch (mode) {
+    case G2P_USL: g2p_strip_impl(s, q, G2P_USL, 1, frac, d, dw, acc); break;
+    case G2P_MUSL: g2p_strip_impl(s, q, G2P_MUSL, 1, 1.0, d, dw, acc); break;
+    case G2P_STRAIN_F: g2p_strip_impl(s, q, G2P_STRAIN_F, 1, frac, d, dw, acc); break;
+    case G2P_MOVE: g2p_strip_impl(s, q, G2P_MOVE, 1, 1.0, d, dw, acc); break;
+    }
+    return;
   }
+  switch (mode) {
+  case G2P_USL: g2p_strip_impl(s, q, G2P_USL, 0, frac, d, dw, acc); break;
+  case G2P_MUSL: g2p_strip_impl(s, q, G2P_MUSL, 0, 1.0, d, dw, acc); break;
+  case G2P_STRAIN_F: g2p_strip_impl(s, q, G2P_STRAIN_F, 0, frac, d, dw, acc); break;
+  case G2P_MOVE: g2p_strip_impl(s, q, G2P_MOVE, 0, 1.0, d, dw, acc); break;
+  }
+}
+
+/* A gather pass over all strips (mode: G2P_*). */
+static mpm_status g2p(mpm_sim *s, int mode, double frac, char *err, size_t errlen)
+{
   g2p_acc tot = {0, 0, 0, 0.0, 0, 0, 0};
 #ifdef _OPENMP
 #pragma omp parallel num_threads(s->nthreads)
@@ -516,7 +736,7 @@ static mpm_status g2p(mpm_sim *s, char *err, size_t errlen)
 #pragma omp for schedule(dynamic, 1)
 #endif
     for (int q = 0; q < s->nstrip; q++)
-      g2p_strip(s, q, musl, gimp, d, dw, &acc);
+      g2p_strip(s, q, mode, frac, d, dw, &acc);
 #ifdef _OPENMP
 #pragma omp critical
 #endif
@@ -548,32 +768,57 @@ static mpm_status g2p(mpm_sim *s, char *err, size_t errlen)
   return MPM_OK;
 }
 
+/* The step's ledger (see "Energy" above), from the per-strip partial sums, in strip
+ * order, and the serial held-node sums: the same bits for any thread count. */
+static void ledger_step(mpm_sim *s)
+{
+  double t[MPM_LED_N] = {0.0};
+  for (int q = 0; q < s->nstrip; q++)
+    for (int i = 0; i < MPM_LED_N; i++)
+      t[i] += s->led_part[q][i];
+  mpm_ledger *L = &s->led;
+  const double A = t[MPM_LED_A] + L->s_A, K = 0.5 * (t[MPM_LED_K] + L->s_K);
+  const double B = t[MPM_LED_B] + L->s_B + L->s_Bstart, Kp = 0.5 * t[MPM_LED_KP], Q = 0.5 * t[MPM_LED_Q];
+  L->L_flip += K - Kp;
+  L->L_bc += -L->s_H + (L->s_Wbook - L->s_Wtrue);
+  L->L_scheme += L->s_Wtrue - A - K - B - Q + L->s_H;
+}
+
 /* The head is rigid: in x it moves with the grip; in y it is free, as one body whose
  * momentum is the sum its particles received this step (no y constraint, so the bar's
  * end may rise, as the paper's Fig. 8 shows).  Serial, in particle order: the same sums
  * whatever the threads. */
 static void head_rigid(mpm_sim *s)
 {
-  if (s->ngrip == 0)
-    return; /* the head is the grip: without one (tests of the bare step) it is left alone */
   mpm_particles *p = s->p;
-  double m = 0.0, my = 0.0;
+  double m = 0.0, my = 0.0, ke0 = 0.0;
   for (size_t i = 0; i < s->nhead; i++) {
     const size_t k = s->head[i];
     m += p->m[k];
     my += p->m[k] * p->vy[k];
+    ke0 += 0.5 * p->m[k] * (p->vx[k] * p->vx[k] + p->vy[k] * p->vy[k]);
   }
+  mpm_ledger *L = &s->led;
+  /* the ledger: what the head (the machine) took, its KE change and what its
+   * projection below removes */
+  L->W_head = ke0 - L->KE_head0 + L->head_reset;
+  if (s->ngrip == 0)
+    return; /* the head is the grip: without one (tests of the bare step) it is left alone */
   if (!(m > 0.0))
     return;
   const double vy = my / m, dx = -s->sc.speed * (s->step + 1) * s->sc.dt;
   s->head_dy += vy * s->sc.dt;
+  double ke1 = 0.0;
   for (size_t i = 0; i < s->nhead; i++) {
     const size_t k = s->head[i];
     p->vx[k] = -s->sc.speed;
     p->vy[k] = vy;
     p->x[k] = p->x0[k] + dx;
     p->y[k] = p->y0[k] + s->head_dy;
+    ke1 += 0.5 * p->m[k] * (p->vx[k] * p->vx[k] + vy * vy);
   }
+  L->head_reset += ke0 - ke1;
+  L->W_head = ke1 - L->KE_head0 + L->head_reset;
 }
 
 /* Lays the background grid for this step (MPM_GRID_STRETCH: along the bar's mean
@@ -590,6 +835,43 @@ static void lay_grid(mpm_sim *s)
   g->ox = L + (s->grid_ox0 - L) * stretch;
 }
 
+/* eqs. 2-3 into a zeroed grid; MPM_EDOMAIN or MPM_ENOTFINITE, with the particle
+ * named, if one is outside it. */
+static mpm_status p2g(mpm_sim *s, char *err, size_t errlen)
+{
+  mpm_grid *g = s->g;
+  const size_t nn = (size_t)g->nnx * (size_t)g->nny;
+  memset(g->nd, 0, nn * sizeof(mpm_node));
+  if (g->fld)
+    mpm_fields_mark(s);
+  if (!scatter(s, 0))
+    return MPM_OK;
+  const mpm_particles *p = s->p;
+  mpm_status st = MPM_EDOMAIN;
+  for (size_t k = 0; k < p->n; k++) {
+    mpm_shape sh;
+    const int in = s->sc.shape == MPM_SHAPE_GIMP ? mpm_gimp_inside(g, p->x[k], p->y[k])
+                                                 : mpm_shape_at(g, p->x[k], p->y[k], &sh);
+    if (!in) {
+      st = isfinite(p->x[k]) && isfinite(p->y[k]) ? MPM_EDOMAIN : MPM_ENOTFINITE;
+      snprintf(err, errlen, "step %ld: particle at X = %g, Y = %g %s at (%g, %g)%s", s->step, p->x0[k],
+               p->y0[k], st == MPM_EDOMAIN ? "left the grid" : "has a non-finite position", p->x[k],
+               p->y[k], st == MPM_EDOMAIN ? "; raise grid.margin" : "");
+      break;
+    }
+  }
+  return st;
+}
+
+/* A gather pass, timed apart from the constitutive updates inside it. */
+static mpm_status g2p_timed(mpm_sim *s, int mode, double frac, char *err, size_t errlen)
+{
+  const double t0 = wall(), c0 = s->time_split[MPM_T_CONST];
+  const mpm_status st = g2p(s, mode, frac, err, errlen);
+  s->time_split[MPM_T_G2P] += (wall() - t0) - (s->time_split[MPM_T_CONST] - c0);
+  return st;
+}
+
 mpm_status mpm_sim_step(mpm_sim *s, char *err, size_t errlen)
 {
   mpm_threads_tick(s);
@@ -602,43 +884,51 @@ mpm_status mpm_sim_step(mpm_sim *s, char *err, size_t errlen)
     s->time_split[MPM_T_SORT] += t1 - t0;
     t0 = t1;
   }
-  mpm_grid *g = s->g;
-  const size_t nn = (size_t)g->nnx * (size_t)g->nny;
-  memset(g->nd, 0, nn * sizeof(mpm_node));
-  if (g->fld)
-    mpm_fields_mark(s);
-  if (scatter(s, 0)) {
-    const mpm_particles *p = s->p;
-    mpm_status st = MPM_EDOMAIN;
-    for (size_t k = 0; k < p->n; k++) {
-      mpm_shape sh;
-      const int in = s->sc.shape == MPM_SHAPE_GIMP ? mpm_gimp_inside(g, p->x[k], p->y[k])
-                                                   : mpm_shape_at(g, p->x[k], p->y[k], &sh);
-      if (!in) {
-        st = isfinite(p->x[k]) && isfinite(p->y[k]) ? MPM_EDOMAIN : MPM_ENOTFINITE;
-        snprintf(err, errlen, "step %ld: particle at X = %g, Y = %g %s at (%g, %g)%s", s->step, p->x0[k],
-                 p->y0[k], st == MPM_EDOMAIN ? "left the grid" : "has a non-finite position", p->x[k],
-                 p->y[k], st == MPM_EDOMAIN ? "; raise grid.margin" : "");
-        break;
-      }
-    }
+  memset(s->led_part, 0, (size_t)s->nstrip * sizeof *s->led_part);
+  mpm_ledger *L = &s->led;
+  L->s_A = L->s_K = L->s_B = L->s_Bheld = L->s_Bstart = L->s_H = L->s_Wtrue = L->s_Wbook = 0.0;
+  const int sch = s->sc.scheme;
+  mpm_status st = p2g(s, err, errlen);
+  if (st != MPM_OK)
     return st;
-  }
   t1 = wall();
   s->time_split[MPM_T_P2G] += t1 - t0;
-  grid_update(s);
-  if (g->fld)
+  if (sch == MPM_SCHEME_USF || sch == MPM_SCHEME_USAVG) {
+    /* the stress first (all of it, or half), from the projected velocity; then the
+     * forces of the new stress */
+    const double frac = sch == MPM_SCHEME_USF ? 1.0 : 0.5;
+    grid_start_velocity(s, frac);
+    t0 = wall();
+    s->time_split[MPM_T_GRID] += t0 - t1;
+    if ((st = g2p_timed(s, G2P_STRAIN_F, frac, err, errlen)) != MPM_OK)
+      return st;
+    t0 = wall();
+    if ((st = p2g(s, err, errlen)) != MPM_OK)
+      return st;
+    t1 = wall();
+    s->time_split[MPM_T_P2G] += t1 - t0;
+  }
+  grid_update(s, sch == MPM_SCHEME_USL ? 1.0 : sch == MPM_SCHEME_USAVG ? 0.5 : 0.0);
+  if (s->g->fld)
     mpm_fields_grid(s);
   t0 = wall();
   s->time_split[MPM_T_GRID] += t0 - t1;
-  const double c0 = s->time_split[MPM_T_CONST];
-  const mpm_status st = g2p(s, err, errlen);
-  t1 = wall();
-  /* g2p's own share excludes the constitutive time measured inside it */
-  s->time_split[MPM_T_G2P] += (t1 - t0) - (s->time_split[MPM_T_CONST] - c0);
+  if (sch == MPM_SCHEME_MUSL) {
+    scatter(s, 1); /* counted in g2p, as the first half of MUSL's gather */
+    grid_musl_velocity(s);
+    if (s->g->fld)
+      mpm_fields_musl(s);
+    s->time_split[MPM_T_G2P] += wall() - t0;
+    st = g2p_timed(s, G2P_MUSL, 1.0, err, errlen);
+  } else if (sch == MPM_SCHEME_USF) {
+    st = g2p_timed(s, G2P_MOVE, 1.0, err, errlen);
+  } else {
+    st = g2p_timed(s, G2P_USL, sch == MPM_SCHEME_USAVG ? 0.5 : 1.0, err, errlen);
+  }
   if (st != MPM_OK)
     return st;
   head_rigid(s);
+  ledger_step(s);
   s->step++;
   s->t = s->step * s->sc.dt;
   return MPM_OK;

@@ -172,9 +172,15 @@ int ver_cmd_run(int argc, char **argv)
       fprintf(stderr, "delam run: partial results in %s (summary.json says complete: false)\n", o.outdir);
     return rc;
   }
-  printf("%s: peak P %.4g at delta %.4g, separation at delta %.4g, D %.4g, W_ext %.4g, "
-         "elastic slope %.4g, energy residual %.2e\n",
-         id, u.peak_P, u.delta_peak, u.delta_sep, u.D_final, u.W_ext_final, u.k_elastic, u.energy_residual);
+  if (vs.sc.vib_mode > 0) /* free vibration: what it kept and its period */
+    printf("%s: energy kept %.4f (booked: L_bc %.3g, L_flip %.3g, L_scheme %.3g of %.4g), period %.6g against "
+           "%.6g (error %+.3f %%), energy residual %.2e\n",
+           id, u.energy_kept, u.L_bc_final, u.L_flip_final, u.L_scheme_final, u.energy_start, u.period,
+           u.period_exact, 100.0 * u.period_error, u.energy_residual);
+  else
+    printf("%s: peak P %.4g at delta %.4g, separation at delta %.4g, D %.4g, W_ext %.4g, "
+           "elastic slope %.4g, energy residual %.2e\n",
+           id, u.peak_P, u.delta_peak, u.delta_sep, u.D_final, u.W_ext_final, u.k_elastic, u.energy_residual);
   printf("%s: %zu particles, %ld steps, %.2f s, %.3g particle-updates/s -> %s/\n", id, u.particles, u.steps,
          u.wall_s, u.updates_per_s, o.outdir);
   return 0;

@@ -49,12 +49,17 @@ const keydef ver_scene_keys[] = {
   {"grid", "ppc", K_INT, OFF(ppc), 1, 1, 1024, LO_CLOSED | HI_CLOSED, 0, "a perfect square: 1, 4, 9, ..."},
   {"grid", "margin", K_DBL, OFF(margin), 0, 0, 0, LO_CLOSED, 0, ">= 0: empty space around the bar, a length (one cell is always added)"},
   {"time", "dt", K_DBL, OFF(dt), 1, 0, 0, LO_OPEN, 0, "> 0 and below the CFL bound h / (c sqrt 2)"},
-  {"time", "scheme", K_SCHEME, OFF(scheme), 0, 0, 0, 0, MPM_SCHEME_USL, "usl (the paper) or musl"},
+  {"time", "scheme", K_SCHEME, OFF(scheme), 0, 0, 0, 0, MPM_SCHEME_USL, "usl (the paper), musl, usf or usavg"},
   {"grid", "motion", K_MOTION, OFF(grid_motion), 0, 0, 0, 0, MPM_GRID_FIXED, "fixed (the paper) or stretch (follows the bar's mean stretch)"},
   {"grid", "fields", K_FIELDS, OFF(fields), 0, 0, 0, 0, MPM_FIELDS_ONE, "one (the paper) or two (one per side of a band once it has cut the bar)"},
   {"grid", "shape", K_SHAPE, OFF(shape), 0, 0, 0, 0, MPM_SHAPE_LINEAR, "linear (the paper's bilinear hats) or gimp (uGIMP)"},
+  {"grid", "bc", K_BC, OFF(bc), 0, 0, 0, 0, MPM_BC_LAGRANGIAN, "lagrangian (on v^L only), both (on v and v^L) or consistent"},
+  {"loading", "head", K_HEAD, OFF(head), 0, 0, 0, 0, MPM_HEAD_RIGID, "rigid (the paper's rigid head) or none (the node column x = 0 alone)"},
+  {"vibration", "mode", K_INT, OFF(vib_mode), 0, 0, 1000, LO_CLOSED | HI_CLOSED, 0, "0 (none) or the axial mode m, 1 to 1000, to start from"},
+  {"vibration", "amplitude", K_DBL, OFF(vib_amp), 0, 0, 0, LO_OPEN, 0.03, "> 0: the mode's velocity amplitude"},
+  {"vibration", "periods", K_DBL, OFF(vib_periods), 0, 0, 1e6, LO_OPEN | HI_CLOSED, 25, "in (0, 1e6]: the run's length in periods 2 L / (m c)"},
   {"loading", "speed", K_DBL, OFF(speed), 1, 0, 0, LO_OPEN, 0, "> 0"},
-  {"run", "end_delta", K_DBL, OFF(end_delta), 1, 0, 0, LO_OPEN, 0, "> 0"},
+  {"run", "end_delta", K_DBL, OFF(end_delta), 3, 0, 0, LO_OPEN, 0, "> 0 (default with vibration.mode > 0: vibration.periods periods)"},
   {"run", "stop_margin", K_DBL, VOFF(stop_margin), 0, 0, 0, LO_CLOSED, 0.1, ">= 0 (0: run to end_delta)"},
   {"run", "sep_load", K_DBL, VOFF(sep_load_frac), 0, 0, 1, LO_OPEN | HI_OPEN, 0.02, "in (0, 1)"},
   {"output", "snapshots", K_LIST, 0, 0, 0, 0, LO_CLOSED, 0, "a comma-separated list of end displacements >= 0"},
@@ -169,13 +174,20 @@ static int set_key(ver_scene *vs, int ki, const char *value, char *msg, size_t l
     return 2;
   }
   if (k->type == K_LE || k->type == K_SCHEME || k->type == K_MOTION || k->type == K_SHAPE ||
-      k->type == K_FIELDS) {
+      k->type == K_FIELDS || k->type == K_BC || k->type == K_HEAD) {
     int mode;
     if (k->type == K_LE && !strcmp(value, "cell")) mode = MPM_LE_CELL;
     else if (k->type == K_LE && !strcmp(value, "particle")) mode = MPM_LE_PARTICLE;
     else if (k->type == K_LE && !strcmp(value, "staircase")) mode = MPM_LE_STAIRCASE;
     else if (k->type == K_SCHEME && !strcmp(value, "usl")) mode = MPM_SCHEME_USL;
     else if (k->type == K_SCHEME && !strcmp(value, "musl")) mode = MPM_SCHEME_MUSL;
+    else if (k->type == K_SCHEME && !strcmp(value, "usf")) mode = MPM_SCHEME_USF;
+    else if (k->type == K_SCHEME && !strcmp(value, "usavg")) mode = MPM_SCHEME_USAVG;
+    else if (k->type == K_BC && !strcmp(value, "lagrangian")) mode = MPM_BC_LAGRANGIAN;
+    else if (k->type == K_BC && !strcmp(value, "both")) mode = MPM_BC_BOTH;
+    else if (k->type == K_BC && !strcmp(value, "consistent")) mode = MPM_BC_CONSISTENT;
+    else if (k->type == K_HEAD && !strcmp(value, "rigid")) mode = MPM_HEAD_RIGID;
+    else if (k->type == K_HEAD && !strcmp(value, "none")) mode = MPM_HEAD_NONE;
     else if (k->type == K_MOTION && !strcmp(value, "stretch")) mode = MPM_GRID_STRETCH;
     else if (k->type == K_MOTION && !strcmp(value, "fixed")) mode = MPM_GRID_FIXED;
     else if (k->type == K_SHAPE && !strcmp(value, "linear")) mode = MPM_SHAPE_LINEAR;
@@ -515,5 +527,11 @@ int ver_scene_load(const char *path, ver_scene *vs, char *err, size_t errlen)
 {
   const int r = ver_scene_parse(path, vs, err, errlen);
   return r ? r : ver_scene_validate(vs, err, errlen);
+}
+
+double ver_scene_vib_period(const mpm_scene *sc)
+{
+  const double c = sqrt(sc->E / sc->rho), k = sc->vib_mode * 3.14159265358979323846 / sc->L;
+  return 2.0 * sc->L / (sc->vib_mode * c) * sqrt(1.0 + sc->nu * sc->nu * k * k * sc->H * sc->H / 12.0);
 }
 

@@ -51,6 +51,12 @@ int ver_scene_set(ver_scene *vs, const char *assignment, char *err, size_t errle
 /* Checks presence, ranges, the rules between keys (h divides L and H, ppc a square,
  * the CFL bound, sizes the kernel can allocate) and fills the defaults.  Returns 0 or 2. */
 int ver_scene_validate(ver_scene *vs, char *err, size_t errlen);
+/* The period of the scene's axial mode m (vibration.mode) of the bar held in x at both
+ * ends: 2 L / (m c), c = sqrt(E / rho) (uniaxial stress: plane stress with free lateral
+ * faces), times Love's correction for the lateral inertia of the Poisson contraction,
+ * sqrt(1 + nu^2 k^2 r^2), k = m pi / L, r^2 = H^2 / 12 (the strip's lateral radius of
+ * gyration).  For the default bar, mode 1, the correction is +0.07 %. */
+double ver_scene_vib_period(const mpm_scene *sc);
 /* Case id: scene, h and ppc, then every override but grid.h, grid.ppc and a time.dt
  * that only keeps the file's Courant number, e.g. "fig6-h4-ppc4" or
  * "fig6-h8-ppc1-material.E=2048" (the last value of each key; numbers in their shortest

@@ -41,7 +41,8 @@ static int check_present(ver_scene *vs, char *err, size_t errlen)
   mpm_scene *sc = &vs->sc;
   char at[600];
   for (int i = 0; i < ver_scene_nkeys; i++) {
-    const int need = ver_scene_keys[i].required == 1 || (ver_scene_keys[i].required == 2 && sc->model > 0);
+    const int need = ver_scene_keys[i].required == 1 || (ver_scene_keys[i].required == 2 && sc->model > 0) ||
+                     (ver_scene_keys[i].required == 3 && sc->vib_mode == 0);
     if (need && !vs->seen[i]) {
       const int si = ver_scene_key_section(ver_scene_keys[i].section);
       snprintf(err, errlen, "%s: %s.%s: missing%s%s%s (%s)", ver_scene_key_at(vs, i, at, sizeof at), ver_scene_keys[i].section,
@@ -56,6 +57,16 @@ static int check_present(ver_scene *vs, char *err, size_t errlen)
     sc->imp_x = 0.5 * sc->L;
   if (!vs->seen[ver_scene_key_idx("imperfection", "y")])
     sc->imp_y = 0.5 * sc->H;
+  if (sc->vib_mode > 0) {
+    /* free vibration: the run lasts vibration.periods periods of the mode (unless
+     * run.end_delta, e.g. --until, says otherwise), with 64 rows a period unless
+     * output.interval says otherwise */
+    const double T = ver_scene_vib_period(sc);
+    if (!vs->seen[ver_scene_key_idx("run", "end_delta")])
+      sc->end_delta = sc->speed * sc->vib_periods * T;
+    if (vs->interval <= 0)
+      vs->interval = sc->speed * T / 64.0;
+  }
   if (vs->interval <= 0)
     vs->interval = 0.0005;
   return 0;

@@ -59,17 +59,19 @@ static const char *enum_word(ktype t, int v)
 {
   switch (t) {
   case K_LE: return v == MPM_LE_PARTICLE ? "particle" : v == MPM_LE_STAIRCASE ? "staircase" : "cell";
-  case K_SCHEME: return v == MPM_SCHEME_MUSL ? "musl" : "usl";
+  case K_SCHEME: return v == MPM_SCHEME_MUSL ? "musl" : v == MPM_SCHEME_USF ? "usf" : v == MPM_SCHEME_USAVG ? "usavg" : "usl";
   case K_MOTION: return v == MPM_GRID_STRETCH ? "stretch" : "fixed";
   case K_SHAPE: return v == MPM_SHAPE_GIMP ? "gimp" : "linear";
   case K_FIELDS: return v == MPM_FIELDS_TWO ? "two" : "one";
+  case K_BC: return v == MPM_BC_BOTH ? "both" : v == MPM_BC_CONSISTENT ? "consistent" : "lagrangian";
+  case K_HEAD: return v == MPM_HEAD_NONE ? "none" : "rigid";
   default: return "";
   }
 }
 
 static int is_enum(ktype t)
 {
-  return t == K_LE || t == K_SCHEME || t == K_MOTION || t == K_SHAPE || t == K_FIELDS;
+  return t == K_LE || t == K_SCHEME || t == K_MOTION || t == K_SHAPE || t == K_FIELDS || t == K_BC || t == K_HEAD;
 }
 
 int ver_scene_write_ini(const ver_scene *vs, FILE *f)

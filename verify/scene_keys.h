@@ -10,7 +10,7 @@
 
 #include "scene.h"
 
-typedef enum { K_DBL, K_INT, K_LE, K_SCHEME, K_MOTION, K_SHAPE, K_FIELDS, K_LIST } ktype;
+typedef enum { K_DBL, K_INT, K_LE, K_SCHEME, K_MOTION, K_SHAPE, K_FIELDS, K_BC, K_HEAD, K_LIST } ktype;
 
 /* Range kinds: (lo, hi) open, [lo, hi) half open, etc. encoded by flags. */
 enum { LO_OPEN = 1, LO_CLOSED = 2, HI_OPEN = 4, HI_CLOSED = 8 };
@@ -19,7 +19,8 @@ typedef struct {
   const char *section, *key;
   ktype type;
   size_t off;          /* offset in ver_scene (K_DBL, K_INT, K_LE, ...) */
-  int required;        /* 1 always, 2 only when decohesion.model > 0, 0 optional */
+  int required;        /* 1 always, 2 only when decohesion.model > 0, 3 unless
+                          vibration.mode > 0, 0 optional */
   double lo, hi;
   int range;           /* LO_* | HI_* */
   double def;          /* default when optional */

@@ -32,6 +32,16 @@ static const struct {
   {"KE_final", offsetof(ver_summary, KE_final), F_DBL},
   {"SE_final", offsetof(ver_summary, SE_final), F_DBL},
   {"energy_residual", offsetof(ver_summary, energy_residual), F_DBL},
+  {"energy_unbooked", offsetof(ver_summary, energy_unbooked), F_DBL},
+  {"L_bc_final", offsetof(ver_summary, L_bc_final), F_DBL},
+  {"L_flip_final", offsetof(ver_summary, L_flip_final), F_DBL},
+  {"L_scheme_final", offsetof(ver_summary, L_scheme_final), F_DBL},
+  {"W_head_final", offsetof(ver_summary, W_head_final), F_DBL},
+  {"energy_start", offsetof(ver_summary, energy_start), F_DBL},
+  {"energy_kept", offsetof(ver_summary, energy_kept), F_DBL},
+  {"period", offsetof(ver_summary, period), F_DBL},
+  {"period_exact", offsetof(ver_summary, period_exact), F_DBL},
+  {"period_error", offsetof(ver_summary, period_error), F_DBL},
   {"delta_end", offsetof(ver_summary, delta_end), F_DBL},
   {"steps", offsetof(ver_summary, steps), F_LONG},
   {"particles", offsetof(ver_summary, particles), F_SIZE},
@@ -60,7 +70,10 @@ int ver_summary_write(const char *dir, const ver_scene *vs, const ver_summary *u
                                    : vs->sc.le_mode == MPM_LE_STAIRCASE ? "staircase"
                                                                         : "cell");
   cJSON_AddStringToObject(o, "fields", vs->sc.fields == MPM_FIELDS_TWO ? "two" : "one");
-  cJSON_AddStringToObject(o, "scheme", vs->sc.scheme == MPM_SCHEME_MUSL ? "musl" : "usl");
+  static const char *const schemes[] = {"usl", "musl", "usf", "usavg"};
+  static const char *const bcs[] = {"lagrangian", "both", "consistent"};
+  cJSON_AddStringToObject(o, "scheme", schemes[vs->sc.scheme]);
+  cJSON_AddStringToObject(o, "bc", bcs[vs->sc.bc]);
   cJSON_AddStringToObject(o, "shape", vs->sc.shape == MPM_SHAPE_GIMP ? "gimp" : "linear");
   cJSON_AddNumberToObject(o, "separation_threshold", vs->sc.sep_threshold);
   cJSON_AddBoolToObject(o, "complete", u->complete);

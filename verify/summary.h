@@ -18,7 +18,13 @@ typedef struct {
   double delta_sep_load;         /* first delta after the peak with the windowed |P| < sep_load * peak */
   double k_elastic;              /* least-squares slope of P(delta) for 0.1-0.6 peak before the peak */
   double D_final, W_ext_final, W_coh_final, KE_final, SE_final;
-  double energy_residual;        /* max |W_ext - KE - SE - W_coh| / max(W_ext) over the rows */
+  double energy_residual;        /* max |W_ext + E0 - KE - SE - W_coh - booked| / max(max W_ext, E0) over
+                                    the rows: what the energy ledger does not explain */
+  double energy_unbooked;        /* the same without the booked terms                */
+  double L_bc_final, L_flip_final, L_scheme_final, W_head_final; /* the ledger (mpm.h) */
+  double energy_start;           /* E0 = KE + SE at the start                        */
+  double energy_kept;            /* (KE + SE) at the end over E0                     */
+  double period, period_exact, period_error; /* vibration: measured, 2 L / (m c) corrected, error */
   double delta_end;              /* where the run stopped                            */
   long steps;
   size_t particles;
@@ -37,7 +43,7 @@ typedef struct {
  * goes away (new keys and columns may join without a raise). */
 #define VER_SCHEMA_SUMMARY 1
 #define VER_SCHEMA_LOAD 1
-#define VER_SCHEMA_ENERGY 1
+#define VER_SCHEMA_ENERGY 2 /* 2: the ledger columns L_bc, L_flip, L_scheme, W_head */
 #define VER_SCHEMA_PARTICLES 1
 #define VER_SCHEMA_VERIFY 1     /* verify.json and verify.csv                       */
 #define VER_SCHEMA_CHECK 1      /* check.json                                        */
@@ -51,7 +57,7 @@ typedef struct {
   double h, dt, sep_threshold;
   int ppc;
   char le[16];                   /* "cell" or "particle"                             */
-  char scheme[16];               /* "usl" or "musl"                                  */
+  char scheme[16];               /* "usl", "musl", "usf" or "usavg"                  */
   char shape[16];                /* "linear" or "gimp"                               */
   char error[512];               /* "" if none                                       */
   ver_summary u;                 /* numbers missing from the file read as NaN        */

@@ -435,7 +435,7 @@ static void test_mpm_bar_scene_check(void **state)
   sc = ok; sc.ppc = 3; expect_einval(&sc, "ppc");
   sc = ok; sc.ppc = 0; expect_einval(&sc, "ppc");
   sc = ok; sc.margin = -1.0; expect_einval(&sc, "margin");
-  sc = ok; sc.scheme = 2; expect_einval(&sc, "scheme");
+  sc = ok; sc.scheme = 4; expect_einval(&sc, "scheme");
   sc = ok; sc.shape = 2; expect_einval(&sc, "shape");
   sc = ok; sc.dt = 0.0; expect_einval(&sc, "dt");
   sc = ok; sc.speed = 0.0; expect_einval(&sc, "speed");
