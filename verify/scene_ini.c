@@ -156,6 +156,10 @@ void ver_scene_keys_markdown(FILE *f)
     else
       snprintf(def, sizeof def, "%g", k->def);
     fprintf(f, "| %s | %s | %s | %s | %s | %s |\n", k->section, k->key, type_name(k->type),
-            k->required == 1 ? "yes" : k->required == 2 ? "when decohesion.model > 0" : "no", k->allowed, def);
+            k->required == 1   ? "yes"
+            : k->required == 2 ? "when decohesion.model > 0"
+            : k->required == 3 ? "unless vibration.mode > 0"
+                               : "no",
+            k->allowed, def);
   }
 }
