@@ -37,7 +37,8 @@ static void usage(FILE *f)
              "  --cache DIR    where runs are kept and reused (default out/report)\n"
              "  --scenes DIR   scene files (default: $DELAM_SCENES, ./data/scenes, or the\n"
              "                 installed or source tree's scenes)\n"
-             "  --gp DIR       gnuplot scripts and text/ templates (default reports)\n"
+             "  --gp DIR       gnuplot scripts and text/ templates (default: $DELAM_REPORTS,\n"
+             "                 ./reports, or the installed or source tree's)\n"
              "  --jobs N       runs at once (default 2)\n"
              "  --rerun        ignore cached runs\n"
              "  --help         this text\n"
@@ -53,7 +54,8 @@ static int parse_args(int argc, char **argv, report *R)
   snprintf(r->cache, sizeof r->cache, "out/report");
   const char *scenes = ver_scene_dir();
   snprintf(r->scenes, sizeof r->scenes, "%s", scenes ? scenes : "data/scenes");
-  snprintf(r->gpdir, sizeof r->gpdir, "reports");
+  const char *gp = ver_report_dir();
+  snprintf(r->gpdir, sizeof r->gpdir, "%s", gp ? gp : "reports");
   r->jobs = 2;
   for (int i = 1; i < argc; i++) {
     const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;

@@ -38,6 +38,30 @@ static void exe_relative(char *out, size_t len)
   snprintf(out, len, "%.4000s/../share/delam/scenes", exe);
 }
 
+const char *ver_report_dir(void)
+{
+  static char found[4200]; /* holds the answer; valid until the next call */
+  const char *env = getenv("DELAM_REPORTS");
+  if (is_dir(env)) {
+    snprintf(found, sizeof found, "%s", env);
+    return found;
+  }
+  if (is_file("reports/common.gp"))
+    return "reports";
+  exe_relative(found, sizeof found);
+  char *scenes = strstr(found, "/scenes");
+  if (scenes) {
+    snprintf(scenes, sizeof found - (size_t)(scenes - found), "/reports");
+    if (is_dir(found))
+      return found;
+  }
+  if (is_dir(DELAM_INSTALLED_REPORTS))
+    return DELAM_INSTALLED_REPORTS;
+  if (is_dir(DELAM_SOURCE_REPORTS))
+    return DELAM_SOURCE_REPORTS;
+  return NULL;
+}
+
 const char *ver_scene_dir(void)
 {
   /* holds the answer; valid until the next call */

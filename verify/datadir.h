@@ -12,6 +12,11 @@
  * DESTDIR); the installed data folder; the source tree's data/scenes.  NULL if none. */
 const char *ver_scene_dir(void);
 
+/* The gnuplot scripts and text templates of `delam report`, the first that exists of:
+ * $DELAM_REPORTS; ./reports (holding common.gp); <program>/../share/delam/reports; the
+ * installed one; the source tree's reports/.  NULL if none. */
+const char *ver_report_dir(void);
+
 /* A scene argument: an existing file as given; otherwise a name ("fig6" or
  * "fig6.ini") in ver_scene_dir().  Writes the path to out; 0, or 2 with a message in
  * err naming the folders tried. */
