@@ -9,6 +9,8 @@ do for [h in "8 4 2 1"] {
     labs = labs.' "h = '.h.((h eq '2') ? ', scene file' : '').value(key.'_note').'"'
   }
 }
+# the paper's method beside the scene file's, where they differ (same grid)
+if (strlen(paper_fig7) > 0) { ids = ids.' '.paper_fig7; labs = labs.' "h = 2, paper method"' }
 set title sprintf("Fig. 7(d): fig7.ini, Mode I, {/Symbol a} = 60, %s 1 ppc (analytic g = %.3g)", word(pic_fig7_method, 1), g_fig7)
 sc = 'fig7'; xmax = 2.1
 load gpdir.'/loadcurves.gp'

@@ -9,6 +9,8 @@ do for [h in "8 4 2 1"] {
     labs = labs.' "h = '.h.((h eq '2') ? ', scene file' : '').value(key.'_note').'"'
   }
 }
+# the paper's method beside the scene file's, where they differ (same grid)
+if (strlen(paper_fig8) > 0) { ids = ids.' '.paper_fig8; labs = labs.' "h = 2, paper method"' }
 set title sprintf("Fig. 8(c): fig8.ini, Mode II, {/Symbol a} = 60, %s 1 ppc (analytic g = %.3g: snapback)", word(pic_fig8_method, 1), g_fig8)
 sc = 'fig8'; xmax = 2.1
 load gpdir.'/loadcurves.gp'

@@ -24,6 +24,7 @@ enum {
   REP_SNAP = 8,     /* snapback scenes                                        */
   REP_SEP = 16,     /* separation threshold                                   */
   REP_SCHEME = 32,  /* usl vs musl                                            */
+  REP_PAPER = 64,   /* a paper scene with the paper's method (bilinear, one field, Le = cell) */
 };
 
 /* Outcome of a time-step sweep point. */
@@ -37,7 +38,7 @@ typedef struct {
   int ppc;              /* particles per cell                                                */
   double dt;            /* time step; 0: the scene's, scaled with h                          */
   double until;         /* --until; 0: the scene's stop rule                                  */
-  char set[2][64];      /* --set overrides                                                    */
+  char set[4][64];      /* --set overrides                                                    */
   int nset;
   int allow_unstable;   /* pass --allow-unstable; a failed run is then a result, not an error */
   int role;             /* REP_* mask                                                         */
@@ -58,6 +59,7 @@ typedef struct {
   double particles;
   char error[256];      /* summary.json "error", if any                                       */
   char scheme[16];      /* "usl" or "musl" (summary.json)                                     */
+  char shape[16], fields[16], le[16]; /* "linear"/"gimp", "one"/"two", "cell"/... (summary.json) */
   double sep_threshold; /* the run's separation threshold (summary.json)                     */
   /* measured here against the analytic bar */
   ana_bar bar;          /* the scene's analytic bar                                          */
@@ -163,7 +165,12 @@ void ver_report_abs(const char *path, char *out, size_t len);
 /* Adds a case (id made from the parameters); returns its index or -1 if full. */
 int ver_report_add(rep_ctx *r, const char *scene, double h, int ppc, double dt, double until,
                    const char *set1, const char *set2, int role, double tag);
+/* The same with up to 4 overrides. */
+int ver_report_add_sets(rep_ctx *r, const char *scene, double h, int ppc, double dt, double until,
+                        const char *const *sets, int nset, int role, double tag);
 int ver_report_find(const rep_ctx *r, const char *id);
+/* The method of a run in words: "MUSL, bilinear, one field, Le = cell" (report_data.c). */
+void ver_report_method(const rep_case *c, char *buf, size_t len);
 /* Looks for results (from, then cache), runs the missing cases jobs at a time with
  * progress on stderr.  Returns the number of cases that could not be run at all. */
 int ver_report_run_cases(rep_ctx *r);

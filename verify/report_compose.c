@@ -67,9 +67,10 @@ static void table_role(report *R, int mask)
     const rep_case *c = &R->r.c[i];
     if (!(c->role & mask) || !c->have)
       continue;
-    char a[32], b[32], d[32], e[32], f[32], g[32];
+    char a[32], b[32], d[32], e[32], f[32], g[32], m[128];
+    ver_report_method(c, m, sizeof m);
     rep_table_row(t, c->complete ? REP_ROW_PLAIN : REP_ROW_FAIL, "%s\t%s\t%s\t%s (%s)\t%s\t%s (%.4g)\t%s\t%s", c->id,
-                  !strcmp(c->scheme, "musl") ? "MUSL" : "USL", num(c->bar.g, a, sizeof a),
+                  m, num(c->bar.g, a, sizeof a),
                   num(c->peak_P, b, sizeof b), num(c->bar.Pmax, d, sizeof d), num(c->drop_width, e, sizeof e),
                   num(c->D_final, f, sizeof f), c->bar.D_sep, num(c->curve_err, g, sizeof g),
                   c->complete ? "complete" : "stopped early");
@@ -87,9 +88,10 @@ static void table_runs(report *R)
       rep_table_row(t, REP_ROW_FAIL, "%s\t\tno result\t\t\t\t\t\t\t", c->id);
       continue;
     }
-    char a[32], b[32], d[32], e[32];
+    char a[32], b[32], d[32], e[32], m[128];
+    ver_report_method(c, m, sizeof m);
     rep_table_row(t, c->complete || (c->role & REP_STAB) ? REP_ROW_PLAIN : REP_ROW_FAIL,
-                  "%s\t%s\t%s\t%.3g\t%s\t%s\t%s\t%s\t%.3g\t%s", c->id, !strcmp(c->scheme, "musl") ? "MUSL" : "USL",
+                  "%s\t%s\t%s\t%.3g\t%s\t%s\t%s\t%s\t%.3g\t%s", c->id, m,
                   c->complete ? "yes" : "NO", c->delta_end, num(c->peak_P, a, sizeof a),
                   num(c->delta_peak, b, sizeof b), num(c->D_final, d, sizeof d), num(c->curve_err, e, sizeof e),
                   c->cpu_s, c->reused ? "reused" : "run now");

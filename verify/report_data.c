@@ -38,6 +38,9 @@ int ver_report_read_summary(rep_case *c)
   c->particles = (double)u->particles;
   c->sep_threshold = d.sep_threshold;
   snprintf(c->scheme, sizeof c->scheme, "%s", d.scheme);
+  snprintf(c->shape, sizeof c->shape, "%s", d.shape);
+  snprintf(c->fields, sizeof c->fields, "%s", d.fields);
+  snprintf(c->le, sizeof c->le, "%s", d.le);
   snprintf(c->error, sizeof c->error, "%.255s", d.error);
   return 0;
 }
@@ -88,4 +91,11 @@ void ver_report_measure(const rep_ctx *r, rep_case *c)
   }
   free(d);
   free(P);
+}
+
+void ver_report_method(const rep_case *c, char *buf, size_t len)
+{
+  snprintf(buf, len, "%s, %s, %s field%s, Le = %s", !strcmp(c->scheme, "musl") ? "MUSL" : "USL",
+           !strcmp(c->shape, "gimp") ? "uGIMP" : "bilinear", c->fields[0] ? c->fields : "one",
+           !strcmp(c->fields, "two") ? "s" : "", c->le[0] ? c->le : "cell");
 }

@@ -216,8 +216,10 @@ static void write_vars_case(FILE *vars, const char *key, const rep_case *c)
   fprintf(vars, "%s = \"%s\"\n%s_hw = %.6g\n", key, c ? c->id : "", key, c ? 0.5 * c->h / sqrt(c->ppc) : 1.0);
   fprintf(vars, "%s_end = %.6g\n", key, c && c->have ? c->delta_end : 0.0);
   fprintf(vars, "%s_speed = %.6g\n", key, c && c->speed > 0 ? c->speed : 1.0);
-  fprintf(vars, "%s_method = \"%s, h = %g, %d ppc\"\n", key, c && !strcmp(c->scheme, "musl") ? "MUSL" : "USL",
-          c ? c->h : 0.0, c ? c->ppc : 0);
+  char m[128] = "";
+  if (c)
+    ver_report_method(c, m, sizeof m);
+  fprintf(vars, "%s_method = \"%s, h = %g, %d ppc\"\n", key, m, c ? c->h : 0.0, c ? c->ppc : 0);
 }
 
 /* The largest lambda in the snapshots ds of case c (1 if none is read): the top of the
@@ -271,6 +273,8 @@ void ver_report_write_data(report *R)
   write_vars_case(vars, "pic_fig6", ver_report_first(r, REP_PIC, "fig6"));
   write_vars_case(vars, "pic_fig7", ver_report_first(r, REP_PIC, "fig7"));
   write_vars_case(vars, "pic_fig8", ver_report_first(r, REP_PIC, "fig8"));
+  write_vars_case(vars, "paper_fig7", ver_report_first(r, REP_PAPER, "fig7"));
+  write_vars_case(vars, "paper_fig8", ver_report_first(r, REP_PAPER, "fig8"));
   static const double f7a[4] = {0.24, 0.25, 0.26, 0.28};
   fprintf(vars, "lam_max_fig7a = %.6g\n", max_lambda(ver_report_first(r, REP_PIC, "fig7"), f7a, 4));
   fprintf(vars, "dt_crit8 = %.6g\nhave_musl = %d\n", ver_report_dt_crit(r, "fig6", 8), r->have_musl);

@@ -47,16 +47,21 @@ static void id_suffix(char *id, size_t len, const char *set)
 int ver_report_add(rep_ctx *r, const char *scene, double h, int ppc, double dt, double until,
                    const char *set1, const char *set2, int role, double tag)
 {
+  const char *sets[2] = {set1, set2};
+  return ver_report_add_sets(r, scene, h, ppc, dt, until, sets, set2 ? 2 : set1 ? 1 : 0, role, tag);
+}
+
+int ver_report_add_sets(rep_ctx *r, const char *scene, double h, int ppc, double dt, double until,
+                        const char *const *sets, int nset, int role, double tag)
+{
   char id[96];
   snprintf(id, sizeof id, "%s-h%g-ppc%d", scene, h, ppc);
   if (until > 0)
     snprintf(id + strlen(id), sizeof id - strlen(id), "-u%g", until);
   if (dt > 0)
     snprintf(id + strlen(id), sizeof id - strlen(id), "-dt%.4g", dt);
-  if (set1)
-    id_suffix(id, sizeof id, set1);
-  if (set2)
-    id_suffix(id, sizeof id, set2);
+  for (int j = 0; j < nset && j < 4; j++)
+    id_suffix(id, sizeof id, sets[j]);
   const int k = ver_report_find(r, id);
   if (k >= 0) {
     r->c[k].role |= role;
@@ -72,10 +77,8 @@ int ver_report_add(rep_ctx *r, const char *scene, double h, int ppc, double dt, 
   c->ppc = ppc;
   c->dt = dt;
   c->until = until;
-  if (set1)
-    snprintf(c->set[c->nset++], sizeof c->set[0], "%s", set1);
-  if (set2)
-    snprintf(c->set[c->nset++], sizeof c->set[0], "%s", set2);
+  for (int j = 0; j < nset && j < 4; j++)
+    snprintf(c->set[c->nset++], sizeof c->set[0], "%s", sets[j]);
   c->allow_unstable = (role & REP_STAB) != 0;
   c->role = role;
   c->tag = tag;

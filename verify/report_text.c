@@ -68,7 +68,8 @@ static void case_vars(report *R, const char *key, const rep_case *c)
   }
   char buf[400];
   word(R, key, "id", c->id);
-  word(R, key, "method", !strcmp(c->scheme, "musl") ? "MUSL" : "USL");
+  ver_report_method(c, buf, sizeof buf);
+  word(R, key, "method", buf);
   num(R, key, "h", c->h);
   num(R, key, "ppc", c->ppc);
   num(R, key, "peak_P", c->peak_P);
@@ -140,6 +141,9 @@ static void pic_vars(report *R)
   static const char *const sc[3] = {"fig6", "fig7", "fig8"};
   for (int i = 0; i < 3; i++) {
     char key[32];
+    snprintf(key, sizeof key, "paper_%s", sc[i]);
+    const rep_case *pc = ver_report_first(r, REP_PAPER, sc[i]);
+    case_vars(R, key, pc ? pc : ver_report_first(r, REP_PIC, sc[i]));
     snprintf(key, sizeof key, "pic_%s", sc[i]);
     const rep_case *c = ver_report_first(r, REP_PIC, sc[i]);
     case_vars(R, key, c);

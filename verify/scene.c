@@ -523,12 +523,6 @@ int ver_scene_set(ver_scene *vs, const char *assignment, char *err, size_t errle
   return 0;
 }
 
-int ver_scene_load(const char *path, ver_scene *vs, char *err, size_t errlen)
-{
-  const int r = ver_scene_parse(path, vs, err, errlen);
-  return r ? r : ver_scene_validate(vs, err, errlen);
-}
-
 double ver_scene_vib_period(const mpm_scene *sc)
 {
   const double c = sqrt(sc->E / sc->rho), k = sc->vib_mode * 3.14159265358979323846 / sc->L;

@@ -2,7 +2,8 @@
  * scene_check.c - validation of a parsed scene (scene.h: ver_scene_validate): every
  * key present that must be, the rules between keys (h divides L and H, ppc a square,
  * the CFL bound), sizes the kernel can allocate, and the kernel's own check; one line
- * file:line: section.key: what is wrong (what is allowed).
+ * file:line: section.key: what is wrong (what is allowed).  And ver_scene_load: parse,
+ * then validate.
  */
 #include <assert.h>
 #include <math.h>
@@ -179,3 +180,8 @@ int ver_scene_validate(ver_scene *vs, char *err, size_t errlen)
   return 0;
 }
 
+int ver_scene_load(const char *path, ver_scene *vs, char *err, size_t errlen)
+{
+  const int r = ver_scene_parse(path, vs, err, errlen);
+  return r ? r : ver_scene_validate(vs, err, errlen);
+}

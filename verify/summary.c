@@ -161,6 +161,7 @@ int ver_summary_read(const char *dir, ver_summary_doc *d)
   jstr(o, "Le", d->le, sizeof d->le);
   jstr(o, "scheme", d->scheme, sizeof d->scheme);
   jstr(o, "shape", d->shape, sizeof d->shape);
+  jstr(o, "fields", d->fields, sizeof d->fields);
   jstr(o, "error", d->error, sizeof d->error);
   d->h = jnum(o, "h");
   d->dt = jnum(o, "dt");

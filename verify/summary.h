@@ -59,6 +59,7 @@ typedef struct {
   char le[16];                   /* "cell" or "particle"                             */
   char scheme[16];               /* "usl", "musl", "usf" or "usavg"                  */
   char shape[16];                /* "linear" or "gimp"                               */
+  char fields[16];               /* "one" or "two" velocity fields                   */
   char error[512];               /* "" if none                                       */
   ver_summary u;                 /* numbers missing from the file read as NaN        */
 } ver_summary_doc;
