@@ -6,7 +6,8 @@
  * Input (docs/output-formats.md, "Checking a run of another code"):
  *   DIR/load.csv     required: a header naming at least delta and P_grip (P_fixed is
  *                    used when present), then one row per output time;
- *   DIR/energy.csv   optional: W_ext, KE, SE, W_coh, D; gives the dissipation and the
+ *   DIR/energy.csv   optional: W_ext, KE, SE, W_coh, D (and delam's ledger L_bc, L_flip,
+ *                    L_scheme, W_head where present); gives the dissipation and the
  *                    energy balance; without it the external work is the area under
  *                    the load-deflection curve and those two checks are left out;
  *   DIR/final.csv    optional (or --particles FILE): the final particles, x0, y0 and
@@ -267,12 +268,12 @@ static void measure(ver_case *c, const table *ld, const table *en, const table *
     const size_t m = (size_t)en->n;
     c->W_ext_final = en->col[0][m - 1];
     c->D_final = en->col[4][m - 1];
-    double wmax = 0.0, res = 0.0;
-    for (size_t i = 0; i < m; i++)
-      wmax = fmax(wmax, fabs(en->col[0][i]));
-    for (size_t i = 0; i < m && wmax > 0; i++)
-      res = fmax(res, fabs(en->col[0][i] - en->col[1][i] - en->col[2][i] - en->col[3][i]) / wmax);
-    c->energy_residual = wmax > 0 ? res : NAN;
+    /* delam's own definition; the ledger columns count where the file has them, and
+     * the energy at the start is that of the first row less the work done by then */
+    const double *e[8] = {en->col[0], en->col[1], en->col[2], en->col[3], en->col[5], en->col[6], en->col[7],
+                          en->col[8]};
+    const double E0 = fmax(0.0, en->col[1][0] + en->col[2][0] - en->col[0][0]);
+    c->energy_residual = ver_energy_residual(e, m, E0, NULL);
   } else { /* the external work is the area under the load-deflection curve */
     double w = 0.5 * P[0] * d[0];
     for (size_t i = 1; i < n; i++)
@@ -392,7 +393,7 @@ int ver_cmd_check(int argc, char **argv)
   snprintf(c.id, sizeof c.id, "%.100s", dir);
 
   static const char *const lnames[] = {"delta", "P_grip", "P_fixed"};
-  static const char *const enames[] = {"W_ext", "KE", "SE", "W_coh", "D"};
+  static const char *const enames[] = {"W_ext", "KE", "SE", "W_coh", "D", "L_bc", "L_flip", "L_scheme", "W_head"};
   static const char *const pnames[] = {"x0", "y0", "lambda"};
   char path[1400], ppath[1400];
   table ld, en, pt;
@@ -405,7 +406,7 @@ int ver_cmd_check(int argc, char **argv)
     return 2;
   }
   snprintf(path, sizeof path, "%s/energy.csv", dir);
-  r = read_table(path, enames, 5, 5, &en, err, sizeof err);
+  r = read_table(path, enames, 9, 5, &en, err, sizeof err);
   if (r == 2) {
     fprintf(stderr, PROG ": %s\n", err);
     table_free(&ld);

@@ -190,6 +190,24 @@ double ver_angle_diff(double a_deg, double b_deg)
   return d;
 }
 
+double ver_energy_residual(const double *const e[8], size_t n, double E0, double *raw)
+{
+  double wmax = E0, res = 0.0, r0 = 0.0;
+  for (size_t i = 0; i < n; i++)
+    wmax = fmax(wmax, fabs(e[0][i]));
+  for (size_t i = 0; i < n && wmax > 0; i++) {
+    const double miss = e[0][i] + E0 - e[1][i] - e[2][i] - e[3][i];
+    double left = miss; /* less each booked term in turn */
+    for (int j = 4; j < 8; j++)
+      left -= e[j] ? e[j][i] : 0.0;
+    r0 = fmax(r0, fabs(miss) / wmax);
+    res = fmax(res, fabs(left) / wmax);
+  }
+  if (raw)
+    *raw = r0;
+  return res;
+}
+
 double ver_spread(const double *v, size_t n)
 {
   if (n == 0)

@@ -65,6 +65,14 @@ double ver_angle_diff(double a_deg, double b_deg);
  * (if not NULL) gets log C.  NaN if fewer than 2 distinct h or any e <= 0. */
 double ver_conv_order(const double *h, const double *e, size_t n, double *logc);
 
+/* The energy balance W_ext + E0 = KE + SE + W_coh + booked over n rows, E0 the energy
+ * at the start (KE + SE) and booked the ledger's terms L_bc + L_flip + L_scheme + W_head
+ * (mpm.h): its largest miss over the larger of max |W_ext| and E0.  The columns are
+ * e[0..7] = W_ext, KE, SE, W_coh, L_bc, L_flip, L_scheme, W_head; a NULL ledger column
+ * counts as 0.  *raw (if not NULL) gets the miss without the booked terms.  0 if there is
+ * no energy at all. */
+double ver_energy_residual(const double *const e[8], size_t n, double E0, double *raw);
+
 /* (max - min) / mean; NaN if n == 0 or the mean is 0. */
 double ver_spread(const double *v, size_t n);
 

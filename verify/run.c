@@ -288,22 +288,25 @@ static int take_snapshots(run_state *r, double delta, char *err, size_t errlen)
   return rc;
 }
 
-/* The balance W_ext + KE(0) + SE(0) = KE + SE + W_coh + booked (the ledger, mpm.h):
- * its largest miss over the rows, over the larger of max |W_ext| and E0 = KE(0) + SE(0),
- * is the energy residual, what the ledger does not explain; *raw gets the same without
- * the booked terms. */
+/* The energy residual of the rows (metrics.h: the one definition, also `delam check`'s). */
 static double energy_residual(const row *rows, long n, double E0, double *raw)
 {
-  double wmax = E0, res = 0.0, r0 = 0.0;
-  for (long i = 0; i < n; i++)
-    wmax = fmax(wmax, fabs(rows[i].e.W_ext));
-  for (long i = 0; i < n && wmax > 0; i++) {
-    const mpm_energy *q = &rows[i].e;
-    const double miss = q->W_ext + E0 - q->KE - q->SE - q->W_coh;
-    r0 = fmax(r0, fabs(miss) / wmax);
-    res = fmax(res, fabs(miss - q->L_bc - q->L_flip - q->L_scheme - q->W_head) / wmax);
+  double *buf = malloc(8 * (size_t)(n + 1) * sizeof *buf), res;
+  if (!buf) {
+    *raw = NAN;
+    return NAN;
   }
-  *raw = r0;
+  const double *e[8];
+  for (int j = 0; j < 8; j++)
+    e[j] = buf + (size_t)j * (size_t)(n + 1);
+  for (long i = 0; i < n; i++) {
+    const mpm_energy *q = &rows[i].e;
+    const double v[8] = {q->W_ext, q->KE, q->SE, q->W_coh, q->L_bc, q->L_flip, q->L_scheme, q->W_head};
+    for (int j = 0; j < 8; j++)
+      buf[(size_t)j * (size_t)(n + 1) + (size_t)i] = v[j];
+  }
+  res = ver_energy_residual(e, (size_t)n, E0, raw);
+  free(buf);
   return res;
 }
 

@@ -354,6 +354,24 @@ static void test_ver_metrics_sep_ref(void **state)
   assert_rel(ver_curve_end(&b, 1.0), b.delta_peak, 0, "snapback: the window ends at the peak");
 }
 
+/* The energy residual by hand: two rows with W_ext 1, 2, KE 0.5, 0.5, SE 0.25, 1,
+ * W_coh 0, 0.25 miss 0.25 each (over max W_ext = 2: 0.125); booking L_bc = 0.25 explains
+ * it all; E0 = 4 is the larger scale and enters the balance. */
+static void test_ver_metrics_energy_residual(void **state)
+{
+  (void)state;
+  const double W[2] = {1, 2}, KE[2] = {0.5, 0.5}, SE[2] = {0.25, 1}, Wc[2] = {0, 0.25}, Lb[2] = {0.25, 0.25};
+  const double *e[8] = {W, KE, SE, Wc, NULL, NULL, NULL, NULL};
+  double raw = -1;
+  assert_true(fabs(ver_energy_residual(e, 2, 0.0, &raw) - 0.125) < 1e-15);
+  assert_true(fabs(raw - 0.125) < 1e-15);
+  e[4] = Lb;
+  assert_true(fabs(ver_energy_residual(e, 2, 0.0, &raw) - 0.0) < 1e-15);
+  assert_true(fabs(raw - 0.125) < 1e-15);
+  /* E0 = 4: misses 4.25 and 4.25 less booked 0.25 -> 4 / 4 */
+  assert_true(fabs(ver_energy_residual(e, 2, 4.0, NULL) - 1.0) < 1e-15);
+}
+
 int main(void)
 {
   const struct CMUnitTest tests[] = {
@@ -373,6 +391,7 @@ int main(void)
     cmocka_unit_test(test_ver_metrics_curve_by_hand),
     cmocka_unit_test(test_ver_metrics_order_constant),
     cmocka_unit_test(test_ver_metrics_sep_ref),
+    cmocka_unit_test(test_ver_metrics_energy_residual),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
