@@ -53,12 +53,13 @@ int mpm_gimp_p2g_range(const mpm_grid *gg, const mpm_particles *p, size_t a, siz
     mpm_gimp_1d((y[k] - oy) * ihy, lcy, &sy);
     const size_t n0 = (size_t)sx.i0 * nny + (size_t)sy.i0;
     const double mm = pm[k], Vx = V[k] * ihx, Vy = V[k] * ihy;
-    /* lane 7: the displacement along the failure-plane normal, for the contact's gap */
-    const double un = fld ? fld->nx * (x[k] - x0[k]) + fld->ny * (y[k] - y0[k]) : 0.0;
-    const mpm_v8 P = {mm, mm * vx[k], mm * vy[k], 0.0, 0.0, 0.0, 0.0, mm * un};
     const mpm_v8 FX = {0.0, 0.0, 0.0, Vx * sxx[k], Vx * sxy[k], 0.0, 0.0, 0.0};
     const mpm_v8 FY = {0.0, 0.0, 0.0, Vy * sxy[k], Vy * syy[k], 0.0, 0.0, 0.0};
     if (mpm_fields_any(fld, n0, nny)) { /* near a separated band: the field per node */
+      /* lane 7: the displacement along the failure normal, for the contact's gap (only
+       * split nodes read it, and only particles of this path reach them) */
+      const double un = fld->nx * (x[k] - x0[k]) + fld->ny * (y[k] - y0[k]);
+      const mpm_v8 P = {mm, mm * vx[k], mm * vy[k], 0.0, 0.0, 0.0, 0.0, mm * un};
       const int side = mpm_fields_side(fld, n0, nny, &sx, &sy, x[k], y[k], g->h);
       for (int j = 0; j < 3; j++) {
         const mpm_v8 T = sy.S[j] * P - sy.dS[j] * FY, R = sy.S[j] * FX;
@@ -67,6 +68,7 @@ int mpm_gimp_p2g_range(const mpm_grid *gg, const mpm_particles *p, size_t a, siz
       }
       continue;
     }
+    const mpm_v8 P = {mm, mm * vx[k], mm * vy[k], 0.0, 0.0, 0.0, 0.0, 0.0};
     if (n0 != cur) {
       if (cur != SIZE_MAX)
         stencil_flush(nd, cur, nny, c);

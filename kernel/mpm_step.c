@@ -143,7 +143,8 @@ static inline void cell_sums_move(cell_sums *c, mpm_node *nd, size_t nny, size_t
  *   c00 = wx0 T0 + R0,  c10 = wx1 T0 - R0,  T0 = wy0 P + FY,  R0 = wy0 FX,
  *   c01 = wx0 T1 + R1,  c11 = wx1 T1 - R1,  T1 = wy1 P - FY,  R1 = wy1 FX.
  * The particles are sorted by cell, so the shares are summed per cell (cell_sums). */
-static int p2g_range(const mpm_grid *gg, const mpm_particles *p, size_t a, size_t b)
+static inline __attribute__((always_inline)) int p2g_range_impl(const mpm_grid *gg, const mpm_particles *p,
+                                                                 size_t a, size_t b, const int two)
 {
   const mpm_grid geo = *gg, *g = &geo; /* a local copy: no store below can alias it */
   const size_t nny = (size_t)g->nny;
@@ -162,14 +163,15 @@ static int p2g_range(const mpm_grid *gg, const mpm_particles *p, size_t a, size_
       continue;
     }
     const double mm = pm[k], Vx = V[k] * ihx, Vy = V[k] * ihy;
-    /* lane 7: the displacement along the failure normal (two fields' contact gap) */
-    const double un = fld ? fld->nx * (x[k] - p->x0[k]) + fld->ny * (y[k] - p->y0[k]) : 0.0;
-    const mpm_v8 P = {mm, mm * vx[k], mm * vy[k], 0.0, 0.0, 0.0, 0.0, mm * un};
     const mpm_v8 FX = {0.0, 0.0, 0.0, Vx * sxx[k], Vx * sxy[k], 0.0, 0.0, 0.0};
     const mpm_v8 FY = {0.0, 0.0, 0.0, Vy * sxy[k], Vy * syy[k], 0.0, 0.0, 0.0};
-    const mpm_v8 T0 = sh.wy0 * P + FY, R0 = sh.wy0 * FX;
-    const mpm_v8 T1 = sh.wy1 * P - FY, R1 = sh.wy1 * FX;
-    if (mpm_fields_any4(fld, sh.n00, nny)) { /* near a separated band: the field per node */
+    if (two && mpm_fields_any4(fld, sh.n00, nny)) { /* near a separated band: the field per node */
+      /* lane 7: the displacement along the failure normal, for the contact's gap (only
+       * split nodes read it, and only particles of this path reach them) */
+      const double un = fld->nx * (x[k] - p->x0[k]) + fld->ny * (y[k] - p->y0[k]);
+      const mpm_v8 P = {mm, mm * vx[k], mm * vy[k], 0.0, 0.0, 0.0, 0.0, mm * un};
+      const mpm_v8 T0 = sh.wy0 * P + FY, R0 = sh.wy0 * FX;
+      const mpm_v8 T1 = sh.wy1 * P - FY, R1 = sh.wy1 * FX;
       const size_t n[4] = {sh.n00, sh.n00 + nny, sh.n00 + 1, sh.n00 + nny + 1};
       const double w[4] = {sh.wx0 * sh.wy0, sh.wx1 * sh.wy0, sh.wx0 * sh.wy1, sh.wx1 * sh.wy1};
       const int side = mpm_fields_side4(fld, n, w, x[k], y[k], g->h);
@@ -179,6 +181,9 @@ static int p2g_range(const mpm_grid *gg, const mpm_particles *p, size_t a, size_
       node_add(mpm_fields_node(fld, nd, n[3], side), sh.wx1 * T1 - R1);
       continue;
     }
+    const mpm_v8 P = {mm, mm * vx[k], mm * vy[k], 0.0, 0.0, 0.0, 0.0, 0.0};
+    const mpm_v8 T0 = sh.wy0 * P + FY, R0 = sh.wy0 * FX;
+    const mpm_v8 T1 = sh.wy1 * P - FY, R1 = sh.wy1 * FX;
     cell_sums_move(&cs, nd, nny, sh.n00);
     cs.c00 += sh.wx0 * T0 + R0;
     cs.c10 += sh.wx1 * T0 - R0;
@@ -193,7 +198,16 @@ static int p2g_range(const mpm_grid *gg, const mpm_particles *p, size_t a, size_
  * the new momentum m_p v_p N_ip summed into lanes qx, qy.  The pass reads lanes that
  * it never writes, so one pass does both; as it scatters, it runs by colour.  Returns
  * the ledger's sum m |dv_p|^2 over the range. */
-static double musl_velocity_range(const mpm_grid *gg, mpm_particles *p, size_t a, size_t b)
+static int p2g_range(const mpm_grid *g, const mpm_particles *p, size_t a, size_t b)
+{
+  /* one loop without the two-field test, for every step before a band is cut */
+  if (g->fld && g->fld->nsplit)
+    return p2g_range_impl(g, p, a, b, 1);
+  return p2g_range_impl(g, p, a, b, 0);
+}
+
+static inline __attribute__((always_inline)) double musl_velocity_range_impl(const mpm_grid *gg, mpm_particles *p,
+                                                                             size_t a, size_t b, const int twof)
 {
   const mpm_grid geo = *gg, *g = &geo;
   const size_t nny = (size_t)g->nny;
@@ -208,7 +222,7 @@ static double musl_velocity_range(const mpm_grid *gg, mpm_particles *p, size_t a
     mpm_shape_inside(g, x[k], y[k], &sh); /* inside: checked by the first scatter */
     const double rx = sh.wx1, ry = sh.wy1;
     const size_t n00 = sh.n00, n01 = n00 + 1, n10 = n00 + nny, n11 = n10 + 1;
-    const int two = mpm_fields_any4(fld, n00, nny);
+    const int two = twof && mpm_fields_any4(fld, n00, nny);
     mpm_node *r00 = nd + n00, *r10 = nd + n10, *r01 = nd + n01, *r11 = nd + n11;
     if (two) { /* near a separated band: the particle's own side's records */
       const size_t n[4] = {n00, n10, n01, n11};
@@ -244,6 +258,13 @@ static double musl_velocity_range(const mpm_grid *gg, mpm_particles *p, size_t a
   }
   cell_sums_flush(&cs, nd, nny);
   return kp;
+}
+
+static double musl_velocity_range(const mpm_grid *g, mpm_particles *p, size_t a, size_t b)
+{
+  if (g->fld && g->fld->nsplit)
+    return musl_velocity_range_impl(g, p, a, b, 1);
+  return musl_velocity_range_impl(g, p, a, b, 0);
 }
 
 /* Scatter over the strips, colour by colour (deterministic, no atomics).  which = 0:
@@ -558,7 +579,8 @@ enum {
   G2P_X = 1,        /* x += dt sum v^L N (lanes px, py)                  */
   G2P_V = 2,        /* v += sum d N (lanes fx, fy)                       */
   G2P_STRAIN_P = 4, /* strain from lanes px, py (USL: v^L)               */
-  G2P_STRAIN_F = 8  /* strain from lanes fx, fy (MUSL: v'; USF: v_i)     */
+  G2P_STRAIN_F = 8, /* strain from lanes fx, fy (MUSL: v'; USF: v_i)     */
+  G2P_TWO = 16      /* a band is cut: test each stencil for split nodes   */
 };
 #define G2P_USL (G2P_X | G2P_V | G2P_STRAIN_P)
 #define G2P_MUSL (G2P_X | G2P_STRAIN_F)
@@ -614,7 +636,7 @@ static inline __attribute__((always_inline)) void g2p_strip_impl(mpm_sim *s, int
         mpm_gimp_1d((y[k] - g->oy) * ihy, lcy, &sy);
         mpm_v4 DX, DY;
         const size_t n0 = (size_t)sx.i0 * nny + (size_t)sy.i0;
-        if (mpm_fields_any(g->fld, n0, nny))
+        if ((mode & G2P_TWO) && mpm_fields_any(g->fld, n0, nny))
           mpm_fields_gather(g->fld, (mpm_node *)nd, nny, &sx, &sy,
                             mpm_fields_side(g->fld, n0, nny, &sx, &sy, x[k], y[k], g->h), &S, &DX, &DY);
         else
@@ -627,7 +649,7 @@ static inline __attribute__((always_inline)) void g2p_strip_impl(mpm_sim *s, int
         const double rx = sh.wx1, ry = sh.wy1;
         const size_t n00 = sh.n00, n01 = n00 + 1, n10 = n00 + nny, n11 = n10 + 1;
         const mpm_node *r00 = nd + n00, *r10 = nd + n10, *r01 = nd + n01, *r11 = nd + n11;
-        if (__builtin_expect(mpm_fields_any4(g->fld, n00, nny), 0)) { /* near a separated band */
+        if ((mode & G2P_TWO) && mpm_fields_any4(g->fld, n00, nny)) { /* near a separated band */
           const size_t n[4] = {n00, n10, n01, n11};
           const double w[4] = {sh.wx0 * sh.wy0, sh.wx1 * sh.wy0, sh.wx0 * sh.wy1, sh.wx1 * sh.wy1};
           const int side = mpm_fields_side4(g->fld, n, w, x[k], y[k], g->h);
@@ -704,6 +726,16 @@ static inline __attribute__((always_inline)) void g2p_strip_impl(mpm_sim *s, int
  * needs and the bilinear USL loop stays as it was. */
 static void g2p_strip(mpm_sim *s, int q, int mode, double frac, mpm_defer *d, mpm_dwork *dw, g2p_acc *acc)
 {
+  if (s->g->fld && s->g->fld->nsplit) { /* the loops with the two-field test, once a band is cut */
+    const int gimp = s->sc.shape == MPM_SHAPE_GIMP;
+    switch (mode) {
+    case G2P_USL: g2p_strip_impl(s, q, G2P_USL | G2P_TWO, gimp, frac, d, dw, acc); break;
+    case G2P_MUSL: g2p_strip_impl(s, q, G2P_MUSL | G2P_TWO, gimp, 1.0, d, dw, acc); break;
+    case G2P_STRAIN_F: g2p_strip_impl(s, q, G2P_STRAIN_F | G2P_TWO, gimp, frac, d, dw, acc); break;
+    case G2P_MOVE: g2p_strip_impl(s, q, G2P_MOVE | G2P_TWO, gimp, 1.0, d, dw, acc); break;
+    }
+    return;
+  }
   if (s->sc.shape == MPM_SHAPE_GIMP) {
     switch (mode) {
     case G2P_USL: g2p_strip_impl(s, q, G2P_USL, 1, frac, d, dw, acc); break;
