@@ -67,6 +67,55 @@ const keydef ver_scene_keys[] = {
 };
 const int ver_scene_nkeys = (int)(sizeof ver_scene_keys / sizeof ver_scene_keys[0]);
 
+/* The words of the enumerated keys, one row per allowed word: read by the parser, written
+ * back by ver_scene_write_ini (scene_ini.c).  The first word of a type is its fallback. */
+static const struct {
+  ktype type;
+  const char *word;
+  int value;
+} ENUMS[] = {
+  {K_LE, "cell", MPM_LE_CELL}, {K_LE, "particle", MPM_LE_PARTICLE}, {K_LE, "staircase", MPM_LE_STAIRCASE},
+  {K_SCHEME, "usl", MPM_SCHEME_USL}, {K_SCHEME, "musl", MPM_SCHEME_MUSL}, {K_SCHEME, "usf", MPM_SCHEME_USF},
+  {K_SCHEME, "usavg", MPM_SCHEME_USAVG},
+  {K_BC, "lagrangian", MPM_BC_LAGRANGIAN}, {K_BC, "both", MPM_BC_BOTH}, {K_BC, "consistent", MPM_BC_CONSISTENT},
+  {K_HEAD, "rigid", MPM_HEAD_RIGID}, {K_HEAD, "none", MPM_HEAD_NONE},
+  {K_MOTION, "fixed", MPM_GRID_FIXED}, {K_MOTION, "stretch", MPM_GRID_STRETCH},
+  {K_SHAPE, "linear", MPM_SHAPE_LINEAR}, {K_SHAPE, "gimp", MPM_SHAPE_GIMP},
+  {K_FIELDS, "one", MPM_FIELDS_ONE}, {K_FIELDS, "two", MPM_FIELDS_TWO},
+};
+#define NENUMS (sizeof ENUMS / sizeof ENUMS[0])
+
+int ver_scene_enum_type(ktype t)
+{
+  for (size_t i = 0; i < NENUMS; i++)
+    if (ENUMS[i].type == t)
+      return 1;
+  return 0;
+}
+
+int ver_scene_enum_value(ktype t, const char *word, int *value)
+{
+  for (size_t i = 0; i < NENUMS; i++)
+    if (ENUMS[i].type == t && !strcmp(ENUMS[i].word, word)) {
+      *value = ENUMS[i].value;
+      return 0;
+    }
+  return -1;
+}
+
+const char *ver_scene_enum_word(ktype t, int value)
+{
+  const char *first = "";
+  for (size_t i = 0; i < NENUMS; i++)
+    if (ENUMS[i].type == t) {
+      if (!*first)
+        first = ENUMS[i].word;
+      if (ENUMS[i].value == value)
+        return ENUMS[i].word;
+    }
+  return first;
+}
+
 _Static_assert(sizeof ver_scene_keys / sizeof ver_scene_keys[0] <= VER_NKEYS, "VER_NKEYS too small for the key table");
 
 typedef struct {
@@ -173,28 +222,9 @@ static int set_key(ver_scene *vs, int ki, const char *value, char *msg, size_t l
     snprintf(msg, len, "%s.%s: empty value (%s)", k->section, k->key, k->allowed);
     return 2;
   }
-  if (k->type == K_LE || k->type == K_SCHEME || k->type == K_MOTION || k->type == K_SHAPE ||
-      k->type == K_FIELDS || k->type == K_BC || k->type == K_HEAD) {
+  if (ver_scene_enum_type(k->type)) {
     int mode;
-    if (k->type == K_LE && !strcmp(value, "cell")) mode = MPM_LE_CELL;
-    else if (k->type == K_LE && !strcmp(value, "particle")) mode = MPM_LE_PARTICLE;
-    else if (k->type == K_LE && !strcmp(value, "staircase")) mode = MPM_LE_STAIRCASE;
-    else if (k->type == K_SCHEME && !strcmp(value, "usl")) mode = MPM_SCHEME_USL;
-    else if (k->type == K_SCHEME && !strcmp(value, "musl")) mode = MPM_SCHEME_MUSL;
-    else if (k->type == K_SCHEME && !strcmp(value, "usf")) mode = MPM_SCHEME_USF;
-    else if (k->type == K_SCHEME && !strcmp(value, "usavg")) mode = MPM_SCHEME_USAVG;
-    else if (k->type == K_BC && !strcmp(value, "lagrangian")) mode = MPM_BC_LAGRANGIAN;
-    else if (k->type == K_BC && !strcmp(value, "both")) mode = MPM_BC_BOTH;
-    else if (k->type == K_BC && !strcmp(value, "consistent")) mode = MPM_BC_CONSISTENT;
-    else if (k->type == K_HEAD && !strcmp(value, "rigid")) mode = MPM_HEAD_RIGID;
-    else if (k->type == K_HEAD && !strcmp(value, "none")) mode = MPM_HEAD_NONE;
-    else if (k->type == K_MOTION && !strcmp(value, "stretch")) mode = MPM_GRID_STRETCH;
-    else if (k->type == K_MOTION && !strcmp(value, "fixed")) mode = MPM_GRID_FIXED;
-    else if (k->type == K_SHAPE && !strcmp(value, "linear")) mode = MPM_SHAPE_LINEAR;
-    else if (k->type == K_SHAPE && !strcmp(value, "gimp")) mode = MPM_SHAPE_GIMP;
-    else if (k->type == K_FIELDS && !strcmp(value, "one")) mode = MPM_FIELDS_ONE;
-    else if (k->type == K_FIELDS && !strcmp(value, "two")) mode = MPM_FIELDS_TWO;
-    else {
+    if (ver_scene_enum_value(k->type, value, &mode) != 0) {
       snprintf(msg, len, "%s.%s: '%s' is not allowed (%s)", k->section, k->key, shown(value, sv, sizeof sv),
                k->allowed);
       return 2;

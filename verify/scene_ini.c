@@ -55,24 +55,6 @@ void ver_scene_case_id(const ver_scene *vs, char *buf, size_t len)
   }
 }
 
-static const char *enum_word(ktype t, int v)
-{
-  switch (t) {
-  case K_LE: return v == MPM_LE_PARTICLE ? "particle" : v == MPM_LE_STAIRCASE ? "staircase" : "cell";
-  case K_SCHEME: return v == MPM_SCHEME_MUSL ? "musl" : v == MPM_SCHEME_USF ? "usf" : v == MPM_SCHEME_USAVG ? "usavg" : "usl";
-  case K_MOTION: return v == MPM_GRID_STRETCH ? "stretch" : "fixed";
-  case K_SHAPE: return v == MPM_SHAPE_GIMP ? "gimp" : "linear";
-  case K_FIELDS: return v == MPM_FIELDS_TWO ? "two" : "one";
-  case K_BC: return v == MPM_BC_BOTH ? "both" : v == MPM_BC_CONSISTENT ? "consistent" : "lagrangian";
-  case K_HEAD: return v == MPM_HEAD_NONE ? "none" : "rigid";
-  default: return "";
-  }
-}
-
-static int is_enum(ktype t)
-{
-  return t == K_LE || t == K_SCHEME || t == K_MOTION || t == K_SHAPE || t == K_FIELDS || t == K_BC || t == K_HEAD;
-}
 
 int ver_scene_write_ini(const ver_scene *vs, FILE *f)
 {
@@ -104,10 +86,10 @@ int ver_scene_write_ini(const ver_scene *vs, FILE *f)
       fprintf(f, "\n");
       continue;
     }
-    if (is_enum(k->type)) {
+    if (ver_scene_enum_type(k->type)) {
       int v;
       memcpy(&v, base + k->off, sizeof v);
-      fprintf(f, "%s = %s\n", k->key, enum_word(k->type, v));
+      fprintf(f, "%s = %s\n", k->key, ver_scene_enum_word(k->type, v));
       continue;
     }
     double v;
@@ -147,8 +129,8 @@ void ver_scene_keys_markdown(FILE *f)
     char def[64];
     if (k->required)
       snprintf(def, sizeof def, "-");
-    else if (is_enum(k->type))
-      snprintf(def, sizeof def, "%s", enum_word(k->type, (int)k->def));
+    else if (ver_scene_enum_type(k->type))
+      snprintf(def, sizeof def, "%s", ver_scene_enum_word(k->type, (int)k->def));
     else if (k->type == K_LIST)
       snprintf(def, sizeof def, "none");
     else if (k->def < 0)

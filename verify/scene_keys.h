@@ -49,6 +49,11 @@ int ver_scene_key_idx(const char *section, const char *key);
 int ver_scene_key_in_range(const keydef *k, double v);
 /* A finite number: 0, 1 (not a number) or 2 (not finite). */
 int ver_scene_key_num(const char *s, double *v);
+/* Enumerated keys: 1 if type t is one; the value of a word (0, or -1 if it is not
+ * allowed); the word of a value (the type's first word if none matches). */
+int ver_scene_enum_type(ktype t);
+int ver_scene_enum_value(ktype t, const char *word, int *value);
+const char *ver_scene_enum_word(ktype t, int value);
 /* "file:line" of key ki: its line, else its section's header, else the file's end. */
 const char *ver_scene_key_at(const ver_scene *vs, int ki, char *buf, size_t len);
 
