@@ -268,6 +268,7 @@ typedef struct {
   long steps_multi;        /* steps run on more than one thread                        */
   long nprobe;             /* probes done                                              */
   long nfall;              /* falls back to one thread in a stretch                    */
+  long nbusy;              /* probes skipped: no idle core (load average)              */
 } mpm_threads;
 
 /* Sets up t for `requested` threads (<= 0: automatic, up to OpenMP's default). */

@@ -12,6 +12,8 @@
  * guessed:
  *  - below MPM_THREADS_MIN_PARTICLES particles one thread, always (the parallel
  *    regions cost more than they share);
+ *  - a machine with no idle core (the load average at least the cores less one half)
+ *    gets no probe: the run stays on one thread and asks again after a stretch;
  *  - otherwise the step alternates a probe (MPM_PROBE_STEPS steps on one thread, as
  *    many on all) with a stretch on the faster count; the stretch doubles while the
  *    choice holds (up to MPM_PERIOD_MAX steps) and starts again short when it flips,
@@ -25,6 +27,7 @@
  * The clock is read once per step (mpm_threads_tick at the top of mpm_sim_step); the
  * interval between two ticks is charged to the step that ran in it.
  */
+#include <stdio.h>
 #include <time.h>
 #ifdef _OPENMP
 #include <omp.h>
@@ -37,6 +40,41 @@ static double wall(void)
   struct timespec ts;
   clock_gettime(CLOCK_MONOTONIC, &ts);
   return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/* 1 if the machine has no idle core for a second thread: the 1-minute load average
+ * (runnable tasks, this run's own thread among them) above the cores less one half.
+ * Linux's /proc/loadavg; where it cannot be read, 0 (the probes decide alone). */
+static int machine_busy(void)
+{
+#ifdef _OPENMP
+  const int ncpu = omp_get_num_procs();
+#else
+  const int ncpu = 1;
+#endif
+  FILE *f = fopen("/proc/loadavg", "r");
+  double load = 0.0;
+  const int ok = f && fscanf(f, "%lf", &load) == 1;
+  if (f)
+    fclose(f);
+  return ok && load > (double)ncpu - 0.5;
+}
+
+/* The next probe, unless the machine is busy: then another stretch on one thread,
+ * twice as long as the last (a busy machine is asked ever less often). */
+static void start_probe(mpm_threads *t)
+{
+  t->use = 1;
+  t->np = 0;
+  if (machine_busy()) {
+    t->phase = MPM_TPH_RUN;
+    t->period = t->period < MPM_PERIOD_MAX ? 2 * t->period : MPM_PERIOD_MAX;
+    t->left = t->period;
+    t->nbusy++;
+    return;
+  }
+  t->phase = MPM_TPH_PROBE1;
+  t->left = MPM_PROBE_STEPS + 1;
 }
 
 void mpm_threads_init(mpm_threads *t, int requested, size_t particles)
@@ -53,10 +91,8 @@ void mpm_threads_init(mpm_threads *t, int requested, size_t particles)
   t->automatic = requested <= 0 && t->nmax > 1 && particles >= MPM_THREADS_MIN_PARTICLES;
   t->use = requested > 0 || t->automatic ? t->nmax : 1;
   if (t->automatic) {
-    t->phase = MPM_TPH_PROBE1;
-    t->use = 1;
-    t->left = MPM_PROBE_STEPS + 1;
-    t->period = MPM_PERIOD_MIN;
+    t->period = MPM_PERIOD_MIN / 2; /* start_probe doubles it if it waits */
+    start_probe(t);
   }
 }
 
@@ -72,6 +108,10 @@ static void decide(mpm_threads *t)
 {
   if (!t->automatic)
     return;
+  if (t->phase == MPM_TPH_RUN && t->use == 1 && t->left > 1) {
+    t->left--; /* a stretch on one thread needs no clock */
+    return;
+  }
   const double now = wall(), dt = now - t->last;
   const int have = t->last > 0.0;
   t->last = now;
@@ -93,10 +133,7 @@ static void decide(mpm_threads *t)
     }
     if (--t->left > 0)
       return;
-    t->phase = MPM_TPH_PROBE1;
-    t->left = MPM_PROBE_STEPS + 1;
-    t->np = 0;
-    t->use = 1;
+    start_probe(t);
     return;
   }
   /* A probe.  The first step on a new count (wake-up, cache) is not counted.  Means,

@@ -103,6 +103,8 @@ int ver_summary_write(const char *dir, const ver_scene *vs, const ver_summary *u
   cJSON_AddStringToObject(th, "requested", u->threads_req > 0 ? "fixed" : "auto");
   cJSON_AddNumberToObject(th, "max", u->threads_max);
   cJSON_AddNumberToObject(th, "steps_multi", (double)u->steps_multi);
+  cJSON_AddNumberToObject(th, "probes", (double)u->probes);
+  cJSON_AddNumberToObject(th, "probes_skipped_busy", (double)u->probes_busy);
   cJSON *ov = cJSON_AddArrayToObject(o, "overrides");
   for (int i = 0; i < vs->nover; i++)
     cJSON_AddItemToArray(ov, cJSON_CreateString(vs->over[i]));

@@ -35,6 +35,7 @@ typedef struct {
   int threads_req;               /* --threads (0: chosen per step by the kernel)     */
   int threads_max;               /* the most threads a step could use                */
   long steps_multi;              /* steps that ran on more than one thread           */
+  long probes, probes_busy;      /* thread probes made; skipped for want of an idle core */
 } ver_summary;
 
 /* Schema versions of the files a run writes (docs/output-formats.md); each file says
