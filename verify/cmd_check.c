@@ -345,37 +345,69 @@ static int num_opt(const char *opt, const char *v, double *out)
   return 0;
 }
 
-int ver_cmd_check(int argc, char **argv)
+/* The command line of delam check. */
+typedef struct {
+  const char *scene, *dir, *out, *pfile, *sets[VER_MAX_OVER];
+  int nset;
+  double h, ppc;
+} check_opts;
+
+/* Reads the options into o; 0, 1 (--help given) or 2 (bad usage). */
+static int check_args(int argc, char **argv, check_opts *o)
 {
-  const char *scene = NULL, *dir = NULL, *out = NULL, *pfile = NULL, *sets[VER_MAX_OVER];
-  int nset = 0;
-  double h = 0, ppc = 0;
+  memset(o, 0, sizeof *o);
   for (int i = 1; i < argc; i++) {
     const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
     int r = 0;
     if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
       usage(stdout);
-      return 0;
+      return 1;
     } else if (!strcmp(a, "--scene") || !strcmp(a, "--out") || !strcmp(a, "--particles") || !strcmp(a, "--set")) {
       if (!v) {
         fprintf(stderr, PROG ": %s needs a value (see delam check --help)\n", a);
         return 2;
       }
-      if (!strcmp(a, "--scene")) scene = v;
-      else if (!strcmp(a, "--out")) out = v;
-      else if (!strcmp(a, "--particles")) pfile = v;
-      else if (nset < VER_MAX_OVER) sets[nset++] = v;
+      if (!strcmp(a, "--scene")) o->scene = v;
+      else if (!strcmp(a, "--out")) o->out = v;
+      else if (!strcmp(a, "--particles")) o->pfile = v;
+      else if (o->nset < VER_MAX_OVER) o->sets[o->nset++] = v;
       else { fprintf(stderr, PROG ": more than %d --set\n", VER_MAX_OVER); return 2; }
       i++;
-    } else if (!strcmp(a, "--h")) { r = num_opt(a, v, &h); i++; }
-    else if (!strcmp(a, "--ppc")) { r = num_opt(a, v, &ppc); i++; }
+    } else if (!strcmp(a, "--h")) { r = num_opt(a, v, &o->h); i++; }
+    else if (!strcmp(a, "--ppc")) { r = num_opt(a, v, &o->ppc); i++; }
     else if (a[0] == '-' && a[1]) {
       fprintf(stderr, PROG ": unknown option '%s' (see delam check --help)\n", a);
       return 2;
-    } else if (!dir) dir = a;
+    } else if (!o->dir) o->dir = a;
     else { fprintf(stderr, PROG ": one folder only ('%s' is extra)\n", a); return 2; }
     if (r) return r;
   }
+  return 0;
+}
+
+/* The verdict lines: every check, then the case's verdict and what was left out. */
+static void print_verdict(const char *label, const ver_case *c, int have_en, int have_pt)
+{
+  for (int j = 0; j < c->nchk; j++)
+    ver_sweep_print_check(label, &c->chk[j]);
+  printf("check: %s", ver_verdict_name(c->verdict));
+  if (c->verdict == VER_FAIL) {
+    printf(", failed:");
+    for (int j = 0; j < c->nchk; j++)
+      if (c->chk[j].verdict == VER_FAIL)
+        printf(" %s", c->chk[j].name);
+  }
+  printf(" (%d checks; %s%s)\n", c->nchk, have_en ? "with energy.csv" : "no energy.csv: D and energy balance left out",
+         have_pt ? ", with particles" : ", no particles: band width and angle left out");
+}
+
+int ver_cmd_check(int argc, char **argv)
+{
+  check_opts o;
+  const int pa = check_args(argc, argv, &o);
+  if (pa)
+    return pa == 1 ? 0 : 2;
+  const char *scene = o.scene, *dir = o.dir, *out = o.out, *pfile = o.pfile;
   if (!scene || !dir) {
     fprintf(stderr, PROG ": needs --scene SCENE and a run folder (usage: delam check --scene SCENE DIR)\n");
     return 2;
@@ -383,7 +415,7 @@ int ver_cmd_check(int argc, char **argv)
   static ver_case c; /* large; one per process */
   memset(&c, 0, sizeof c);
   char err[4800];
-  if (build_scene(scene, dir, h, ppc, sets, nset, &c.vs, err, sizeof err)) {
+  if (build_scene(scene, dir, o.h, o.ppc, o.sets, o.nset, &c.vs, err, sizeof err)) {
     fprintf(stderr, PROG ": %s\n", err);
     return 2;
   }
@@ -443,18 +475,8 @@ int ver_cmd_check(int argc, char **argv)
   }
   char label[160];
   snprintf(label, sizeof label, "%s vs %s-h%g-ppc%d", dir, c.vs.name, c.vs.sc.h, c.vs.sc.ppc);
-  for (int j = 0; j < c.nchk; j++)
-    ver_sweep_print_check(label, &c.chk[j]);
+  print_verdict(label, &c, have_en, have_pt);
   const int rc = c.verdict == VER_FAIL ? 1 : 0;
-  printf("check: %s", ver_verdict_name(c.verdict));
-  if (rc) {
-    printf(", failed:");
-    for (int j = 0; j < c.nchk; j++)
-      if (c.chk[j].verdict == VER_FAIL)
-        printf(" %s", c.chk[j].name);
-  }
-  printf(" (%d checks; %s%s)\n", c.nchk, have_en ? "with energy.csv" : "no energy.csv: D and energy balance left out",
-         have_pt ? ", with particles" : ", no particles: band width and angle left out");
   char jpath[1400];
   snprintf(jpath, sizeof jpath, "%s", out ? out : "");
   if (!out)
