@@ -155,6 +155,10 @@ int ver_cmd_run(int argc, char **argv)
     fprintf(stderr, "%s\n", err);
     return 2;
   }
+  if (ver_scene_rate_ratio(&vs.sc) > VER_RATE_WARN)
+    fprintf(stderr, "delam run: warning: loading.speed = %g moves a strain %.2g times the strain at initiation in one "
+            "wave transit (quasi-static below %g; expect a load error of about %.0f %% of the peak)\n", vs.sc.speed,
+            ver_scene_rate_ratio(&vs.sc), VER_RATE_WARN, 60.0 * ver_scene_rate_ratio(&vs.sc));
   char id[600], defdir[700];
   ver_scene_case_id(&vs, id, sizeof id);
   snprintf(defdir, sizeof defdir, "out/%s", id);

@@ -58,7 +58,7 @@ const keydef ver_scene_keys[] = {
   {"vibration", "mode", K_INT, OFF(vib_mode), 0, 0, 1000, LO_CLOSED | HI_CLOSED, 0, "0 (none) or the axial mode m, 1 to 1000, to start from"},
   {"vibration", "amplitude", K_DBL, OFF(vib_amp), 0, 0, 0, LO_OPEN, 0.03, "> 0: the mode's velocity amplitude"},
   {"vibration", "periods", K_DBL, OFF(vib_periods), 0, 0, 1e6, LO_OPEN | HI_CLOSED, 25, "in (0, 1e6]: the run's length in periods 2 L / (m c)"},
-  {"loading", "speed", K_DBL, OFF(speed), 1, 0, 0, LO_OPEN, 0, "> 0"},
+  {"loading", "speed", K_DBL, OFF(speed), 1, 0, 0, LO_OPEN, 0, "> 0 and quasi-static: speed / c <= min(snf, stf) / E (warning above a tenth of that)"},
   {"run", "end_delta", K_DBL, OFF(end_delta), 3, 0, 0, LO_OPEN, 0, "> 0 (default with vibration.mode > 0: vibration.periods periods)"},
   {"run", "stop_margin", K_DBL, VOFF(stop_margin), 0, 0, 0, LO_CLOSED, 0.1, ">= 0 (0: run to end_delta)"},
   {"run", "sep_load", K_DBL, VOFF(sep_load_frac), 0, 0, 1, LO_OPEN | HI_OPEN, 0.02, "in (0, 1)"},

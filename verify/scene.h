@@ -51,6 +51,15 @@ int ver_scene_set(ver_scene *vs, const char *assignment, char *err, size_t errle
 /* Checks presence, ranges, the rules between keys (h divides L and H, ppc a square,
  * the CFL bound, sizes the kernel can allocate) and fills the defaults.  Returns 0 or 2. */
 int ver_scene_validate(ver_scene *vs, char *err, size_t errlen);
+/* The grip speed against the wave speed: (speed / c) / (min(snf, stf) / E), the strain
+ * the grip adds in one wave transit L / c over the strain at initiation; 0 without
+ * decohesion or in a free vibration.  Fig. 6 at speed 0.001: 0.031.  Measured there
+ * (METHODS: h 1, 4 ppc) the curve error is first order in the speed, about 0.6 times
+ * this ratio; a scene above VER_RATE_REFUSE (the peak within one transit: a wave problem,
+ * not a quasi-static one) is refused, one above VER_RATE_WARN runs with a warning. */
+#define VER_RATE_REFUSE 1.0
+#define VER_RATE_WARN 0.1
+double ver_scene_rate_ratio(const mpm_scene *sc);
 /* The period of the scene's axial mode m (vibration.mode) of the bar held in x at both
  * ends: 2 L / (m c), c = sqrt(E / rho) (uniaxial stress: plane stress with free lateral
  * faces), times Love's correction for the lateral inertia of the Poisson contraction,

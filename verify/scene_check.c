@@ -126,6 +126,19 @@ static int check_steps(const ver_scene *vs, char *err, size_t errlen)
   return 0;
 }
 
+double ver_scene_rate_ratio(const mpm_scene *sc)
+{
+  /* The bar takes L / c to feel the grip; in that time the grip adds the mean strain
+   * speed / L * L / c = speed / c.  The load is quasi-static when that is small against
+   * the strain at which the answer changes, the strain at initiation min(snf, stf) / E
+   * (the smaller traction: the peak of any angle is at or above it).  Without decohesion
+   * (model 0) nothing is peaked, and a free vibration uses speed as a time unit only. */
+  if (sc->model == 0 || sc->vib_mode > 0)
+    return 0.0;
+  const double c = sqrt(sc->E / sc->rho), ep = fmin(sc->snf, sc->stf) / sc->E;
+  return sc->speed / c / ep;
+}
+
 int ver_scene_validate(ver_scene *vs, char *err, size_t errlen)
 {
   mpm_scene *sc = &vs->sc;
@@ -171,6 +184,16 @@ int ver_scene_validate(ver_scene *vs, char *err, size_t errlen)
   }
   if (check_steps(vs, err, errlen))
     return 2;
+  /* Quasi-static: the grip must be slow against the wave speed (ver_scene_rate_ratio). */
+  const double rr = ver_scene_rate_ratio(sc);
+  if (!(rr <= VER_RATE_REFUSE)) {
+    const double c = sqrt(sc->E / sc->rho), ep = rr > 0 ? sc->speed / c / rr : 0;
+    snprintf(err, errlen, "%s: loading.speed: %g is not quasi-static: the grip moves a strain of speed / c = %.3g in one "
+             "wave transit, %.3g times the strain at initiation %.3g (allowed: speed <= %.3g, that is speed / c at most %g "
+             "times that strain)", ver_scene_key_at(vs, ver_scene_key_idx("loading", "speed"), at, sizeof at), sc->speed,
+             sc->speed / c, rr, ep, VER_RATE_REFUSE * ep * c, VER_RATE_REFUSE);
+    return 2;
+  }
   /* The kernel's own check: every rule it has is above, so this is a backstop. */
   char e2[256];
   if (mpm_scene_check(sc, e2, sizeof e2) != MPM_OK) {
