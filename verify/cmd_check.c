@@ -29,14 +29,11 @@
 #include "build_info.h"
 #include "cmd.h"
 #include "datadir.h"
+#include "foreign.h"
 #include "io.h"
-#include "metrics.h"
-#include "separation.h"
 #include "summary.h"
-#include "sweep.h"
 
 #define PROG "delam check"
-#define MAXCOL 16
 
 static void usage(FILE *f)
 {
@@ -58,131 +55,6 @@ static void usage(FILE *f)
     "  --help            this text\n"
     "exit status: 0 all checks pass (or are within a known limit), 1 a check failed,\n"
     "2 bad usage or unusable input (file, line and column named)\n");
-}
-
-/* A numeric CSV, strictly: every wanted field of every row a finite number. */
-typedef struct {
-  long n;                  /* rows                                   */
-  double *col[MAXCOL];     /* the wanted columns (NULL: not in file) */
-} table;
-
-static void table_free(table *t)
-{
-  for (int j = 0; j < MAXCOL; j++)
-    free(t->col[j]);
-  memset(t, 0, sizeof *t);
-}
-
-static char *trim(char *s)
-{
-  while (*s == ' ' || *s == '\t' || *s == '"')
-    s++;
-  char *e = s + strlen(s);
-  while (e > s && (e[-1] == ' ' || e[-1] == '\t' || e[-1] == '\r' || e[-1] == '"'))
-    *--e = '\0';
-  return s;
-}
-
-/* Reads path; the columns names[0..nname-1], of which the first nreq are required.
- * 0, 1 (file missing), or 2 with "file:line:column: ..." in err. */
-static int read_table(const char *path, const char *const *names, int nname, int nreq, table *t, char *err,
-                      size_t errlen)
-{
-  memset(t, 0, sizeof *t);
-  char *txt = ver_io_slurp(path, NULL, 64u << 20);
-  if (!txt) {
-    struct stat st;
-    if (stat(path, &st) != 0 && errno == ENOENT)
-      return 1;
-    snprintf(err, errlen, "%s: cannot read (or larger than 64 MiB): %s", path, strerror(errno));
-    return 2;
-  }
-  long rows = 0;
-  for (const char *s = txt; *s; s++)
-    rows += *s == '\n';
-  int idx[MAXCOL];
-  for (int j = 0; j < nname; j++)
-    idx[j] = -1;
-  int line = 0, have_header = 0, rc = 0, ncol = 0;
-  for (char *ln = txt, *next; *ln && !rc; ln = next) {
-    char *nl = strchr(ln, '\n');
-    next = nl ? nl + 1 : ln + strlen(ln);
-    if (nl)
-      *nl = '\0';
-    line++;
-    char *s = trim(ln);
-    if (!*s || (*s == '#' && !have_header))
-      continue;
-    if (!have_header) {
-      have_header = 1;
-      char *hs = NULL;
-      ncol = 0;
-      for (char *f = strtok_r(s, ",", &hs); f; f = strtok_r(NULL, ",", &hs), ncol++)
-        for (int j = 0; j < nname; j++)
-          if (!strcmp(trim(f), names[j]))
-            idx[j] = ncol;
-      for (int j = 0; j < nreq; j++)
-        if (idx[j] < 0) {
-          snprintf(err, errlen, "%s:%d: the header has no column '%s' (needed: ", path, line, names[j]);
-          for (int q = 0; q < nreq; q++)
-            snprintf(err + strlen(err), errlen - strlen(err), "%s%s", q ? ", " : "", names[q]);
-          snprintf(err + strlen(err), errlen - strlen(err), ")");
-          rc = 2;
-        }
-      for (int j = 0; j < nname && !rc; j++)
-        if (idx[j] >= 0 && !(t->col[j] = malloc(sizeof(double) * (size_t)(rows + 1)))) {
-          snprintf(err, errlen, "%s: out of memory", path);
-          rc = 2;
-        }
-      continue;
-    }
-    /* a data row: split it once, then take the wanted fields */
-    char *fields[256];
-    int nf = 0;
-    for (char *p = s;;) {
-      if (nf == 256)
-        break;
-      fields[nf++] = p;
-      char *c = strchr(p, ',');
-      if (!c)
-        break;
-      *c = '\0';
-      p = c + 1;
-    }
-    for (int j = 0; j < nname && !rc; j++) {
-      if (idx[j] < 0)
-        continue;
-      if (idx[j] >= nf) {
-        snprintf(err, errlen, "%s:%d:%d: no field for column '%s' (the row has %d fields, the header %d)", path,
-                 line, idx[j] + 1, names[j], nf, ncol);
-        rc = 2;
-        break;
-      }
-      char *f = trim(fields[idx[j]]), *end;
-      errno = 0;
-      const double v = strtod(f, &end);
-      if (end == f || *end || !isfinite(v)) {
-        snprintf(err, errlen, "%s:%d:%d: column '%s': '%.40s' is not a finite number", path, line, idx[j] + 1,
-                 names[j], f);
-        rc = 2;
-        break;
-      }
-      t->col[j][t->n] = v;
-    }
-    t->n++;
-  }
-  free(txt);
-  if (!rc && !have_header) {
-    snprintf(err, errlen, "%s:1: no header line (expected at least: %s%s%s)", path, names[0], nreq > 1 ? ", " : "",
-             nreq > 1 ? names[1] : "");
-    rc = 2;
-  } else if (!rc && t->n < 3) {
-    snprintf(err, errlen, "%s:%d: %ld data rows; at least 3 are needed", path, line, t->n);
-    rc = 2;
-  }
-  if (rc)
-    table_free(t);
-  return rc;
 }
 
 /* The scene the folder is judged against: SCENE with --set, h and ppc. */
@@ -224,72 +96,6 @@ static int build_scene(const char *arg, const char *dir, double h, double ppc, c
       return 2;
   vs->allow_unstable = 1; /* nothing is run here */
   return ver_scene_validate(vs, err, errlen);
-}
-
-/* The measurements verify takes from a run (metrics.h, separation.h), from the tables. */
-static void measure(ver_case *c, const table *ld, const table *en, const table *pt)
-{
-  const mpm_scene *sc = &c->vs.sc;
-  const double *d = ld->col[0], *P = ld->col[1], *Pf = ld->col[2] ? ld->col[2] : ld->col[1];
-  const size_t n = (size_t)ld->n;
-  c->complete = 1;
-  c->exit_code = 0;
-  c->peak_P = -INFINITY;
-  for (size_t i = 0; i < n; i++)
-    if (P[i] > c->peak_P) {
-      c->peak_P = P[i];
-      c->delta_peak = d[i];
-    }
-  c->delta_end = d[n - 1];
-  c->k_elastic = ver_elastic_slope(d, P, n, c->peak_P, c->delta_peak, VER_ELASTIC_LO, VER_ELASTIC_HI);
-  c->k_soft = ver_softening_slope(d, P, n, VER_SOFT_HI, VER_SOFT_LO);
-  if (c->have_ana)
-    c->curve_l2 = ver_curve_err_bar(&c->ana, d, P, n, ver_curve_end(&c->ana, sc->sep_threshold), NULL);
-  /* separation by the load, with the run's window of 4 L / c in delta */
-  const double cw = sqrt(sc->E / (1.0 - sc->nu * sc->nu) / sc->rho);
-  const double step = (d[n - 1] - d[0]) / (double)(n - 1);
-  const long win = step > 0 ? (long)fmax(1.0, ceil(4.0 * sc->L / cw * sc->speed / step)) : 1;
-  ver_sep sep;
-  c->delta_sep = NAN;
-  if (ver_sep_init(&sep, sc->H, sc->h, sc->ppc, win, c->vs.sep_load_frac) == 0) {
-    double peak = -INFINITY, dpk = 0.0;
-    for (size_t i = 0; i < n; i++) {
-      if (P[i] > peak) {
-        peak = P[i];
-        dpk = d[i];
-      }
-      ver_sep_load(&sep, d[i], P[i], Pf[i], peak, dpk);
-    }
-    if (sep.delta_sep >= 0)
-      c->delta_sep = sep.delta_sep;
-    ver_sep_free(&sep);
-  }
-  if (en) { /* W_ext, KE, SE, W_coh, D */
-    const size_t m = (size_t)en->n;
-    c->W_ext_final = en->col[0][m - 1];
-    c->D_final = en->col[4][m - 1];
-    /* delam's own definition; the ledger columns count where the file has them, and
-     * the energy at the start is that of the first row less the work done by then */
-    const double *e[8] = {en->col[0], en->col[1], en->col[2], en->col[3], en->col[5], en->col[6], en->col[7],
-                          en->col[8]};
-    const double E0 = fmax(0.0, en->col[1][0] + en->col[2][0] - en->col[0][0]);
-    c->energy_residual = ver_energy_residual(e, m, E0, NULL);
-  } else { /* the external work is the area under the load-deflection curve */
-    double w = 0.5 * P[0] * d[0];
-    for (size_t i = 1; i < n; i++)
-      w += 0.5 * (P[i] + P[i - 1]) * (d[i] - d[i - 1]);
-    c->W_ext_final = w;
-    c->D_final = c->energy_residual = NAN;
-  }
-  c->band_width = c->angle = c->D_diffuse = NAN;
-  if (pt) {
-    const size_t m = (size_t)pt->n;
-    c->band_width = ver_band_width(pt->col[0], pt->col[1], pt->col[2], m, VER_BAND_LAMBDA, sc->alpha_deg, sc->h,
-                                   sc->ppc, sc->H, &c->band_extent, &c->band_count);
-    c->angle = ver_crack_angle(pt->col[0], pt->col[1], pt->col[2], m, VER_BAND_LAMBDA);
-    if (c->have_ana && c->ana.D_sep > 0.0 && isfinite(c->D_final))
-      c->D_diffuse = ver_diffuse_share(pt->col[2], m, VER_BAND_LAMBDA) * c->D_final / c->ana.D_sep;
-  }
 }
 
 static int write_json(const char *out, const ver_case *c, const char *dir, const char *scene_path, int have_en,
@@ -428,9 +234,9 @@ int ver_cmd_check(int argc, char **argv)
   static const char *const enames[] = {"W_ext", "KE", "SE", "W_coh", "D", "L_bc", "L_flip", "L_scheme", "W_head"};
   static const char *const pnames[] = {"x0", "y0", "lambda"};
   char path[1400], ppath[1400];
-  table ld, en, pt;
+  ver_table ld, en, pt;
   snprintf(path, sizeof path, "%s/load.csv", dir);
-  int r = read_table(path, lnames, 3, 2, &ld, err, sizeof err);
+  int r = ver_table_read(path, lnames, 3, 2, &ld, err, sizeof err);
   if (r == 1)
     snprintf(err, sizeof err, "%s: no such file (the load-deflection curve is required)", path);
   if (r) {
@@ -438,29 +244,29 @@ int ver_cmd_check(int argc, char **argv)
     return 2;
   }
   snprintf(path, sizeof path, "%s/energy.csv", dir);
-  r = read_table(path, enames, 9, 5, &en, err, sizeof err);
+  r = ver_table_read(path, enames, 9, 5, &en, err, sizeof err);
   if (r == 2) {
     fprintf(stderr, PROG ": %s\n", err);
-    table_free(&ld);
+    ver_table_free(&ld);
     return 2;
   }
   const int have_en = r == 0;
   snprintf(ppath, sizeof ppath, "%s", pfile ? pfile : "");
   if (!pfile)
     snprintf(ppath, sizeof ppath, "%s/final.csv", dir);
-  r = read_table(ppath, pnames, 3, 3, &pt, err, sizeof err);
+  r = ver_table_read(ppath, pnames, 3, 3, &pt, err, sizeof err);
   if (r == 2 || (r == 1 && pfile)) {
     if (r == 1)
       snprintf(err, sizeof err, "%s: no such file", ppath);
     fprintf(stderr, PROG ": %s\n", err);
-    table_free(&ld);
+    ver_table_free(&ld);
     if (have_en)
-      table_free(&en);
+      ver_table_free(&en);
     return 2;
   }
   const int have_pt = r == 0;
 
-  measure(&c, &ld, have_en ? &en : NULL, have_pt ? &pt : NULL);
+  ver_foreign_measure(&c, &ld, have_en ? &en : NULL, have_pt ? &pt : NULL);
   ver_policy_case(&c);
   /* the checks whose input is not there are left out, not failed; "run" (delam's own
    * stop rule) says nothing of another code's folder */
@@ -482,11 +288,11 @@ int ver_cmd_check(int argc, char **argv)
   if (!out)
     snprintf(jpath, sizeof jpath, "%s/check.json", dir);
   int wrc = write_json(jpath, &c, dir, c.vs.path, have_en, have_pt ? ppath : NULL, rc);
-  table_free(&ld);
+  ver_table_free(&ld);
   if (have_en)
-    table_free(&en);
+    ver_table_free(&en);
   if (have_pt)
-    table_free(&pt);
+    ver_table_free(&pt);
   if (wrc) {
     fprintf(stderr, PROG ": %s: cannot write: %s\n", jpath, strerror(errno));
     return 2;
