@@ -10,6 +10,7 @@
 #include "cmd.h"
 #include "run.h"
 #include "datadir.h"
+#include "metrics.h"
 #include "scene.h"
 
 static volatile sig_atomic_t stop_flag = 0;
@@ -176,6 +177,15 @@ int ver_cmd_run(int argc, char **argv)
       fprintf(stderr, "delam run: partial results in %s (summary.json says complete: false)\n", o.outdir);
     return rc;
   }
+  if (!(u.energy_residual <= VER_ENERGY_TOL)) /* the balance over every row, to the run's end */
+    fprintf(stderr, "delam run: warning: energy residual %.3g over the whole run (to delta %.4g) is above the tolerance "
+            "%g (W_ext + E0 - KE - SE - W_coh - booked losses, over max W_ext; unbooked %.3g; energy.csv)\n",
+            u.energy_residual, u.delta_end, VER_ENERGY_TOL, u.energy_unbooked);
+  else if (vs.sc.vib_mode == 0 && !(u.energy_unbooked <= VER_ENERGY_TOL))
+    fprintf(stderr, "delam run: warning: energy not accounted for %.3g over the whole run (to delta %.4g) is above the "
+            "tolerance %g (W_ext + E0 - KE - SE - W_coh over max W_ext, nothing booked; booked residual %.3g; "
+            "energy.csv L_bc, L_flip, L_scheme, W_head)\n", u.energy_unbooked, u.delta_end, VER_ENERGY_TOL,
+            u.energy_residual);
   if (vs.sc.vib_mode > 0) /* free vibration: what it kept and its period */
     printf("%s: energy kept %.4f (booked: L_bc %.3g, L_flip %.3g, L_scheme %.3g of %.4g), period %.6g against "
            "%.6g (error %+.3f %%), energy residual %.2e\n",
@@ -183,8 +193,9 @@ int ver_cmd_run(int argc, char **argv)
            u.period_exact, 100.0 * u.period_error, u.energy_residual);
   else
     printf("%s: peak P %.4g at delta %.4g, separation at delta %.4g, D %.4g, W_ext %.4g, "
-           "elastic slope %.4g, energy residual %.2e\n",
-           id, u.peak_P, u.delta_peak, u.delta_sep, u.D_final, u.W_ext_final, u.k_elastic, u.energy_residual);
+           "elastic slope %.4g, energy residual %.2e (unbooked %.2e) to delta %.4g\n",
+           id, u.peak_P, u.delta_peak, u.delta_sep, u.D_final, u.W_ext_final, u.k_elastic, u.energy_residual,
+           u.energy_unbooked, u.delta_end);
   printf("%s: %zu particles, %ld steps, %.2f s, %.3g particle-updates/s -> %s/\n", id, u.particles, u.steps,
          u.wall_s, u.updates_per_s, o.outdir);
   return 0;

@@ -71,6 +71,8 @@ double ver_conv_order(const double *h, const double *e, size_t n, double *logc);
  * e[0..7] = W_ext, KE, SE, W_coh, L_bc, L_flip, L_scheme, W_head; a NULL ledger column
  * counts as 0.  *raw (if not NULL) gets the miss without the booked terms.  0 if there is
  * no energy at all. */
+/* The tolerance on it: verify's check and delam run's warning (over the whole run). */
+#define VER_ENERGY_TOL 0.02
 double ver_energy_residual(const double *const e[8], size_t n, double E0, double *raw);
 
 /* (max - min) / mean; NaN if n == 0 or the mean is 0. */

@@ -19,13 +19,14 @@
 #include "verify.h"
 
 #define VER_MAXSET 4
-#define VER_NCHECK 11
+#define VER_NCHECK 12
 #define VER_MAXCROSS 64
 
 /* A variant of a scene: a suffix for the case id and the override it stands for. */
 typedef struct {
   const char *suffix; /* "" for the scene as written */
   const char *set;    /* "section.key=value" or NULL */
+  int whole;          /* 1: to the scene's own end_delta, not the verify stop       */
 } ver_variant;
 
 
@@ -52,6 +53,7 @@ typedef struct {
   char error[600];
   /* measured */
   double peak_P, delta_peak, delta_sep, k_elastic, D_final, W_ext_final, energy_residual, delta_end;
+  double energy_unbooked;      /* the balance without the booked losses (summary.json) */
   double k_soft, curve_l2, band_width, band_extent, angle;
   double D_diffuse;  /* dissipation outside the band, over U0 x area (ver_diffuse_share) */
   size_t band_count;

@@ -17,9 +17,11 @@
 #include "summary.h"
 #include "sweep.h"
 
-static const ver_variant V_BASE = {"", NULL};
-static const ver_variant V_LEP = {"Leparticle", "decohesion.Le=particle"};
-static const ver_variant V_SEP8 = {"sep0.8", "decohesion.separation=0.8"};
+static const ver_variant V_BASE = {"", NULL, 0};
+static const ver_variant V_LEP = {"Leparticle", "decohesion.Le=particle", 0};
+static const ver_variant V_SEP8 = {"sep0.8", "decohesion.separation=0.8", 0};
+/* the scene's whole run (its end_delta, no early stop) for the energy balance to the end */
+static const ver_variant V_WHOLE = {"whole", "run.stop_margin=0", 1};
 
 /* The scene file with the same overrides `delam run --h H --ppc N --set ...` applies
  * (cmd_run.c: dt scaled with h to keep the file's Courant number). */
@@ -82,7 +84,7 @@ int ver_case_init(ver_case *c, const char *path, const char *scene, double h, in
     c->have_ana = 1;
     if (!ver_case_a90(c))
       least = 1.2;
-    c->end_delta = fmax(least, mult * c->ana.delta_sep);
+    c->end_delta = v.whole ? c->vs.sc.end_delta : fmax(least, mult * c->ana.delta_sep);
   } else {
     c->end_delta = c->vs.sc.end_delta;
   }
@@ -124,7 +126,7 @@ int ver_sweep_cases(const ver_verify_opts *o, ver_case **out, int *nout)
       {"fig6", 8, 1, &V_BASE}, {"fig6", 8, 4, &V_BASE}, {"fig6", 4, 4, &V_BASE},
       {"fig6", 4, 1, &V_BASE}, {"fig6", 2, 4, &V_BASE},
       {"fig6", 8, 4, &V_LEP},  {"fig6", 8, 4, &V_SEP8},
-      {"fig7", 4, 4, &V_BASE},
+      {"fig7", 4, 4, &V_BASE}, {"fig6", 8, 1, &V_WHOLE},
     };
     const int nq = (int)(sizeof q / sizeof q[0]);
     cs = calloc((size_t)nq, sizeof *cs);
@@ -206,7 +208,7 @@ void ver_case_read(const ver_verify_opts *o, ver_case *c)
   char dir[800], path[900];
   ver_case_dir(o, c, dir, sizeof dir);
   c->peak_P = c->delta_peak = c->delta_sep = c->k_elastic = NAN;
-  c->D_final = c->W_ext_final = c->energy_residual = c->delta_end = NAN;
+  c->D_final = c->W_ext_final = c->energy_residual = c->energy_unbooked = c->delta_end = NAN;
   c->k_soft = c->curve_l2 = c->band_width = c->band_extent = c->angle = c->D_diffuse = NAN;
   ver_summary_doc sd;
   if (ver_summary_read(dir, &sd) == 0) {
@@ -224,6 +226,7 @@ void ver_case_read(const ver_verify_opts *o, ver_case *c)
     c->D_final = u->D_final;
     c->W_ext_final = u->W_ext_final;
     c->energy_residual = u->energy_residual;
+    c->energy_unbooked = u->energy_unbooked;
     c->delta_end = u->delta_end;
     if (c->exit_code < 0)
       c->wall_s = u->wall_s;
