@@ -57,6 +57,25 @@ int ver_report_find_sweep(const rep_ctx *r, const char *scene, double h, int ppc
   return -1;
 }
 
+/* 1 if the run used its scene file's own method (scheme, shape, fields, Le, separation
+ * threshold): only such runs join the sweep, not verify's variants. */
+static int same_method(const rep_ctx *r, const ver_summary_doc *sd)
+{
+  char path[REP_PATH + 64], err[256];
+  ver_scene vs;
+  snprintf(path, sizeof path, "%.900s/%.60s.ini", r->scenes, sd->scene);
+  if (ver_scene_load(path, &vs, err, sizeof err) != 0)
+    return 0;
+  const struct {
+    const char *run, *sect, *key;
+  } m[4] = {{sd->scheme, "time", "scheme"}, {sd->shape, "grid", "shape"}, {sd->fields, "grid", "fields"},
+            {sd->le, "decohesion", "Le"}};
+  for (int i = 0; i < 4; i++)
+    if (m[i].run[0] && strcmp(m[i].run, ver_scene_word(&vs, m[i].sect, m[i].key)))
+      return 0;
+  return !isfinite(sd->sep_threshold) || sd->sep_threshold == vs.sc.sep_threshold;
+}
+
 /* --from DIR: every DIR/<case>/summary.json run with the scene's defaults joins the sweep. */
 static int scan_from(report *R)
 {
@@ -77,8 +96,7 @@ static int scan_from(report *R)
     ver_summary_doc sd;
     if (ver_summary_read(tmp.dir, &sd) != 0)
       continue;
-    int ok = sd.scene[0] && isfinite(sd.h) && sd.ppc > 0 && isfinite(sd.dt) &&
-             (!sd.le[0] || !strcmp(sd.le, "cell")) && (!isfinite(sd.sep_threshold) || sd.sep_threshold == 0.98);
+    int ok = sd.scene[0] && isfinite(sd.h) && sd.ppc > 0 && isfinite(sd.dt) && same_method(r, &sd);
     /* the paper's time step only: dt / h as in the scene file */
     if (ok) {
       const double crit = ver_report_dt_crit(r, sd.scene, sd.h);

@@ -83,6 +83,9 @@ int ver_scene_write_ini(const ver_scene *vs, FILE *f);
 /* The key table as a Markdown table (section, key, type, required, allowed, default),
  * for docs/scene-keys.md, which a test holds to it. */
 void ver_scene_keys_markdown(FILE *f);
+/* The word of an enumerated key's current value ("musl", "gimp", ...); "" if the key
+ * is not one (scene_ini.c). */
+const char *ver_scene_word(const ver_scene *vs, const char *section, const char *key);
 /* The closed-form bar of the scene (analytic/ana.h; alpha > 90 folded to 180 - alpha,
  * the same line).  0, or 2 with the reason in err (scene_bar.c). */
 int ver_scene_bar(const mpm_scene *sc, ana_bar *bar, char *err, size_t len);

@@ -145,3 +145,13 @@ void ver_scene_keys_markdown(FILE *f)
             k->allowed, def);
   }
 }
+
+const char *ver_scene_word(const ver_scene *vs, const char *section, const char *key)
+{
+  const int i = ver_scene_key_find(section, key);
+  if (i < 0 || !ver_scene_enum_type(ver_scene_keys[i].type))
+    return "";
+  int v;
+  memcpy(&v, (const char *)vs + ver_scene_keys[i].off, sizeof v);
+  return ver_scene_enum_word(ver_scene_keys[i].type, v);
+}

@@ -66,15 +66,12 @@ int ver_summary_write(const char *dir, const ver_scene *vs, const ver_summary *u
   cJSON_AddNumberToObject(o, "h", vs->sc.h);
   cJSON_AddNumberToObject(o, "ppc", vs->sc.ppc);
   cJSON_AddNumberToObject(o, "dt", vs->sc.dt);
-  cJSON_AddStringToObject(o, "Le", vs->sc.le_mode == MPM_LE_PARTICLE    ? "particle"
-                                   : vs->sc.le_mode == MPM_LE_STAIRCASE ? "staircase"
-                                                                        : "cell");
-  cJSON_AddStringToObject(o, "fields", vs->sc.fields == MPM_FIELDS_TWO ? "two" : "one");
-  static const char *const schemes[] = {"usl", "musl", "usf", "usavg"};
-  static const char *const bcs[] = {"lagrangian", "both", "consistent"};
-  cJSON_AddStringToObject(o, "scheme", schemes[vs->sc.scheme]);
-  cJSON_AddStringToObject(o, "bc", bcs[vs->sc.bc]);
-  cJSON_AddStringToObject(o, "shape", vs->sc.shape == MPM_SHAPE_GIMP ? "gimp" : "linear");
+  /* the words of the scene files (one table, scene.c) */
+  cJSON_AddStringToObject(o, "Le", ver_scene_word(vs, "decohesion", "Le"));
+  cJSON_AddStringToObject(o, "fields", ver_scene_word(vs, "grid", "fields"));
+  cJSON_AddStringToObject(o, "scheme", ver_scene_word(vs, "time", "scheme"));
+  cJSON_AddStringToObject(o, "bc", ver_scene_word(vs, "grid", "bc"));
+  cJSON_AddStringToObject(o, "shape", ver_scene_word(vs, "grid", "shape"));
   cJSON_AddNumberToObject(o, "separation_threshold", vs->sc.sep_threshold);
   cJSON_AddBoolToObject(o, "complete", u->complete);
   if (errmsg && errmsg[0])
