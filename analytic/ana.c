@@ -1,6 +1,6 @@
 /*
  * ana.c - closed-form uniaxial bar with decohesion (Schreyer, Sulsky, Zhou 2002,
- * sec. 3.2, eqs. 28-37; MODEL.md sec. 5).
+ * sec. 3.2, eqs. 28-37; docs/model.md sec. 5).
  *
  * Geometry (eq. 28): n = (sin a, -cos a), t = (cos a, sin a), uniaxial stress
  * sigma = P / H along x, so sn = sigma sin^2 a, st = sigma sin a cos a and the

@@ -1,6 +1,6 @@
 /*
  * ana.h - closed-form uniaxial bar with decohesion (Schreyer, Sulsky, Zhou 2002,
- * sec. 3.2, eqs. 28-37; MODEL.md sec. 5).  The independent oracle for every MPM result.
+ * sec. 3.2, eqs. 28-37; docs/model.md sec. 5).  The independent oracle for every MPM result.
  *
  * A bar of length L, height H, unit depth, loaded in uniaxial stress sigma = P / H,
  * with one failure plane at angle alpha to the x-axis.  Model 1 (associated) and

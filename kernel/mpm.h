@@ -27,7 +27,7 @@ typedef enum {
 
 const char *mpm_strerror(mpm_status s);
 
-/* Le, the effective length V_e / A_d of eq. 41 (MODEL.md open point): CELL, the paper's
+/* Le, the effective length V_e / A_d of eq. 41 (docs/model.md sec. 6): CELL, the paper's
  * h max(|sin a|, |cos a|), exact for a band one cell wide per row; PARTICLE, the same
  * for the particle's square; STAIRCASE, h (|sin a| + |cos a|), the width of the
  * narrowest band of cells that can open along an inclined line (mpm_sim.c). */

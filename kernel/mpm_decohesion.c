@@ -1,6 +1,6 @@
 /*
  * mpm_decohesion.c - the decohesion constitutive update at one particle
- * (Schreyer, Sulsky and Zhou 2002, secs. 3-4; MODEL.md secs. 3-4).
+ * (Schreyer, Sulsky and Zhou 2002, secs. 3-4; docs/model.md secs. 3-4).
  *
  *   effective traction  se = sqrt(<sn>^2/snf^2 + st^2/stf^2)          eq. 23
  *   decohesion function F  = se - (1 - lambda^q)                        eq. 23
@@ -14,7 +14,7 @@
  * elasticity keeps its form (isotropy):  s_nn = E1 e_nn + E2 e_tt, s_tt = E2 e_nn + E1 e_tt,
  * s_nt = 2G e_nt.
  *
- * Decisions (MODEL.md "Open points"; see README):
+ * Decisions (docs/model.md sec. 6; see README):
  *  - <sn> (Macaulay bracket) in se and m*: normal compression neither starts nor
  *    drives decohesion.  The paper writes sn; its scenes are all in tension, where
  *    the two agree.

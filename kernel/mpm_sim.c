@@ -30,7 +30,7 @@ const char *mpm_strerror(mpm_status s)
   return "unknown status";
 }
 
-/* The 2-D bound h / (c sqrt 2), not MODEL.md's 1-D h / c: measured on Fig. 6 (h 8,
+/* The 2-D bound h / (c sqrt 2), not the 1-D h / c: measured on Fig. 6 (h 8,
  * 1 ppc, report's time-step sweep) the step is stable at 0.70 h/c and blows up from
  * 0.72 h/c, i.e. at 1/sqrt(2), as for bilinear elements with lumped mass. */
 double mpm_scene_dt_crit(const mpm_scene *sc)
@@ -176,7 +176,7 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
   }
 
   /* Le = V_e / A_d (eq. 41): for a square of side a crossed by a line at alpha,
-   * a * max(|sin a|, |cos a|).  a = h (cell) or h / n (particle), MODEL.md open point. */
+   * a * max(|sin a|, |cos a|).  a = h (cell) or h / n (particle), docs/model.md sec. 6. */
   const double a = sc->alpha_deg * (3.14159265358979323846 / 180.0);
   const double side = sc->le_mode == MPM_LE_PARTICLE ? h / n1 : h;
   /* STAIRCASE: on a grid of square cells a band along a line at angle a steps sideways

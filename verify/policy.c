@@ -55,7 +55,7 @@ static void known(ver_check *k, double lo, double hi)
  *  - analytic snapback (g below its limit: fig8, a45, a30): the explicit method cannot
  *    follow the load reversal; the softening slope is then negative where the
  *    analytic one is positive (known-limit).
- *  - Le = particle with several particles per cell (MODEL.md open point): the strain is
+ *  - Le = particle with several particles per cell (docs/model.md sec. 6): the strain is
  *    uniform along x inside a cell, so all sqrt(ppc) sub-columns of the band cell soften
  *    together, each with Le = h / sqrt(ppc): the band dissipates sqrt(ppc) x U0 per area.
  *    This case measures that choice; D, W_ext, delta_sep, softening and curve error are

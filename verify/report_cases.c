@@ -21,7 +21,7 @@ const double rep_sweep_until[REP_NSWEEP] = {0.6, 1.2, 1.2};
 static const double stab_ratio[] = {0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.72, 0.74, 0.76, 0.78, 0.8, 0.9, 1.0, 1.1};
 #define NSTAB (int)(sizeof stab_ratio / sizeof stab_ratio[0])
 
-/* h / c, MODEL.md's 1-D bound: the unit of the time-step sweep, so that the figure
+/* h / c, the 1-D bound: the unit of the time-step sweep, so that the figure
  * shows where the step really fails (1/sqrt(2) of it).  The kernel validates the 2-D
  * bound mpm_scene_dt_crit() = h / (c sqrt 2). */
 double ver_report_dt_crit(const rep_ctx *r, const char *scene, double h)

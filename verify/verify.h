@@ -1,6 +1,6 @@
 /*
  * verify.h - `delam verify`: sweeps of the scenes over h and particles per cell,
- * each run checked against the closed-form bar (analytic/ana.h, MODEL.md sec. 5),
+ * each run checked against the closed-form bar (analytic/ana.h, docs/model.md sec. 5),
  * then cross-case checks (energy invariance over h and ppc, observed order of
  * convergence of the load-deflection curve).
  *

@@ -82,8 +82,8 @@ static void test_ana_bar_fig7_g(void **state)
 }
 
 /* Fig. 8: alpha 60, Mode II (snf 10, stf 1, s0 = snf).  By hand 1/r0^2 =
- * (3/4)(3/400 + 1/4), g = 0.7725/sqrt(3) = 0.44600; the paper prints 0.43 (MODEL.md
- * open point).  Either way g < 1 with q = 1: snapback over the whole branch. */
+ * (3/4)(3/400 + 1/4), g = 0.7725/sqrt(3) = 0.44600; the paper prints 0.43 (docs/model.md
+ * sec. 6).  Either way g < 1 with q = 1: snapback over the whole branch. */
 static void test_ana_bar_fig8_g(void **state)
 {
   (void)state;

@@ -235,7 +235,7 @@ static void test_mpm_bar_elastic_stiffness_energy(void **state)
 
 /* Fig. 6 with decohesion (Model 1, alpha 90, q 1, imperfection 0.9 at the centre),
  * pulled to delta 0.45, past separation (analytic: peak at 0.1875, separation at
- * 0.375, MODEL.md sec. 5).  Against eq. 25 and the closed-form bar:
+ * 0.375, docs/model.md sec. 5).  Against eq. 25 and the closed-form bar:
  *   peak load Pmax = snf H = 32 (the imperfection is one particle: within 3 %);
  *   external work to separation = UF x failure area = (q U0 / (q + 1)) H = 6;
  *   traction work on the failure plane W_coh = 6 as well (sec. 3: UF);

@@ -1,8 +1,8 @@
 /*
  * test_mpm_decohesion.c - the pure constitutive update mpm_dcoh_update (secs. 3-4;
- * MODEL.md secs. 1, 3, 4) driven at a single particle, checked against values that do
+ * docs/model.md secs. 1, 3, 4) driven at a single particle, checked against values that do
  * not come from the update itself:
- *  - plane-stress elasticity C computed here from E and nu (MODEL.md sec. 1);
+ *  - plane-stress elasticity C computed here from E and nu (docs/model.md sec. 1);
  *  - the softening branch of a strain-driven particle, solved here by bisection from
  *    F = 0 (eq. 23) and the weak compatibility of eqs. 39-41 (see softening_root);
  *  - the traction work per unit area at separation, UF = q U0 / (q + 1) (eq. 25),
@@ -61,7 +61,7 @@ static mpm_material make_mat(int model, double alpha, double snf, double stf, do
   return m;
 }
 
-/* Plane-stress C (MODEL.md sec. 1), from E and nu only; e[2] is tensor shear. */
+/* Plane-stress C (docs/model.md sec. 1), from E and nu only; e[2] is tensor shear. */
 static void C_apply(double E, double nu, const double e[3], double s[3])
 {
   const double E1 = E / (1.0 - nu * nu), E2 = nu * E / (1.0 - nu * nu), G = E / (2.0 * (1.0 + nu));
@@ -374,7 +374,7 @@ static void drive_mixed(int model, double q)
       traction(alpha, s.sxx, s.syy, s.sxy, &sn, &st);
       assert_abs(sn, 0.0, 1e-12, "sn after separation (mixed)");
       assert_abs(st, 0.0, 1e-12, "st after separation (mixed)");
-      /* Separation is legitimate only if the consistency condition (MODEL.md sec. 4,
+      /* Separation is legitimate only if the consistency condition (docs/model.md sec. 4,
        * flow frozen at the trial state) has no root with lambda below the threshold. */
       const double se = sqrt(sn_tr * sn_tr / (snf * snf) + st_tr * st_tr / (stf * stf));
       const double kk = ubar0 / LE, E1 = E / (1.0 - nu * nu), G = E / (2.0 * (1.0 + nu));
