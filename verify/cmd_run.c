@@ -87,6 +87,33 @@ static int apply_overrides(ver_scene *vs, double h, double ppc, double dt, doubl
   return 0;
 }
 
+/* What a finished run says: the energy warnings on stderr and its numbers on stdout. */
+static void print_result(const ver_scene *vs, const char *id, const ver_summary *uu, const char *outdir)
+{
+  const ver_summary u = *uu;
+  if (!(u.energy_residual <= VER_ENERGY_TOL)) /* the balance over every row, to the run's end */
+    fprintf(stderr, "delam run: warning: energy residual %.3g over the whole run (to delta %.4g) is above the tolerance "
+            "%g (W_ext + E0 - KE - SE - W_coh - booked losses, over max W_ext; unbooked %.3g; energy.csv)\n",
+            u.energy_residual, u.delta_end, VER_ENERGY_TOL, u.energy_unbooked);
+  else if (vs->sc.vib_mode == 0 && !(u.energy_unbooked <= VER_ENERGY_TOL))
+    fprintf(stderr, "delam run: warning: energy not accounted for %.3g over the whole run (to delta %.4g) is above the "
+            "tolerance %g (W_ext + E0 - KE - SE - W_coh over max W_ext, nothing booked; booked residual %.3g; "
+            "energy.csv L_bc, L_flip, L_scheme, W_head)\n", u.energy_unbooked, u.delta_end, VER_ENERGY_TOL,
+            u.energy_residual);
+  if (vs->sc.vib_mode > 0) /* free vibration: what it kept and its period */
+    printf("%s: energy kept %.4f (booked: L_bc %.3g, L_flip %.3g, L_scheme %.3g of %.4g), period %.6g against "
+           "%.6g (error %+.3f %%), energy residual %.2e\n",
+           id, u.energy_kept, u.L_bc_final, u.L_flip_final, u.L_scheme_final, u.energy_start, u.period,
+           u.period_exact, 100.0 * u.period_error, u.energy_residual);
+  else
+    printf("%s: peak P %.4g at delta %.4g, separation at delta %.4g, D %.4g, W_ext %.4g, "
+           "elastic slope %.4g, energy residual %.2e (unbooked %.2e) to delta %.4g\n",
+           id, u.peak_P, u.delta_peak, u.delta_sep, u.D_final, u.W_ext_final, u.k_elastic, u.energy_residual,
+           u.energy_unbooked, u.delta_end);
+  printf("%s: %zu particles, %ld steps, %.2f s, %.3g particle-updates/s -> %s/\n", id, u.particles, u.steps,
+         u.wall_s, u.updates_per_s, outdir);
+}
+
 int ver_cmd_run(int argc, char **argv)
 {
   const char *path = NULL, *outdir = NULL;
@@ -177,26 +204,6 @@ int ver_cmd_run(int argc, char **argv)
       fprintf(stderr, "delam run: partial results in %s (summary.json says complete: false)\n", o.outdir);
     return rc;
   }
-  if (!(u.energy_residual <= VER_ENERGY_TOL)) /* the balance over every row, to the run's end */
-    fprintf(stderr, "delam run: warning: energy residual %.3g over the whole run (to delta %.4g) is above the tolerance "
-            "%g (W_ext + E0 - KE - SE - W_coh - booked losses, over max W_ext; unbooked %.3g; energy.csv)\n",
-            u.energy_residual, u.delta_end, VER_ENERGY_TOL, u.energy_unbooked);
-  else if (vs.sc.vib_mode == 0 && !(u.energy_unbooked <= VER_ENERGY_TOL))
-    fprintf(stderr, "delam run: warning: energy not accounted for %.3g over the whole run (to delta %.4g) is above the "
-            "tolerance %g (W_ext + E0 - KE - SE - W_coh over max W_ext, nothing booked; booked residual %.3g; "
-            "energy.csv L_bc, L_flip, L_scheme, W_head)\n", u.energy_unbooked, u.delta_end, VER_ENERGY_TOL,
-            u.energy_residual);
-  if (vs.sc.vib_mode > 0) /* free vibration: what it kept and its period */
-    printf("%s: energy kept %.4f (booked: L_bc %.3g, L_flip %.3g, L_scheme %.3g of %.4g), period %.6g against "
-           "%.6g (error %+.3f %%), energy residual %.2e\n",
-           id, u.energy_kept, u.L_bc_final, u.L_flip_final, u.L_scheme_final, u.energy_start, u.period,
-           u.period_exact, 100.0 * u.period_error, u.energy_residual);
-  else
-    printf("%s: peak P %.4g at delta %.4g, separation at delta %.4g, D %.4g, W_ext %.4g, "
-           "elastic slope %.4g, energy residual %.2e (unbooked %.2e) to delta %.4g\n",
-           id, u.peak_P, u.delta_peak, u.delta_sep, u.D_final, u.W_ext_final, u.k_elastic, u.energy_residual,
-           u.energy_unbooked, u.delta_end);
-  printf("%s: %zu particles, %ld steps, %.2f s, %.3g particle-updates/s -> %s/\n", id, u.particles, u.steps,
-         u.wall_s, u.updates_per_s, o.outdir);
+  print_result(&vs, id, &u, o.outdir);
   return 0;
 }
