@@ -208,6 +208,29 @@ double ver_energy_residual(const double *const e[8], size_t n, double E0, double
   return res;
 }
 
+int ver_gci(double f1, double f2, double f3, double r, double p_lo, double p_hi, ver_gci_result *g)
+{
+  g->conv = g->p = g->p_used = g->fs = g->gci12 = g->gci23 = g->asym = NAN;
+  g->sensible = 0;
+  if (!(r > 1.0) || !(p_lo > 0.0) || !(p_lo <= p_hi) || f1 == 0.0 || f2 == 0.0 || !isfinite(f1 + f2 + f3))
+    return -1;
+  if (f2 == f1) {
+    g->gci12 = 0.0;
+    return -1;
+  }
+  g->conv = (f3 != f2) ? (f2 - f1) / (f3 - f2) : INFINITY;
+  if (g->conv > 0.0 && isfinite(g->conv))
+    g->p = log(1.0 / g->conv) / log(r);
+  g->sensible = g->conv > 0.0 && g->conv < 1.0 && g->p >= p_lo && g->p <= p_hi;
+  g->fs = g->sensible ? 1.25 : 3.0;
+  g->p_used = isfinite(g->p) ? fmin(fmax(g->p, p_lo), p_hi) : p_lo;
+  const double rp = pow(r, g->p_used);
+  g->gci12 = g->fs * fabs((f2 - f1) / f1) / (rp - 1.0);
+  g->gci23 = g->fs * fabs((f3 - f2) / f2) / (rp - 1.0);
+  g->asym = g->gci12 > 0.0 ? g->gci23 / (rp * g->gci12) : NAN;
+  return 0;
+}
+
 double ver_spread(const double *v, size_t n)
 {
   if (n == 0)

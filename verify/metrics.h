@@ -65,6 +65,21 @@ double ver_angle_diff(double a_deg, double b_deg);
  * (if not NULL) gets log C.  NaN if fewer than 2 distinct h or any e <= 0. */
 double ver_conv_order(const double *h, const double *e, size_t n, double *logc);
 
+/* Roache's Grid Convergence Index from three grids h, r h, r^2 h (r > 1) with values
+ * f1 (finest), f2, f3.  conv = (f2 - f1) / (f3 - f2): in (0, 1) the values converge
+ * monotonically, < 0 they oscillate, > 1 they diverge.  p = ln((f3 - f2) / (f2 - f1)) / ln r
+ * (NaN unless conv > 0).  The p is sensible when 0 < conv < 1 and p_lo <= p <= p_hi:
+ * then Fs = 1.25 and p is used; otherwise Fs = 3 and p is clamped to [p_lo, p_hi]
+ * (p_lo when it is NaN).  gci12 = Fs |(f2 - f1) / f1| / (r^p - 1), gci23 the same on f2,
+ * f3; asym = gci23 / (r^p gci12), about 1 in the asymptotic range. */
+typedef struct {
+  double conv, p, p_used, fs, gci12, gci23, asym;
+  int sensible;
+} ver_gci_result;
+/* 0, or -1 (the result all NaN) if r <= 1, p_lo > p_hi, p_lo <= 0, f1 == 0 or f2 == 0,
+ * or f2 == f1 (nothing to estimate: gci12 0 is then set). */
+int ver_gci(double f1, double f2, double f3, double r, double p_lo, double p_hi, ver_gci_result *g);
+
 /* The energy balance W_ext + E0 = KE + SE + W_coh + booked over n rows, E0 the energy
  * at the start (KE + SE) and booked the ledger's terms L_bc + L_flip + L_scheme + W_head
  * (mpm.h): its largest miss over the larger of max |W_ext| and E0.  The columns are

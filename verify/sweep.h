@@ -70,6 +70,7 @@ typedef struct {
   int n;
   double x[8], y[8];      /* the varying parameter and the number per case            */
   char ids[8][128];
+  char yname[24];         /* the points' value key ("" : D_final or curve_l2 by name) */
   ver_check chk;
 } ver_cross;
 

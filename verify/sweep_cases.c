@@ -127,6 +127,8 @@ int ver_sweep_cases(const ver_verify_opts *o, ver_case **out, int *nout)
       {"fig6", 4, 1, &V_BASE}, {"fig6", 2, 4, &V_BASE},
       {"fig6", 8, 4, &V_LEP},  {"fig6", 8, 4, &V_SEP8},
       {"fig7", 4, 4, &V_BASE}, {"fig6", 8, 1, &V_WHOLE},
+      /* one inclined GCI (policy.c): three grids in ratio 2 at 1 ppc, about 10 s */
+      {"fig7", 8, 1, &V_BASE}, {"fig7", 4, 1, &V_BASE}, {"fig7", 2, 1, &V_BASE},
     };
     const int nq = (int)(sizeof q / sizeof q[0]);
     cs = calloc((size_t)nq, sizeof *cs);

@@ -112,7 +112,8 @@ int ver_sweep_write_json(const ver_verify_opts *o, const ver_case *cs, int n, co
       cJSON *p = cJSON_CreateObject();
       cJSON_AddStringToObject(p, "case", g->ids[j]);
       cJSON_AddNumberToObject(p, g->over, g->x[j]);
-      cJSON_AddItemToObject(p, strcmp(g->name, "order_h") ? "D_final" : "curve_l2", num_or_null(g->y[j]));
+      cJSON_AddItemToObject(p, g->yname[0] ? g->yname : strcmp(g->name, "order_h") ? "D_final" : "curve_l2",
+                            num_or_null(g->y[j]));
       cJSON_AddItemToArray(pts, p);
     }
     cJSON_AddItemToArray(xa, go);

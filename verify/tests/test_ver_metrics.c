@@ -372,6 +372,49 @@ static void test_ver_metrics_energy_residual(void **state)
   assert_true(fabs(ver_energy_residual(e, 2, 4.0, NULL) - 1.0) < 1e-15);
 }
 
+/* GCI by hand.  f = 1 + h^2 / 100 at h 1, 2, 4: f1 1.01, f2 1.04, f3 1.16; conv = 0.03 /
+ * 0.12 = 0.25, p = ln 4 / ln 2 = 2 (sensible in [0.5, 2]), Fs 1.25, GCI_12 =
+ * 1.25 (0.03 / 1.01) / 3 = 0.0123762..., GCI_23 = 1.25 (0.12 / 1.04) / 3 = 0.0480769...,
+ * asym = GCI_23 / (4 GCI_12) = 1.01 / 1.04.  Then values whose p (ln 9 / ln 2 = 3.17)
+ * is above p_hi 2: Fs 3 and p 2; a divergent and an oscillating triple: Fs 3, p 0.5. */
+static void test_ver_metrics_gci(void **state)
+{
+  (void)state;
+  ver_gci_result g;
+  assert_int_equal(ver_gci(1.01, 1.04, 1.16, 2.0, 0.5, 2.0, &g), 0);
+  assert_rel(g.conv, 0.25, 1e-12, "conv");
+  assert_rel(g.p, 2.0, 1e-12, "p");
+  assert_int_equal(g.sensible, 1);
+  assert_rel(g.fs, 1.25, 0, "Fs");
+  assert_rel(g.gci12, 1.25 * 0.03 / 1.01 / 3.0, 1e-12, "GCI_12");
+  assert_rel(g.gci23, 1.25 * 0.12 / 1.04 / 3.0, 1e-12, "GCI_23");
+  assert_rel(g.asym, 1.01 / 1.04, 1e-12, "asymptotic ratio");
+  /* f2 - f1 = 0.01, f3 - f2 = 0.09: p = log2 9 > 2 */
+  assert_int_equal(ver_gci(2.0, 2.01, 2.1, 2.0, 0.5, 2.0, &g), 0);
+  assert_rel(g.p, log(9.0) / log(2.0), 1e-12, "p above the range");
+  assert_int_equal(g.sensible, 0);
+  assert_rel(g.fs, 3.0, 0, "Fs 3 for p out of range");
+  assert_rel(g.p_used, 2.0, 0, "p clamped");
+  assert_rel(g.gci12, 3.0 * 0.01 / 2.0 / 3.0, 1e-12, "GCI_12 with Fs 3, p 2");
+  /* divergent: differences 0.2 then 0.1 (conv 2), p NaN -> 0.5 */
+  assert_int_equal(ver_gci(1.3, 1.1, 1.0, 2.0, 0.5, 2.0, &g), 0);
+  assert_rel(g.conv, 2.0, 1e-12, "conv divergent");
+  assert_true(isnan(g.p) || g.p < 0);
+  assert_int_equal(g.sensible, 0);
+  assert_rel(g.gci12, 3.0 * (0.2 / 1.3) / (sqrt(2.0) - 1.0), 1e-12, "GCI_12 divergent");
+  /* oscillating: conv < 0 */
+  assert_int_equal(ver_gci(1.0, 1.1, 1.05, 2.0, 0.5, 2.0, &g), 0);
+  assert_true(g.conv < 0);
+  assert_int_equal(g.sensible, 0);
+  assert_rel(g.fs, 3.0, 0, "Fs oscillating");
+  /* degenerate inputs */
+  assert_int_equal(ver_gci(1.0, 1.0, 1.2, 2.0, 0.5, 2.0, &g), -1);
+  assert_rel(g.gci12, 0.0, 0, "equal fine values");
+  assert_int_equal(ver_gci(1.0, 1.1, 1.2, 1.0, 0.5, 2.0, &g), -1);
+  assert_int_equal(ver_gci(0.0, 1.1, 1.2, 2.0, 0.5, 2.0, &g), -1);
+  assert_true(isnan(g.gci12));
+}
+
 int main(void)
 {
   const struct CMUnitTest tests[] = {
@@ -392,6 +435,7 @@ int main(void)
     cmocka_unit_test(test_ver_metrics_order_constant),
     cmocka_unit_test(test_ver_metrics_sep_ref),
     cmocka_unit_test(test_ver_metrics_energy_residual),
+    cmocka_unit_test(test_ver_metrics_gci),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
