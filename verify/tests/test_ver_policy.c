@@ -108,11 +108,21 @@ static void test_ver_policy_inclined_known_limit(void **state)
   c.D_final = 5.0 * c.ana.D_sep;
   ver_policy_case(&c);
   assert_int_equal(chk(&c, "D_final")->verdict, VER_FAIL);
-  /* an angle off by 12 deg fails (10 deg tolerance, no known-limit) */
+  /* an angle off by 12 deg fails (10 deg tolerance, no known-limit) with 8 cells
+   * across the bar; with 4 (h 8) it is known-limit (up to 30 deg), 32 off fails */
   c.D_final = c.ana.D_sep;
   c.angle = 48;
+  const double h0 = c.vs.sc.h;
+  c.vs.sc.h = c.vs.sc.H / 8.0;
   ver_policy_case(&c);
   assert_int_equal(chk(&c, "crack_angle")->verdict, VER_FAIL);
+  c.vs.sc.h = c.vs.sc.H / 4.0;
+  ver_policy_case(&c);
+  assert_int_equal(chk(&c, "crack_angle")->verdict, VER_KNOWN);
+  c.angle = 28;
+  ver_policy_case(&c);
+  assert_int_equal(chk(&c, "crack_angle")->verdict, VER_FAIL);
+  c.vs.sc.h = h0;
   /* the angle wraps mod 180: 179.5 against 0 is 0.5 off */
   c.vs.sc.alpha_deg = 0.0;
   c.angle = 179.5;
