@@ -182,6 +182,13 @@ void ver_report_build_cases(report *R)
         for (double h = 8; h >= (ppc == 1 ? 1 : ppc == 9 && s > 0 ? 4 : 2); h /= 2)
           if (ver_report_find_sweep(r, rep_sweep_scene[s], h, ppc) < 0)
             ver_report_add(r, rep_sweep_scene[s], h, ppc, 0, rep_sweep_until[s], NULL, NULL, REP_SWEEP, 0);
+  /* the inclined scenes' 1-ppc sweep also with the paper's method, where the scene file
+   * chooses another (work-precision: one line per method; tag 1 tells them from the
+   * pictures' paper-method runs) */
+  for (int s = 1; s < REP_NSWEEP; s++)
+    if (needs_paper_run(r, rep_sweep_scene[s]))
+      for (double h = 8; h >= 2; h /= 2)
+        ver_report_add_sets(r, rep_sweep_scene[s], h, 1, 0, rep_sweep_until[s], PAPER_SETS, 3, REP_PAPER, 1);
   /* time-step sweep: fig6, h = 8, 1 ppc, to delta 0.5 */
   const double crit = ver_report_dt_crit(r, "fig6", 8);
   for (int i = 0; i < NSTAB; i++)

@@ -112,8 +112,34 @@ static void write_fig3(const rep_ctx *r, FILE *vars)
     }
 }
 
+/* The paper-method sweep of an inclined scene (report_cases.c, tag 1): sweep-<scene>-paper.dat,
+ * the columns of the other sweep tables. */
+static void write_paper_sweep(const rep_ctx *r, const char *scene)
+{
+  char name[64];
+  snprintf(name, sizeof name, "sweep-%s-paper.dat", scene);
+  FILE *f = NULL;
+  for (double h = 8; h >= 0.5; h /= 2)
+    for (int i = 0; i < r->n; i++) {
+      const rep_case *c = &r->c[i];
+      if (!(c->role & REP_PAPER) || c->tag != 1 || strcmp(c->scene, scene) || c->h != h || !c->have ||
+          !isfinite(c->curve_err))
+        continue;
+      if (!f && !(f = open_data(r, name)))
+        return;
+      if (ftell(f) == 0)
+        fprintf(f, "h,curve_err,abs_diss_err,cpu_s,complete,particles\n");
+      fprintf(f, "%g,%.6g,%.6g,%.6g,%d,%.0f\n", h, c->curve_err, fabs(c->diss_err), c->cpu_s, c->complete,
+              c->particles);
+    }
+  if (f)
+    fclose(f);
+}
+
 static void write_sweeps(const rep_ctx *r, rep_fit *fits, FILE *vars)
 {
+  for (int s = 1; s < REP_NSWEEP; s++)
+    write_paper_sweep(r, rep_sweep_scene[s]);
   for (int s = 0; s < REP_NSWEEP; s++) {
     double hh[8], ec[8], ed[8];
     for (int ppc = 1; ppc <= 9; ppc += ppc == 1 ? 3 : 5) {
