@@ -27,6 +27,7 @@ typedef struct {
   const char *suffix; /* "" for the scene as written */
   const char *set;    /* "section.key=value" or NULL */
   int whole;          /* 1: to the scene's own end_delta, not the verify stop       */
+  int slow;           /* k: set makes loading.speed the file's / 2^k (rate studies)  */
 } ver_variant;
 
 

@@ -17,11 +17,15 @@
 #include "summary.h"
 #include "sweep.h"
 
-static const ver_variant V_BASE = {"", NULL, 0};
-static const ver_variant V_LEP = {"Leparticle", "decohesion.Le=particle", 0};
-static const ver_variant V_SEP8 = {"sep0.8", "decohesion.separation=0.8", 0};
+static const ver_variant V_BASE = {"", NULL, 0, 0};
+static const ver_variant V_LEP = {"Leparticle", "decohesion.Le=particle", 0, 0};
+static const ver_variant V_SEP8 = {"sep0.8", "decohesion.separation=0.8", 0, 0};
 /* the scene's whole run (its end_delta, no early stop) for the energy balance to the end */
-static const ver_variant V_WHOLE = {"whole", "run.stop_margin=0", 1};
+static const ver_variant V_WHOLE = {"whole", "run.stop_margin=0", 1, 0};
+/* fig6.ini's grip speed 0.001 halved and quartered: the speed refined with h
+ * (v = 0.001 h / 8) and the rate study at fixed h (policy.c policy_rate) */
+static const ver_variant V_V2 = {"v0.0005", "loading.speed=0.0005", 0, 1};
+static const ver_variant V_V4 = {"v0.00025", "loading.speed=0.00025", 0, 2};
 
 /* The scene file with the same overrides `delam run --h H --ppc N --set ...` applies
  * (cmd_run.c: dt scaled with h to keep the file's Courant number). */
@@ -129,6 +133,8 @@ int ver_sweep_cases(const ver_verify_opts *o, ver_case **out, int *nout)
       {"fig7", 4, 4, &V_BASE}, {"fig6", 8, 1, &V_WHOLE},
       /* one inclined GCI (policy.c): three grids in ratio 2 at 1 ppc, about 10 s */
       {"fig7", 8, 1, &V_BASE}, {"fig7", 4, 1, &V_BASE}, {"fig7", 2, 1, &V_BASE},
+      /* the rate: h 8, 4, 2 at v = 0.001 h / 8, and h 4 at v 0.001, 0.0005, 0.00025 (1 ppc) */
+      {"fig6", 4, 1, &V_V2}, {"fig6", 2, 1, &V_V4}, {"fig6", 4, 1, &V_V4},
     };
     const int nq = (int)(sizeof q / sizeof q[0]);
     cs = calloc((size_t)nq, sizeof *cs);
