@@ -5,10 +5,13 @@
 #   scene-ini    the run's scene.ini, run again, gives byte-identical load.csv and energy.csv;
 #   case-ids     runs that differ in an override get different default folders, and
 #                summary.json lists the overrides and the effective scene;
-#   name=value   --h=4 and --h 4 give the same run.
+#   name=value   --h=4 and --h 4 give the same run;
+#   formats-doc  every key of summary.json and every column of load.csv, energy.csv and
+#                final.csv is described in docs/output-formats.md (given SRC).
 # Prints TAP; exits 1 if a check failed.
 set -u
-delam=${1:?usage: check_provenance.sh path/to/delam}
+delam=${1:?usage: check_provenance.sh path/to/delam [SRC]}
+src=${2:-}
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/delam-prov.XXXXXX")
 trap 'rm -rf "$tmp"' EXIT
 n=0 fail=0
@@ -50,6 +53,21 @@ result case-ids "$why"
 
 "$delam" run fig6 --h 4 --until 0.05 --quiet --out spaced >/dev/null 2>&1
 result name=value "$(cmp -s "$d/load.csv" spaced/load.csv || echo "--h=4 and --h 4 differ")"
+
+if [ -n "$src" ]; then
+  doc="$src/docs/output-formats.md"
+  missing=$(python3 - "$d" "$doc" <<'PY'
+import csv, json, re, sys
+d, doc = sys.argv[1], open(sys.argv[2]).read()
+names = list(json.load(open(d + "/summary.json")))
+for f in ("load.csv", "energy.csv", "final.csv"):
+    rows = [r for r in csv.reader(open(d + "/" + f)) if r and not r[0].startswith("#")]
+    names += rows[0]
+print(" ".join(sorted({k for k in names if not re.search(r"(?<![A-Za-z0-9_])" + re.escape(k) + r"(?![A-Za-z0-9_])", doc)})))
+PY
+)
+  result formats-doc "$([ -z "$missing" ] || echo "not in docs/output-formats.md: $missing")"
+fi
 
 echo "1..$n"
 [ "$fail" = 0 ]
