@@ -98,6 +98,9 @@ typedef struct {
   int vib_mode;          /* > 0: start from axial mode m, vx += vib_amp sin(m pi X / L) */
   double vib_amp;        /* its velocity amplitude                                    */
   double vib_periods;    /* the run's length in periods (the driver sets end_delta from it) */
+  double body_amp;       /* manufactured solutions: a body force per unit mass, in x,   */
+  double body_omega;     /*   b_x = body_amp sin(pi X / L) sin(body_omega t) (0: none;  */
+                         /*   linear shapes, one field; tests/test_mpm_mms.c)           */
   double dt;             /* time step                                                  */
   double speed;          /* grip speed (pulls the left end in -x)                      */
   double end_delta;      /* the run never goes past this end displacement              */
@@ -222,6 +225,8 @@ typedef struct {
   double ihx, ihy;         /* 1 / hx, 1 / h                                            */
   mpm_node *nd;            /* the nodes, nnx * nny                                     */
   mpm_fields *fld;         /* the second velocity field, or NULL (grid.fields = 1)      */
+  double body_now;         /* this step's body_amp sin(body_omega t), 0: no body force  */
+  double body_k;           /* pi / L                                                   */
 } mpm_grid;
 
 mpm_grid *mpm_grid_alloc(int ncx, int ncy, double ox, double oy, double h);
@@ -358,6 +363,12 @@ void mpm_sim_sort(mpm_sim *s);
  * default (mpm_threads.c).  Results do not depend on it (fixed summation order). */
 mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char *err, size_t errlen);
 void mpm_sim_free(mpm_sim *s);
+
+/* The manufactured solution (mpm_mms.c): a forced axial vibration with its body force,
+ * u = A sin(pi X / L) sin(w t), nu = 0, 1 ppc, dt = 0.1 h / 8; the scene at grid h, and
+ * the RMS particle displacement error over A at t = 10 (*e; MPM_OK or the step's status). */
+mpm_scene mpm_mms_scene(double h, int scheme, int bc);
+mpm_status mpm_mms_error(double h, int scheme, int bc, double *e, char *err, size_t errlen);
 /* One explicit step (eqs. 2-7, USL).  On failure, err names the step, particle and field. */
 mpm_status mpm_sim_step(mpm_sim *s, char *err, size_t errlen);
 double mpm_sim_delta(const mpm_sim *s);

@@ -76,6 +76,9 @@ mpm_status mpm_scene_check(const mpm_scene *sc, char *err, size_t errlen)
   if (sc->head != MPM_HEAD_RIGID && sc->head != MPM_HEAD_NONE) BAD("loading.head must be rigid or none");
   if (sc->vib_mode < 0) BAD("vibration.mode must be >= 0");
   if (sc->vib_mode > 0 && !isfinite(sc->vib_amp)) BAD("vibration.amplitude must be finite");
+  if (!isfinite(sc->body_amp) || !isfinite(sc->body_omega)) BAD("the body force must be finite");
+  if (sc->body_amp != 0.0 && (sc->shape != MPM_SHAPE_LINEAR || sc->fields != MPM_FIELDS_ONE))
+    BAD("a body force needs grid.shape = linear and grid.fields = one");
   if (sc->grid_motion != MPM_GRID_STRETCH && sc->grid_motion != MPM_GRID_FIXED) BAD("grid.motion must be stretch or fixed");
   if (sc->shape != MPM_SHAPE_LINEAR && sc->shape != MPM_SHAPE_GIMP) BAD("grid.shape must be linear or gimp");
   if (sc->fields != MPM_FIELDS_ONE && sc->fields != MPM_FIELDS_TWO) BAD("grid.fields must be one or two");

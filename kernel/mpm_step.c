@@ -144,7 +144,7 @@ static inline void cell_sums_move(cell_sums *c, mpm_node *nd, size_t nny, size_t
  *   c01 = wx0 T1 + R1,  c11 = wx1 T1 - R1,  T1 = wy1 P - FY,  R1 = wy1 FX.
  * The particles are sorted by cell, so the shares are summed per cell (cell_sums). */
 static inline __attribute__((always_inline)) int p2g_range_impl(const mpm_grid *gg, const mpm_particles *p,
-                                                                 size_t a, size_t b, const int two)
+                                                                 size_t a, size_t b, const int two, const int body)
 {
   const mpm_grid geo = *gg, *g = &geo; /* a local copy: no store below can alias it */
   const size_t nny = (size_t)g->nny;
@@ -181,7 +181,9 @@ static inline __attribute__((always_inline)) int p2g_range_impl(const mpm_grid *
       node_add(mpm_fields_node(fld, nd, n[3], side), sh.wx1 * T1 - R1);
       continue;
     }
-    const mpm_v8 P = {mm, mm * vx[k], mm * vy[k], 0.0, 0.0, 0.0, 0.0, 0.0};
+    /* body (manufactured solutions only): f_i += m_p b(X_p, t) N_ip in the fx lane */
+    const double fb = body ? mm * g->body_now * sin(g->body_k * p->x0[k]) : 0.0;
+    const mpm_v8 P = {mm, mm * vx[k], mm * vy[k], fb, 0.0, 0.0, 0.0, 0.0};
     const mpm_v8 T0 = sh.wy0 * P + FY, R0 = sh.wy0 * FX;
     const mpm_v8 T1 = sh.wy1 * P - FY, R1 = sh.wy1 * FX;
     cell_sums_move(&cs, nd, nny, sh.n00);
@@ -202,8 +204,10 @@ static int p2g_range(const mpm_grid *g, const mpm_particles *p, size_t a, size_t
 {
   /* one loop without the two-field test, for every step before a band is cut */
   if (g->fld && g->fld->nsplit)
-    return p2g_range_impl(g, p, a, b, 1);
-  return p2g_range_impl(g, p, a, b, 0);
+    return p2g_range_impl(g, p, a, b, 1, 0);
+  if (g->body_now != 0.0) /* a manufactured solution's body force: its own loop */
+    return p2g_range_impl(g, p, a, b, 0, 1);
+  return p2g_range_impl(g, p, a, b, 0, 0);
 }
 
 static inline __attribute__((always_inline)) double musl_velocity_range_impl(const mpm_grid *gg, mpm_particles *p,
@@ -874,6 +878,8 @@ static mpm_status p2g(mpm_sim *s, char *err, size_t errlen)
   mpm_grid *g = s->g;
   const size_t nn = (size_t)g->nnx * (size_t)g->nny;
   memset(g->nd, 0, nn * sizeof(mpm_node));
+  g->body_k = 3.14159265358979323846 / s->sc.L;
+  g->body_now = s->sc.body_amp != 0.0 ? s->sc.body_amp * sin(s->sc.body_omega * s->t) : 0.0;
   if (g->fld)
     mpm_fields_mark(s);
   if (!scatter(s, 0))

@@ -91,6 +91,9 @@ void ver_case_dir(const ver_verify_opts *o, const ver_case *c, char *buf, size_t
 /* Reads what the run left in DIR/<id>/ and measures from it (metrics.h). */
 void ver_case_read(const ver_verify_opts *o, ver_case *c);
 
+/* mms.c: the manufactured solution's order checks (USL, MUSL) into x; how many. */
+int ver_mms_cross(ver_cross *x, int room);
+
 /* policy.c */
 /* The checks of one case (c->chk, c->verdict) from its measured numbers. */
 void ver_policy_case(ver_case *c);
