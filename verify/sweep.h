@@ -106,6 +106,8 @@ int ver_policy_cross(ver_case *cs, int n, ver_cross *x);
 int ver_sweep_write_json(const ver_verify_opts *o, const ver_case *cs, int n, const ver_cross *x, int nx,
                          double wall, int rc);
 int ver_sweep_write_csv(const ver_verify_opts *o, const ver_case *cs, int n);
+/* DIR/verify_cross.csv: one row per cross-case check (order, gci, mms, invariance). */
+int ver_sweep_write_cross_csv(const ver_verify_opts *o, const ver_cross *x, int nx);
 void ver_sweep_print_check(const char *id, const ver_check *k);
 /* One check as a JSON object (name, class, measured, reference, error, tolerance,
  * bounds, verdict, note), for verify.json and check.json. */

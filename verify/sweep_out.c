@@ -190,6 +190,34 @@ int ver_sweep_write_csv(const ver_verify_opts *o, const ver_case *cs, int n)
   return r;
 }
 
+int ver_sweep_write_cross_csv(const ver_verify_opts *o, const ver_cross *x, int nx)
+{
+  size_t cap = 4096 + (size_t)nx * 1024, len = 0;
+  char *buf = malloc(cap);
+  if (!buf)
+    return -1;
+  len += (size_t)snprintf(buf + len, cap - len,
+                          "# delam verify_cross.csv schema 1\n"
+                          "check,scene,over,held,held_value,verdict,measured,reference,error,tolerance,points,note\n");
+  for (int i = 0; i < nx && len < cap - 1; i++) {
+    const ver_cross *g = &x[i];
+    char pts[512] = "", note[sizeof g->chk.note];
+    size_t l = 0;
+    for (int j = 0; j < g->n && l < sizeof pts - 40; j++)
+      l += (size_t)snprintf(pts + l, sizeof pts - l, "%s%s=%g:%.9g", j ? ";" : "", g->over, g->x[j], g->y[j]);
+    snprintf(note, sizeof note, "%s", g->chk.note);
+    for (char *p = note; *p; p++)
+      if (*p == '"' || *p == ',' || *p == '\n')
+        *p = ' ';
+    len += (size_t)snprintf(buf + len, cap - len, "%s,%s,%s,%s,%g,%s,%.9g,%.9g,%.9g,%g,%s,%s\n", g->chk.name,
+                            g->scene, g->over, strcmp(g->over, "h") ? "h" : "ppc", g->fixed, ver_verdict_name(g->chk.verdict), g->chk.measured, g->chk.reference,
+                            g->chk.error, g->chk.tol, pts, note);
+  }
+  const int r = write_text(o->outdir, "verify_cross.csv", buf);
+  free(buf);
+  return r;
+}
+
 static const char *VNAME[] = {"PASS", "FAIL", "KNOWN-LIMIT"};
 
 void ver_sweep_print_check(const char *id, const ver_check *k)

@@ -172,7 +172,8 @@ int ver_verify(const ver_verify_opts *o)
   int rc = check_all(cs, n, x, &nx);
   ver_sweep_print_table(cs, n, x, nx);
   const double wall = ver_now_wall() - w0;
-  if (ver_sweep_write_json(o, cs, n, x, nx, wall, rc) || ver_sweep_write_csv(o, cs, n)) {
+  if (ver_sweep_write_json(o, cs, n, x, nx, wall, rc) || ver_sweep_write_csv(o, cs, n) ||
+      ver_sweep_write_cross_csv(o, x, nx)) {
     fprintf(stderr, "delam verify: %s: cannot write verify.json / verify.csv: %s\n", o->outdir, strerror(errno));
     rc = rc ? rc : 2;
   }
