@@ -7,7 +7,9 @@
  * Concepts, one struct each: mpm_scene (the plain description of a run),
  * mpm_material (elastic and decohesion constants), mpm_dstate (one particle's
  * constitutive state, for the pure update), mpm_particles (structure of arrays),
- * mpm_grid (nodal arrays), mpm_sim (all of it plus boundary conditions and energies).
+ * mpm_grid (nodal arrays; mpm_fields, its second velocity field across a cut band),
+ * mpm_sim (all of it plus boundary conditions and energies).  Shape functions: the
+ * paper's bilinear hats or uGIMP (mpm_shape.h, mpm_gimp.c).
  */
 #ifndef DELAM_MPM_H
 #define DELAM_MPM_H

@@ -14,7 +14,12 @@
  * velocities, so a node that a particle barely touches (tiny m_i, finite f_i) cannot
  * inject a huge strain: the cell-crossing instability of USL.
  *
- * N and G are taken at the start of the step in every pass (mpm_shape.h).
+ * N and G are taken at the start of the step in every pass (mpm_shape.h).  With
+ * grid.shape = gimp the scatters are mpm_gimp.c's and the gathers below take the uGIMP
+ * branch (3 x 3 nodes); with grid.fields = two, once the band has cut the bar
+ * (mpm_sim_cut), the passes are the instantiations with the two-field test, and
+ * mpm_fields.c marks the split nodes before the scatter and updates the second field
+ * and the contact after grid_update.
  *
  * USF (time.scheme = usf) takes the strain from the projected v_i first,
  * de_p = dt sym(sum v_i (x) G_ip), updates the stress, scatters the forces of the new
