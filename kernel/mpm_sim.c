@@ -3,10 +3,10 @@
  * needs), particles on a regular n x n subdivision of each cell, the materials with
  * the imperfection, the boundary-condition node lists; and the energy sums.
  *
- * Loading (CASES.md, Fig. 5): the left end x = 0 is gripped in x only by a rigid head
- * moving at -speed, modelled as stress-free particles beyond the end whose nodes are
- * gripped (mpm.h, MPM_MAT_HEAD); the right end x = L is held in x, and its mid-height
- * node in y.
+ * Loading (the paper, sec. 4.4, Fig. 5; docs/model.md sec. 6, "the grip"): the left
+ * end x = 0 is gripped in x only by a rigid head moving at -speed, modelled as
+ * stress-free particles beyond the end whose nodes are gripped (mpm.h, MPM_MAT_HEAD);
+ * the right end x = L is held in x, and its mid-height node in y.
  */
 #include <math.h>
 #include <stdio.h>

@@ -3,7 +3,7 @@
  * paragraphs, figures and tables, rendered to Markdown (REPORT.md) and HTML
  * (index.html) by the same walk, so the two cannot say different things.
  *
- * Prose lives in template files (reports/text/NAME.md), not in C: a template is plain
+ * Prose lives in template files (reports/text/<figure>.md, e.g. reports/text/fig7d.md), not in C: a template is plain
  * text with {name} placeholders filled from a dictionary of numbers and short words
  * that the report sets from the runs (rep_vars).  A placeholder nobody set shows as
  * {name?} and is counted, so a misspelt name is seen, not hidden.
