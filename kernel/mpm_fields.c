@@ -69,18 +69,13 @@ void mpm_fields_mark(mpm_sim *s)
   const mpm_particles *p = s->p;
   const mpm_grid *g = s->g;
   if (!s->cut)
-    return;
-  size_t nsep = 0;
-  for (size_t k = 0; k < p->n; k++)
-    nsep += p->sep[k];
+    return; /* a cut band has its separated particles (separation is never undone) */
   const size_t nn = (size_t)g->nnx * (size_t)g->nny, nny = (size_t)g->nny;
   memset(f->split, 0, nn);
   memset(f->crk, 0, 2 * nn * sizeof(double));
   memset(f->cw, 0, nn * sizeof(double));
   memset(f->nd2, 0, nn * sizeof(mpm_node));
   f->nsplit = 0;
-  if (nsep == 0)
-    return;
   const int gimp = s->sc.shape == MPM_SHAPE_GIMP;
   double lcx = 0.0, lcy = 0.0;
   if (gimp)
@@ -90,29 +85,21 @@ void mpm_fields_mark(mpm_sim *s)
       continue;
     size_t n[9];
     double w[9];
-    int nw = 0;
+    int nw;
     if (gimp) {
       if (!mpm_gimp_inside(g, p->x[k], p->y[k]))
         continue; /* outside: the scatter reports it */
       mpm_gimp1 sx, sy;
       mpm_gimp_1d((p->x[k] - g->ox) * g->ihx, lcx, &sx);
       mpm_gimp_1d((p->y[k] - g->oy) * g->ihy, lcy, &sy);
-      for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 3; j++, nw++) {
-          n[nw] = (size_t)(sx.i0 + i) * nny + (size_t)(sy.i0 + j);
-          w[nw] = sx.S[i] * sy.S[j];
-        }
+      mpm_gimp_stencil((size_t)sx.i0 * nny + (size_t)sy.i0, nny, &sx, &sy, n, w);
+      nw = 9;
     } else {
       mpm_shape sh;
       if (!mpm_shape_at(g, p->x[k], p->y[k], &sh))
         continue;
-      const size_t n0 = sh.n00;
-      const size_t nn4[4] = {n0, n0 + nny, n0 + 1, n0 + nny + 1};
-      const double ww4[4] = {sh.wx0 * sh.wy0, sh.wx1 * sh.wy0, sh.wx0 * sh.wy1, sh.wx1 * sh.wy1};
-      for (; nw < 4; nw++) {
-        n[nw] = nn4[nw];
-        w[nw] = ww4[nw];
-      }
+      mpm_shape_stencil(&sh, nny, n, w);
+      nw = 4;
     }
     for (int q = 0; q < nw; q++) {
       if (!(w[q] > 0.0))

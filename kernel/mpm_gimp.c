@@ -26,6 +26,24 @@ static inline void stencil_flush(mpm_node *nd, size_t n0, size_t nny, const mpm_
       node_add(nd + n0 + (size_t)i * nny + (size_t)j, c[3 * i + j]);
 }
 
+static inline void stencil_clear(mpm_v8 c[9])
+{
+  const mpm_v8 zero = {0.0};
+  for (int q = 0; q < 9; q++)
+    c[q] = zero;
+}
+
+/* The next particle's stencil starts at n0: flush the sums when it differs from cur. */
+static inline void stencil_move(mpm_node *nd, size_t nny, size_t *cur, size_t n0, mpm_v8 c[9])
+{
+  if (n0 == *cur)
+    return;
+  if (*cur != SIZE_MAX)
+    stencil_flush(nd, *cur, nny, c);
+  stencil_clear(c);
+  *cur = n0;
+}
+
 int mpm_gimp_p2g_range(const mpm_grid *gg, const mpm_particles *p, size_t a, size_t b, double lcx, double lcy)
 {
   const mpm_grid geo = *gg, *g = &geo;
@@ -37,10 +55,8 @@ int mpm_gimp_p2g_range(const mpm_grid *gg, const mpm_particles *p, size_t a, siz
   const double *restrict pm = p->m, *restrict V = p->V;
   const double *restrict sxx = p->sxx, *restrict syy = p->syy, *restrict sxy = p->sxy;
   const mpm_fields *fld = g->fld;
-  const mpm_v8 zero = {0.0};
   mpm_v8 c[9];
-  for (int q = 0; q < 9; q++)
-    c[q] = zero;
+  stencil_clear(c);
   size_t cur = SIZE_MAX;
   int out = 0;
   for (size_t k = a; k < b; k++) {
@@ -69,13 +85,7 @@ int mpm_gimp_p2g_range(const mpm_grid *gg, const mpm_particles *p, size_t a, siz
       continue;
     }
     const mpm_v8 P = {mm, mm * vx[k], mm * vy[k], 0.0, 0.0, 0.0, 0.0, 0.0};
-    if (n0 != cur) {
-      if (cur != SIZE_MAX)
-        stencil_flush(nd, cur, nny, c);
-      for (int q = 0; q < 9; q++)
-        c[q] = zero;
-      cur = n0;
-    }
+    stencil_move(nd, nny, &cur, n0, c);
     for (int j = 0; j < 3; j++) {
       const mpm_v8 T = sy.S[j] * P - sy.dS[j] * FY, R = sy.S[j] * FX;
       for (int i = 0; i < 3; i++)
@@ -97,10 +107,8 @@ double mpm_gimp_musl_range(const mpm_grid *gg, mpm_particles *p, size_t a, size_
   const double *restrict x = p->x, *restrict y = p->y, *restrict pm = p->m;
   double *restrict vx = p->vx, *restrict vy = p->vy;
   const mpm_fields *fld = g->fld;
-  const mpm_v8 zero = {0.0};
   mpm_v8 c[9];
-  for (int q = 0; q < 9; q++)
-    c[q] = zero;
+  stencil_clear(c);
   size_t cur = SIZE_MAX;
   for (size_t k = a; k < b; k++) {
     mpm_gimp1 sx, sy;
@@ -125,13 +133,7 @@ double mpm_gimp_musl_range(const mpm_grid *gg, mpm_particles *p, size_t a, size_
           node_add(mpm_fields_node(fld, nd, n0 + (size_t)i * nny + (size_t)j, side), (sx.S[i] * sy.S[j]) * Q);
       continue;
     }
-    if (n0 != cur) {
-      if (cur != SIZE_MAX)
-        stencil_flush(nd, cur, nny, c);
-      for (int q = 0; q < 9; q++)
-        c[q] = zero;
-      cur = n0;
-    }
+    stencil_move(nd, nny, &cur, n0, c);
     for (int i = 0; i < 3; i++)
       for (int j = 0; j < 3; j++)
         c[3 * i + j] += (sx.S[i] * sy.S[j]) * Q;

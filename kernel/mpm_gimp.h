@@ -31,37 +31,17 @@ void mpm_fields_mark(mpm_sim *s);  /* before the scatter: split nodes and band c
 void mpm_fields_grid(mpm_sim *s);  /* after grid_update: the second field's eq. 4, contact */
 void mpm_fields_musl(mpm_sim *s);  /* after grid_musl_velocity                           */
 
-/* The side of a particle near a separated band: 1 (the second field) when
- * n . (x_p - c_p) > 0, with c_p the band centre seen from the particle, the mean of
- * crk over its split stencil nodes weighted by N_ip.  One side a particle, at all its
- * nodes: a particle in two fields at once would couple them again.  A tie (the
- * separated particles of a one-particle-wide band sit on c_p) goes to the first field,
- * with a margin far above rounding (1e-9 cells). */
-static inline int mpm_fields_side(const mpm_fields *f, size_t n0, size_t nny, const mpm_gimp1 *gx,
-                                  const mpm_gimp1 *gy, double x, double y, double h)
-{
-  double w = 0.0, cx = 0.0, cy = 0.0;
-  for (int a = 0; a < 3; a++)
-    for (int b = 0; b < 3; b++) {
-      const size_t n = n0 + (size_t)a * nny + (size_t)b;
-      if (!f->split[n])
-        continue;
-      const double N = gx->S[a] * gy->S[b];
-      w += N;
-      cx += N * f->crk[2 * n];
-      cy += N * f->crk[2 * n + 1];
-    }
-  if (!(w > 0.0))
-    return 0;
-  return f->nx * (x - cx / w) + f->ny * (y - cy / w) > 1e-9 * h;
-}
-
-/* The same for the bilinear stencil: nodes n[4] with weights w[4]. */
-static inline int mpm_fields_side4(const mpm_fields *f, const size_t n[4], const double w[4], double x, double y,
-                                   double h)
+/* The side of a particle near a separated band, from its stencil's nodes n[0..cnt)
+ * and weights w: 1 (the second field) when n . (x_p - c_p) > 0, with c_p the band
+ * centre seen from the particle, the mean of crk over its split nodes weighted by
+ * N_ip.  One side a particle, at all its nodes: a particle in two fields at once would
+ * couple them again.  A tie (the separated particles of a one-particle-wide band sit
+ * on c_p) goes to the first field, with a margin far above rounding (1e-9 cells). */
+static inline int mpm_fields_side_w(const mpm_fields *f, const size_t *n, const double *w, int cnt, double x,
+                                    double y, double h)
 {
   double ws = 0.0, cx = 0.0, cy = 0.0;
-  for (int q = 0; q < 4; q++)
+  for (int q = 0; q < cnt; q++)
     if (f->split[n[q]]) {
       ws += w[q];
       cx += w[q] * f->crk[2 * n[q]];
@@ -70,6 +50,40 @@ static inline int mpm_fields_side4(const mpm_fields *f, const size_t n[4], const
   if (!(ws > 0.0))
     return 0;
   return f->nx * (x - cx / ws) + f->ny * (y - cy / ws) > 1e-9 * h;
+}
+
+/* The uGIMP stencil from its first node n0: 3 x 3 nodes, weights Sx Sy. */
+static inline void mpm_gimp_stencil(size_t n0, size_t nny, const mpm_gimp1 *gx, const mpm_gimp1 *gy, size_t n[9],
+                                    double w[9])
+{
+  for (int a = 0; a < 3; a++)
+    for (int b = 0; b < 3; b++) {
+      n[3 * a + b] = n0 + (size_t)a * nny + (size_t)b;
+      w[3 * a + b] = gx->S[a] * gy->S[b];
+    }
+}
+
+/* The bilinear stencil of sh: nodes (i,j), (i+1,j), (i,j+1), (i+1,j+1), weights N. */
+static inline void mpm_shape_stencil(const mpm_shape *sh, size_t nny, size_t n[4], double w[4])
+{
+  n[0] = sh->n00;
+  n[1] = sh->n00 + nny;
+  n[2] = sh->n00 + 1;
+  n[3] = sh->n00 + nny + 1;
+  w[0] = sh->wx0 * sh->wy0;
+  w[1] = sh->wx1 * sh->wy0;
+  w[2] = sh->wx0 * sh->wy1;
+  w[3] = sh->wx1 * sh->wy1;
+}
+
+/* The side rule on the uGIMP stencil. */
+static inline int mpm_fields_side(const mpm_fields *f, size_t n0, size_t nny, const mpm_gimp1 *gx,
+                                  const mpm_gimp1 *gy, double x, double y, double h)
+{
+  size_t n[9];
+  double w[9];
+  mpm_gimp_stencil(n0, nny, gx, gy, n, w);
+  return mpm_fields_side_w(f, n, w, 9, x, y, h);
 }
 
 /* 1 if any of the bilinear stencil's nodes is split. */

@@ -177,9 +177,10 @@ static inline __attribute__((always_inline)) int p2g_range_impl(const mpm_grid *
       const mpm_v8 P = {mm, mm * vx[k], mm * vy[k], 0.0, 0.0, 0.0, 0.0, mm * un};
       const mpm_v8 T0 = sh.wy0 * P + FY, R0 = sh.wy0 * FX;
       const mpm_v8 T1 = sh.wy1 * P - FY, R1 = sh.wy1 * FX;
-      const size_t n[4] = {sh.n00, sh.n00 + nny, sh.n00 + 1, sh.n00 + nny + 1};
-      const double w[4] = {sh.wx0 * sh.wy0, sh.wx1 * sh.wy0, sh.wx0 * sh.wy1, sh.wx1 * sh.wy1};
-      const int side = mpm_fields_side4(fld, n, w, x[k], y[k], g->h);
+      size_t n[4];
+      double w[4];
+      mpm_shape_stencil(&sh, nny, n, w);
+      const int side = mpm_fields_side_w(fld, n, w, 4, x[k], y[k], g->h);
       node_add(mpm_fields_node(fld, nd, n[0], side), sh.wx0 * T0 + R0);
       node_add(mpm_fields_node(fld, nd, n[1], side), sh.wx1 * T0 - R0);
       node_add(mpm_fields_node(fld, nd, n[2], side), sh.wx0 * T1 + R1);
@@ -234,9 +235,10 @@ static inline __attribute__((always_inline)) double musl_velocity_range_impl(con
     const int two = twof && mpm_fields_any4(fld, n00, nny);
     mpm_node *r00 = nd + n00, *r10 = nd + n10, *r01 = nd + n01, *r11 = nd + n11;
     if (two) { /* near a separated band: the particle's own side's records */
-      const size_t n[4] = {n00, n10, n01, n11};
-      const double w[4] = {sh.wx0 * sh.wy0, sh.wx1 * sh.wy0, sh.wx0 * sh.wy1, sh.wx1 * sh.wy1};
-      const int side = mpm_fields_side4(fld, n, w, x[k], y[k], g->h);
+      size_t n[4];
+      double w[4];
+      mpm_shape_stencil(&sh, nny, n, w);
+      const int side = mpm_fields_side_w(fld, n, w, 4, x[k], y[k], g->h);
       r00 = mpm_fields_node(fld, nd, n00, side);
       r10 = mpm_fields_node(fld, nd, n10, side);
       r01 = mpm_fields_node(fld, nd, n01, side);
@@ -429,6 +431,18 @@ static void grid_update(mpm_sim *s, double bfac)
   s->led.s_Wbook += W;
 }
 
+/* The held velocities into the strain lanes (fx, fy) of the constrained nodes: the
+ * grip's -speed and the fixed end's 0 in x, the fixed node's 0 in y. */
+static void held_velocity_lanes(mpm_sim *s)
+{
+  mpm_grid *g = s->g;
+  for (int q = 0; q < s->ngrip; q++)
+    g->nd[s->grip[q]].fx = -s->sc.speed;
+  for (int q = 0; q < s->nfixx; q++)
+    g->nd[s->fixx[q]].fx = 0.0;
+  g->nd[s->fixy].fy = 0.0;
+}
+
 /* USF and USAVG: the projected nodal velocity v_i = p_i / m_i with the constraints
  * (v_bc at a held node), into lanes (fx, fy), for the strain increment taken before
  * the forces; the ledger's stress power of that share (frac) of the increment,
@@ -465,11 +479,7 @@ static void grid_start_velocity(mpm_sim *s, double frac)
     }
     s->led_part[q][MPM_LED_B] += B;
   }
-  for (int q = 0; q < s->ngrip; q++)
-    g->nd[s->grip[q]].fx = vg;
-  for (int q = 0; q < s->nfixx; q++)
-    g->nd[s->fixx[q]].fx = 0.0;
-  g->nd[s->fixy].fy = 0.0;
+  held_velocity_lanes(s);
   s->led.s_Bstart += Bh;
 }
 
@@ -507,11 +517,7 @@ static void grid_musl_velocity(mpm_sim *s)
     }
     s->led_part[q][MPM_LED_B] += B;
   }
-  for (int q = 0; q < s->ngrip; q++)
-    g->nd[s->grip[q]].fx = -s->sc.speed;
-  for (int q = 0; q < s->nfixx; q++)
-    g->nd[s->fixx[q]].fx = 0.0;
-  g->nd[s->fixy].fy = 0.0;
+  held_velocity_lanes(s);
   s->led.s_Bstart += corr + s->led.s_Bheld;
 }
 
@@ -659,9 +665,10 @@ static inline __attribute__((always_inline)) void g2p_strip_impl(mpm_sim *s, int
         const size_t n00 = sh.n00, n01 = n00 + 1, n10 = n00 + nny, n11 = n10 + 1;
         const mpm_node *r00 = nd + n00, *r10 = nd + n10, *r01 = nd + n01, *r11 = nd + n11;
         if ((mode & G2P_TWO) && mpm_fields_any4(g->fld, n00, nny)) { /* near a separated band */
-          const size_t n[4] = {n00, n10, n01, n11};
-          const double w[4] = {sh.wx0 * sh.wy0, sh.wx1 * sh.wy0, sh.wx0 * sh.wy1, sh.wx1 * sh.wy1};
-          const int side = mpm_fields_side4(g->fld, n, w, x[k], y[k], g->h);
+          size_t n[4];
+          double w[4];
+          mpm_shape_stencil(&sh, nny, n, w);
+          const int side = mpm_fields_side_w(g->fld, n, w, 4, x[k], y[k], g->h);
           r00 = mpm_fields_node(g->fld, (mpm_node *)nd, n00, side);
           r10 = mpm_fields_node(g->fld, (mpm_node *)nd, n10, side);
           r01 = mpm_fields_node(g->fld, (mpm_node *)nd, n01, side);
