@@ -120,7 +120,7 @@ static int policy_gci(const ver_case *cs, int n, ver_cross *x, int room)
 }
 
 /* One order check: p of y ~ x^p over the group's points, pass when p >= lo. */
-static void order_check(ver_cross *g, const char *name, double lo, const char *what)
+void ver_policy_order_check(ver_cross *g, const char *name, double lo, const char *what)
 {
   ver_check *k = &g->chk;
   memset(k, 0, sizeof *k);
@@ -215,7 +215,7 @@ static int policy_rate(const ver_case *cs, int n, ver_cross *x, int room)
       else
         snprintf(what, sizeof what, "%s ~ h^p, ppc %d, grip speed refined with h (v = %g h / %g)",
                  t ? "|D - UD area| / UD area" : "curve_l2", a->ppc, a->vs.sc.speed, a->h);
-      order_check(g, names[t], 0.7, what);
+      ver_policy_order_check(g, names[t], 0.7, what);
       ver_check *k = &g->chk;
       double emax = 0.0, emin = INFINITY;
       for (int j = 0; j < g->n; j++) {

@@ -101,6 +101,9 @@ void ver_policy_case(ver_case *c);
 void ver_policy_drop(ver_case *c, const char *name);
 /* The cross-case checks over cs into x (at most VER_MAXCROSS); their number. */
 int ver_policy_cross(ver_case *cs, int n, ver_cross *x);
+/* Sets g's check to the observed order p of y ~ x^p over its points, one-sided: pass
+ * when p >= lo (policy_cross.c; the MMS checks use it too). */
+void ver_policy_order_check(ver_cross *g, const char *name, double lo, const char *what);
 
 /* sweep_out.c */
 int ver_sweep_write_json(const ver_verify_opts *o, const ver_case *cs, int n, const ver_cross *x, int nx,
