@@ -215,6 +215,8 @@ typedef struct {
   uint8_t *split;          /* 1 where a node holds two fields this step                 */
   double *crk;             /* the band's local centre at a split node (x, y pairs)      */
   double *cw;              /* the weights summed into crk (scratch)                     */
+  double *dc;              /* the contact's normal velocity change of field 1 and 2 at a
+                              split node this step (pairs; 0 without contact): the ledger */
   double nx, ny;           /* the failure plane's normal: side 2 is n . (x - crk) > 0   */
   int nsplit;              /* split nodes this step (0: one field everywhere)           */
 } mpm_fields;
@@ -246,12 +248,13 @@ typedef struct {
   double W_coh;  /* work of the traction on the decohesion surfaces, int s . d up dA   */
   double D;      /* dissipation, U0 min(lambda, 1) per unit failure area (eq. 10)      */
   /* The ledger (mpm_step.c, "Energy"): what the step itself removes, accumulated, so
-   * that W_ext + KE(0) = KE + SE + W_coh + L_bc + L_flip + L_scheme + W_head up to the
-   * constitutive update's own integration error. */
+   * that W_ext + KE(0) = KE + SE + W_coh + L_bc + L_flip + L_scheme + W_head + L_contact
+   * up to the constitutive update's own integration error. */
   double L_bc;     /* removed at held nodes by the constraint's velocity jump          */
   double L_flip;   /* lost interpolating the nodal velocity increments to the particles */
   double L_scheme; /* the time integration's own loss (negative: gain)                */
   double W_head;   /* taken by the rigid head (its KE change and its projection)      */
+  double L_contact; /* taken by the contact between two velocity fields (mpm_fields.c) */
 } mpm_energy;
 
 /* ---- threads: the count a step uses (mpm_threads.c) ---- */
@@ -282,11 +285,12 @@ typedef struct {
 void mpm_threads_init(mpm_threads *t, int requested, size_t particles);
 /* The ledger's sums (mpm_step.c), accumulated step by step in a fixed order. */
 typedef struct {
-  double L_bc, L_flip, L_scheme, W_head;
+  double L_bc, L_flip, L_scheme, W_head, L_contact;
   double KE_head0;         /* the head's kinetic energy at the start                   */
   double head_reset;       /* kinetic energy the head's rigid projection removed so far */
   /* this step's held-node and serial sums (mpm_step.c; reset every step) */
   double s_A, s_K, s_B, s_Bheld, s_Bstart, s_H, s_Wtrue, s_Wbook;
+  double s_C;              /* the contact's loss this step (mpm_fields.c)               */
 } mpm_ledger;
 
 /* Per-strip partial sums of one step (fixed partition: the same sums for any thread

@@ -18,7 +18,8 @@
  *     is not above the near field's) and they approach along n, (v2 - v1) . n < 0,
  *     both take their centre-of-mass normal velocity (momentum is kept, the
  *     tangential velocities are free: frictionless).  Otherwise they are independent,
- *     so a separated band carries no load and does not close through itself.
+ *     so a separated band carries no load and does not close through itself.  The
+ *     energy ledger books what the contact removes (mpm_energy.L_contact).
  * Before the cut the band's intact ligament must stay bonded: splitting the nodes
  * around the first separated particles decoupled its still-softening neighbours and left
  * their dissipation short (Fig. 6, h 8: D 11.65 against 12.01), so one field is kept
@@ -40,7 +41,8 @@ mpm_fields *mpm_fields_alloc(size_t nn, double nx, double ny)
   f->split = calloc(nn, 1);
   f->crk = calloc(2 * nn, sizeof(double));
   f->cw = calloc(nn, sizeof(double));
-  if (!f->nd2 || !f->split || !f->crk || !f->cw) {
+  f->dc = calloc(2 * nn, sizeof(double));
+  if (!f->nd2 || !f->split || !f->crk || !f->cw || !f->dc) {
     mpm_fields_free(f);
     return NULL;
   }
@@ -58,6 +60,7 @@ void mpm_fields_free(mpm_fields *f)
   free(f->split);
   free(f->crk);
   free(f->cw);
+  free(f->dc);
   free(f);
 }
 
@@ -123,26 +126,53 @@ void mpm_fields_mark(mpm_sim *s)
     }
 }
 
-/* Step 3 and the second field's eq. 4: after grid_update has done the first field. */
-void mpm_fields_grid(mpm_sim *s)
+/* The ledger's change at one record (field 1 or 2 of a split node) when the contact
+ * adds c = dr n to its increment: with v its projected velocity and dv its free
+ * increment (d = dv + c, v^L = v + dv + c), A = m v . d gains m dr v . n, the sum
+ * m |d|^2 gains 2 m dr dv . n + m dr^2, the share bfac of B = -m dv . v^L gains
+ * -bfac m dr dv . n; the contact's loss, the kinetic energy its impulse m c takes from
+ * the velocity v + dv it acts on, is -m dr ((v + dv) . n + dr / 2). */
+static void contact_ledger(mpm_ledger *L, double m, double vn, double dvn, double dr, double bfac)
+{
+  L->s_A += m * dr * vn;
+  L->s_K += m * dr * (2.0 * dvn + dr);
+  L->s_B -= bfac * m * dr * dvn;
+  L->s_C -= m * dr * (vn + dvn + 0.5 * dr);
+}
+
+/* Step 3 and the second field's eq. 4: after grid_update has done the first field.
+ * bfac: the share of the strain taken from v^L after it (grid_update's).  The ledger
+ * (mpm_step.c, "Energy"): the second field's node terms A, K and B, as grid_nodes sums
+ * the first field's, and what the contact changes in both (contact_ledger).  Summed
+ * per pair, the contact's loss is mu (w2 - w1)^2 / 2, mu = m1 m2 / (m1 + m2), with w the
+ * normal velocities it equalises: a perfectly inelastic, frictionless impact
+ * (mpm_energy.L_contact).  Serial in node order: the same sums whatever the threads. */
+void mpm_fields_grid(mpm_sim *s, double bfac)
 {
   mpm_fields *f = s->g->fld;
   if (f->nsplit == 0)
     return;
   mpm_grid *g = s->g;
+  mpm_ledger *L = &s->led;
   const size_t nn = (size_t)g->nnx * (size_t)g->nny;
   const double dt = s->sc.dt, mmin = MPM_MASS_EPS * s->p->m[0], nx = f->nx, ny = f->ny;
   for (size_t k = 0; k < nn; k++) {
     if (!f->split[k])
       continue;
+    f->dc[2 * k] = f->dc[2 * k + 1] = 0.0;
     mpm_node *b = &f->nd2[k], *a = &g->nd[k];
     if (b->m > mmin) {
       const double im = 1.0 / b->m;
       const double dvx = dt * b->fx * im, dvy = dt * b->fy * im;
+      L->s_A += b->px * dvx + b->py * dvy; /* m v . dv, m v = p */
       b->px = b->px * im + dvx;
       b->py = b->py * im + dvy;
       b->fx = dvx;
       b->fy = dvy;
+      /* m |dv|^2 and the share bfac of -m dv . v^L */
+      const double mdx = b->m * dvx, mdy = b->m * dvy;
+      L->s_K += mdx * dvx + mdy * dvy;
+      L->s_B -= bfac * (mdx * b->px + mdy * b->py);
     } else {
       b->px = b->py = b->fx = b->fy = 0.0;
       continue;
@@ -155,6 +185,11 @@ void mpm_fields_grid(mpm_sim *s)
     const double gap = b->pad / b->m - a->pad / a->m;
     if (wb - wa < 0.0 && gap <= 0.0) { /* approaching: contact, the normal velocity of the centre of mass */
       const double wc = (a->m * wa + b->m * wb) / (a->m + b->m), da = wc - wa, db = wc - wb;
+      const double dva = a->fx * nx + a->fy * ny, dvb = b->fx * nx + b->fy * ny;
+      contact_ledger(L, a->m, wa - dva, dva, da, bfac);
+      contact_ledger(L, b->m, wb - dvb, dvb, db, bfac);
+      f->dc[2 * k] = da;
+      f->dc[2 * k + 1] = db;
       a->px += da * nx;
       a->py += da * ny;
       a->fx += da * nx;
@@ -167,21 +202,52 @@ void mpm_fields_grid(mpm_sim *s)
   }
 }
 
+/* USF and USAVG: the second field's projected velocity v = p / m into (fx, fy), as
+ * grid_start_velocity does for the first, and the ledger's stress power of that share
+ * (frac) of the strain increment, -frac dt f . v, from the forces still in the lanes. */
+void mpm_fields_start(mpm_sim *s, double frac)
+{
+  mpm_fields *f = s->g->fld;
+  if (f->nsplit == 0)
+    return;
+  const size_t nn = (size_t)s->g->nnx * (size_t)s->g->nny;
+  const double c = frac * s->sc.dt, mmin = MPM_MASS_EPS * s->p->m[0];
+  double B = 0.0;
+  for (size_t k = 0; k < nn; k++) {
+    if (!f->split[k])
+      continue;
+    mpm_node *b = &f->nd2[k];
+    const double im = b->m > mmin ? 1.0 / b->m : 0.0, vx = b->px * im, vy = b->py * im;
+    B -= c * (b->fx * vx + b->fy * vy);
+    b->fx = vx;
+    b->fy = vy;
+  }
+  s->led.s_B += B;
+}
+
 /* MUSL: the second field's v' = q / m into (fx, fy), as grid_musl_velocity does for
- * the first. */
+ * the first, and the ledger's stress power B = -dt f . v' = -m dv . v' (q = m v') at the
+ * split nodes: the second field's, and, where the contact acted, the first field's
+ * correction (grid_musl_velocity summed -m d . v' with d = dv + c). */
 void mpm_fields_musl(mpm_sim *s)
 {
   mpm_fields *f = s->g->fld;
   if (f->nsplit == 0)
     return;
   const size_t nn = (size_t)s->g->nnx * (size_t)s->g->nny;
-  const double mmin = MPM_MASS_EPS * s->p->m[0];
+  const double mmin = MPM_MASS_EPS * s->p->m[0], nx = f->nx, ny = f->ny;
+  double B = 0.0;
   for (size_t k = 0; k < nn; k++) {
     if (!f->split[k])
       continue;
+    const mpm_node *a = &s->g->nd[k];
     mpm_node *b = &f->nd2[k];
+    const double da = f->dc[2 * k], db = f->dc[2 * k + 1];
+    B += da * (a->qx * nx + a->qy * ny);
+    B -= (b->fx - db * nx) * b->qx + (b->fy - db * ny) * b->qy;
     const double im = b->m > mmin ? 1.0 / b->m : 0.0;
     b->fx = b->qx * im;
     b->fy = b->qy * im;
   }
+  s->led.s_B += B;
 }

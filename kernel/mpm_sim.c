@@ -310,4 +310,5 @@ void mpm_sim_energy(const mpm_sim *s, mpm_energy *e)
   e->L_flip = s->led.L_flip;
   e->L_scheme = s->led.L_scheme;
   e->W_head = s->led.W_head;
+  e->L_contact = s->led.L_contact;
 }

@@ -60,11 +60,14 @@
  *   L_scheme = W_true - A - K - B - Q + H: the time integration's own loss (USL at a
  *              free node: m |dv|^2 / 2 - Q; a gain where negative),
  * and the rigid head takes W_head (its kinetic energy change and what its projection
- * removes).  Every term is a sum the step forms anyway, over nodes or, in the passes
- * that already touch each particle, over particles, in a fixed order.  So
- * W_ext + KE(0) + SE(0) = KE + SE + W_coh + L_bc + L_flip + L_scheme + W_head holds to
- * rounding and the constitutive update's error; what does not close is the run's
- * energy residual (summary.json).
+ * removes).  With two velocity fields each field's record at a split node is a node of
+ * these sums (mpm_fields.c adds the second field's and the contact's change), and the
+ * contact takes L_contact, the kinetic energy its projection removes at the nodes.
+ * Every term is a sum the step forms anyway, over nodes or, in the passes that already
+ * touch each particle, over particles, in a fixed order.  So W_ext + KE(0) + SE(0) =
+ * KE + SE + W_coh + L_bc + L_flip + L_scheme + W_head + L_contact holds to rounding and
+ * the constitutive update's error; what does not close is the run's energy residual
+ * (summary.json).
  *
  * Threads: the scatters run strip by strip, even strips then odd (mpm_sort.c); the
  * gathers are independent per particle.  Results are bit-for-bit the same for any
@@ -829,7 +832,8 @@ static void ledger_step(mpm_sim *s)
   const double B = t[MPM_LED_B] + L->s_B + L->s_Bstart, Kp = 0.5 * t[MPM_LED_KP], Q = 0.5 * t[MPM_LED_Q];
   L->L_flip += K - Kp;
   L->L_bc += -L->s_H + (L->s_Wbook - L->s_Wtrue);
-  L->L_scheme += L->s_Wtrue - A - K - B - Q + L->s_H;
+  L->L_scheme += L->s_Wtrue - A - K - B - Q + L->s_H - L->s_C;
+  L->L_contact += L->s_C;
 }
 
 /* The head is rigid: in x it moves with the grip; in y it is free, as one body whose
@@ -936,7 +940,7 @@ mpm_status mpm_sim_step(mpm_sim *s, char *err, size_t errlen)
   }
   memset(s->led_part, 0, (size_t)s->nstrip * sizeof *s->led_part);
   mpm_ledger *L = &s->led;
-  L->s_A = L->s_K = L->s_B = L->s_Bheld = L->s_Bstart = L->s_H = L->s_Wtrue = L->s_Wbook = 0.0;
+  L->s_A = L->s_K = L->s_B = L->s_Bheld = L->s_Bstart = L->s_H = L->s_Wtrue = L->s_Wbook = L->s_C = 0.0;
   const int sch = s->sc.scheme;
   mpm_status st = p2g(s, err, errlen);
   if (st != MPM_OK)
@@ -948,6 +952,8 @@ mpm_status mpm_sim_step(mpm_sim *s, char *err, size_t errlen)
      * forces of the new stress */
     const double frac = sch == MPM_SCHEME_USF ? 1.0 : 0.5;
     grid_start_velocity(s, frac);
+    if (s->g->fld)
+      mpm_fields_start(s, frac);
     t0 = wall();
     s->time_split[MPM_T_GRID] += t0 - t1;
     if ((st = g2p_timed(s, G2P_STRAIN_F, frac, err, errlen)) != MPM_OK)
@@ -958,9 +964,10 @@ mpm_status mpm_sim_step(mpm_sim *s, char *err, size_t errlen)
     t1 = wall();
     s->time_split[MPM_T_P2G] += t1 - t0;
   }
-  grid_update(s, sch == MPM_SCHEME_USL ? 1.0 : sch == MPM_SCHEME_USAVG ? 0.5 : 0.0);
+  const double bfac = sch == MPM_SCHEME_USL ? 1.0 : sch == MPM_SCHEME_USAVG ? 0.5 : 0.0;
+  grid_update(s, bfac);
   if (s->g->fld)
-    mpm_fields_grid(s);
+    mpm_fields_grid(s, bfac);
   t0 = wall();
   s->time_split[MPM_T_GRID] += t0 - t1;
   if (sch == MPM_SCHEME_MUSL) {

@@ -7,7 +7,7 @@
  *   DIR/load.csv     required: a header naming at least delta and P_grip (P_fixed is
  *                    used when present), then one row per output time;
  *   DIR/energy.csv   optional: W_ext, KE, SE, W_coh, D (and delam's ledger L_bc, L_flip,
- *                    L_scheme, W_head where present); gives the dissipation and the
+ *                    L_scheme, W_head, L_contact where present); gives the dissipation and the
  *                    energy balance; without it the external work is the area under
  *                    the load-deflection curve and those two checks are left out;
  *   DIR/final.csv    optional (or --particles FILE): the final particles, x0, y0 and
@@ -231,7 +231,8 @@ int ver_cmd_check(int argc, char **argv)
   snprintf(c.id, sizeof c.id, "%.100s", dir);
 
   static const char *const lnames[] = {"delta", "P_grip", "P_fixed"};
-  static const char *const enames[] = {"W_ext", "KE", "SE", "W_coh", "D", "L_bc", "L_flip", "L_scheme", "W_head"};
+  static const char *const enames[] = {"W_ext", "KE",       "SE",     "W_coh",    "D",
+                                       "L_bc",  "L_flip",   "L_scheme", "W_head", "L_contact"};
   static const char *const pnames[] = {"x0", "y0", "lambda"};
   char path[1400], ppath[1400];
   ver_table ld, en, pt;
@@ -244,7 +245,7 @@ int ver_cmd_check(int argc, char **argv)
     return 2;
   }
   snprintf(path, sizeof path, "%s/energy.csv", dir);
-  r = ver_table_read(path, enames, 9, 5, &en, err, sizeof err);
+  r = ver_table_read(path, enames, 10, 5, &en, err, sizeof err);
   if (r == 2) {
     fprintf(stderr, PROG ": %s\n", err);
     ver_table_free(&ld);

@@ -190,7 +190,7 @@ double ver_angle_diff(double a_deg, double b_deg)
   return d;
 }
 
-double ver_energy_residual(const double *const e[8], size_t n, double E0, double *raw)
+double ver_energy_residual(const double *const e[VER_ENERGY_COLS], size_t n, double E0, double *raw)
 {
   double wmax = E0, res = 0.0, r0 = 0.0;
   for (size_t i = 0; i < n; i++)
@@ -198,7 +198,7 @@ double ver_energy_residual(const double *const e[8], size_t n, double E0, double
   for (size_t i = 0; i < n && wmax > 0; i++) {
     const double miss = e[0][i] + E0 - e[1][i] - e[2][i] - e[3][i];
     double left = miss; /* less each booked term in turn */
-    for (int j = 4; j < 8; j++)
+    for (int j = 4; j < VER_ENERGY_COLS; j++)
       left -= e[j] ? e[j][i] : 0.0;
     r0 = fmax(r0, fabs(miss) / wmax);
     res = fmax(res, fabs(left) / wmax);

@@ -82,13 +82,14 @@ int ver_gci(double f1, double f2, double f3, double r, double p_lo, double p_hi,
 
 /* The energy balance W_ext + E0 = KE + SE + W_coh + booked over n rows, E0 the energy
  * at the start (KE + SE) and booked the ledger's terms L_bc + L_flip + L_scheme + W_head
- * (mpm.h): its largest miss over the larger of max |W_ext| and E0.  The columns are
- * e[0..7] = W_ext, KE, SE, W_coh, L_bc, L_flip, L_scheme, W_head; a NULL ledger column
- * counts as 0.  *raw (if not NULL) gets the miss without the booked terms.  0 if there is
+ * + L_contact (mpm.h): its largest miss over the larger of max |W_ext| and E0.  The
+ * columns are e[0..8] = W_ext, KE, SE, W_coh, L_bc, L_flip, L_scheme, W_head, L_contact; a
+ * NULL ledger column counts as 0.  *raw (if not NULL) gets the miss without the booked terms.  0 if there is
  * no energy at all. */
 /* The tolerance on it: verify's check and delam run's warning (over the whole run). */
 #define VER_ENERGY_TOL 0.02
-double ver_energy_residual(const double *const e[8], size_t n, double E0, double *raw);
+#define VER_ENERGY_COLS 9
+double ver_energy_residual(const double *const e[VER_ENERGY_COLS], size_t n, double E0, double *raw);
 
 /* (max - min) / mean; NaN if n == 0 or the mean is 0. */
 double ver_spread(const double *v, size_t n);

@@ -21,7 +21,7 @@ typedef struct {
   double energy_residual;        /* max |W_ext + E0 - KE - SE - W_coh - booked| / max(max W_ext, E0) over
                                     the rows: what the energy ledger does not explain */
   double energy_unbooked;        /* the same without the booked terms                */
-  double L_bc_final, L_flip_final, L_scheme_final, W_head_final; /* the ledger (mpm.h) */
+  double L_bc_final, L_flip_final, L_scheme_final, W_head_final, L_contact_final; /* the ledger (mpm.h) */
   double energy_start;           /* E0 = KE + SE at the start                        */
   double energy_kept;            /* (KE + SE) at the end over E0                     */
   double period, period_exact, period_error; /* vibration: measured, 2 L / (m c) corrected, error */
@@ -44,7 +44,8 @@ typedef struct {
  * goes away (new keys and columns may join without a raise). */
 #define VER_SCHEMA_SUMMARY 1
 #define VER_SCHEMA_LOAD 1
-#define VER_SCHEMA_ENERGY 2 /* 2: the ledger columns L_bc, L_flip, L_scheme, W_head */
+#define VER_SCHEMA_ENERGY 3 /* 2: the ledger columns L_bc, L_flip, L_scheme, W_head; 3: L_contact,
+                               taken out of L_scheme (two velocity fields) */
 #define VER_SCHEMA_PARTICLES 1
 #define VER_SCHEMA_VERIFY 1     /* verify.json and verify.csv                       */
 #define VER_SCHEMA_CHECK 1      /* check.json                                        */

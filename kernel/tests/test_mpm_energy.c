@@ -122,7 +122,8 @@ static void run_vib(double h, int scheme, int bc, double periods, vib_result *r)
   const mpm_energy *e = &r->e;
   r->kept = (e->KE + e->SE) / r->E0;
   r->period = ncross >= 3 ? 2.0 * (last - first) / (double)(ncross - 1) : NAN;
-  r->gap = fabs(e->W_ext + r->E0 - e->KE - e->SE - e->W_coh - e->L_bc - e->L_flip - e->L_scheme - e->W_head) / r->E0;
+  r->gap = fabs(e->W_ext + r->E0 - e->KE - e->SE - e->W_coh - e->L_bc - e->L_flip - e->L_scheme - e->W_head -
+           e->L_contact) / r->E0;
   mpm_sim_free(s);
 }
 
@@ -240,7 +241,7 @@ static void test_brittle_ledger(void **state)
     mpm_sim_energy(s, &e);
     assert_true(s->n_separate > 0);
     const double miss = e.W_ext + e0.KE + e0.SE - e.KE - e.SE - e.W_coh;
-    const double booked = e.L_bc + e.L_flip + e.L_scheme + e.W_head;
+    const double booked = e.L_bc + e.L_flip + e.L_scheme + e.W_head + e.L_contact;
     char m[96];
     snprintf(m, sizeof m, "brittle Fig. 6 bc %d: balance with the booked terms / W_ext", bc);
     assert_abs((miss - booked) / e.W_ext, 0.0, 0.01, m);
