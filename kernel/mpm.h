@@ -33,7 +33,7 @@ const char *mpm_strerror(mpm_status s);
  * h max(|sin a|, |cos a|), exact for a band one cell wide per row; PARTICLE, the same
  * for the particle's square; STAIRCASE, h (|sin a| + |cos a|), the width of the
  * narrowest band of cells that can open along an inclined line (mpm_sim.c). */
-enum { MPM_LE_CELL = 0, MPM_LE_PARTICLE = 1, MPM_LE_STAIRCASE = 2 };
+enum { MPM_LE_CELL = 0, MPM_LE_PARTICLE = 1, MPM_LE_STAIRCASE = 2, MPM_LE_ROW = 3 };
 enum { MPM_DCOH_NONE = 0, MPM_DCOH_MODEL1 = 1, MPM_DCOH_MODEL2 = 2 };
 /* USL: strain from v^L (the paper, eq. 7).  MUSL: strain from the nodal velocity
  * re-projected from the updated particle velocities, which keeps nearly empty nodes
@@ -129,6 +129,9 @@ typedef struct {
   double isnf, istf;     /* 1 / snf, 1 / stf                                            */
   double isnf2, istf2;   /* 1 / snf^2, 1 / stf^2                                        */
   double kL;             /* ubar0 / Le                                                 */
+  double Lopen;          /* the length eqs. 57-58 turn a separated particle's strain into its
+                            opening with: Le, except under decohesion.Le = row (mpm_band.c),
+                            where the softening's Le is the row's and this the staircase's */
   double rnn[3], rtt[3], rnt[3]; /* (s_nn, s_tt, s_nt) = r . (sxx, syy, sxy)             */
   double fn[3], ft[3];   /* s_nn / snf and s_nt / stf as dot products with (sxx, syy, sxy):
                             the step's elastic test (all 0 when model = NONE)          */
@@ -183,6 +186,7 @@ typedef struct {
   double *lam;             /* decohesion parameter                                     */
   double *upn, *upt;       /* displacement jump, n and t components                    */
   double *wcoh;            /* traction work on the failure plane so far (energy)       */
+  double *dis;             /* dissipation so far, U0 dlambda V / Le summed while lambda <= 1 */
   double *str2;            /* remaining strength squared, (1 - lambda^q)^2 (eq. 23), and -1
                               once separated: lets the step test F <= 0 without a pow
                               or a branch per particle                                 */
@@ -239,6 +243,28 @@ static inline size_t mpm_grid_node(const mpm_grid *g, int i, int j)
   return (size_t)i * (size_t)g->nny + (size_t)j;
 }
 void mpm_grid_free(mpm_grid *g);
+
+/* decohesion.Le = row (mpm_band.c): Le per particle row of the bar, measured from the
+ * particles softening in it, k dx |sin a| with k their participation number. */
+typedef struct {
+  int nrow, nstrip;        /* particle rows of the bar; strips of the gather            */
+  double idy;              /* 1 / the row height h / sqrt(ppc)                           */
+  double wlen;             /* Le per participating particle, dx |sin a| Le_factor        */
+  double *le;              /* each row's Le for this step                               */
+  double *acc;             /* per strip and row: sum of this step's dlambda (softening), and
+                              the largest min(lambda, 1) reached                        */
+  double *lam;             /* each row's crack state: the largest min(lambda, 1) in it   */
+  double *sum;             /* each row's softening so far, the sum of its particles' dlambda */
+} mpm_band;
+
+mpm_band *mpm_band_alloc(int nrow, int nstrip, double dy, double wlen, double le0);
+void mpm_band_free(mpm_band *b);
+void mpm_band_step(mpm_band *b);
+static inline int mpm_band_row(const mpm_band *b, double y0)
+{
+  const int j = (int)(y0 * b->idy);
+  return j < 0 ? 0 : j >= b->nrow ? b->nrow - 1 : j;
+}
 
 /* ---- energies (sec. 3 eq. 25 for the surface terms) ---- */
 typedef struct {
@@ -346,6 +372,7 @@ typedef struct {
   int nrow;                /* particle rows of the bar                                  */
   uint8_t *rowsep;         /* scratch: the rows holding a separated particle            */
   mpm_ledger led;          /* the energy ledger                                        */
+  mpm_band *band;          /* decohesion.Le = row: the rows' measured Le, or NULL       */
   double (*led_part)[MPM_LED_N]; /* per-strip partial sums of the step (nstrip rows)  */
 } mpm_sim;
 

@@ -102,6 +102,7 @@ void mpm_material_derive(mpm_material *m)
   m->isnf2 = m->isnf * m->isnf;
   m->istf2 = m->istf * m->istf;
   m->kL = m->ubar0 / m->Le;
+  m->Lopen = m->Le;
   /* (s_nn, s_tt, s_nt) from (sxx, syy, sxy); from_nt uses the same numbers back */
   m->rnn[0] = nx * nx; m->rnn[1] = ny * ny; m->rnn[2] = 2.0 * nx * ny;
   m->rtt[0] = tx * tx; m->rtt[1] = ty * ty; m->rtt[2] = 2.0 * tx * ty;
@@ -262,14 +263,14 @@ static void separate(const mpm_material *m, nt_stress tr, double upn, nt_stress 
                      double *dun, double *dut)
 {
   double de_nn = tr.nn / m->E1;                      /* eq. 57 */
-  if (tr.nn < 0.0 && m->Le * de_nn < -upn)
-    de_nn = -upn / m->Le;                            /* contact: close no further than shut */
+  if (tr.nn < 0.0 && m->Lopen * de_nn < -upn)
+    de_nn = -upn / m->Lopen;                         /* contact: close no further than shut */
   const double de_nt = tr.nt / (2.0 * m->G);         /* eq. 57 */
   s->nn = tr.nn - m->E1 * de_nn;
   s->tt = tr.tt - m->E2 * de_nn;                     /* eq. 57 */
   s->nt = 0.0;
-  *dun = m->Le * de_nn;                              /* eq. 58 */
-  *dut = 2.0 * m->Le * de_nt;                        /* eq. 58, tensor shear: 2 Le de_nt */
+  *dun = m->Lopen * de_nn;                           /* eq. 58 */
+  *dut = 2.0 * m->Lopen * de_nt;                     /* eq. 58, tensor shear: 2 Le de_nt */
 }
 
 mpm_status mpm_dcoh_update(const mpm_material *m, const mpm_dstate *in, const double de[3],

@@ -14,7 +14,7 @@ mpm_particles *mpm_particles_alloc(size_t n)
     return NULL;
   p->n = n;
   double **dbl[] = {&p->x, &p->y, &p->x0, &p->y0, &p->vx, &p->vy, &p->m, &p->V, &p->sxx,
-                    &p->syy, &p->sxy, &p->lam, &p->upn, &p->upt, &p->wcoh, &p->str2};
+                    &p->syy, &p->sxy, &p->lam, &p->upn, &p->upt, &p->wcoh, &p->str2, &p->dis};
   for (size_t k = 0; k < sizeof dbl / sizeof dbl[0]; k++)
     if (!(*dbl[k] = calloc(n, sizeof(double)))) {
       mpm_particles_free(p);
@@ -36,7 +36,7 @@ void mpm_particles_free(mpm_particles *p)
   if (!p)
     return;
   double *dbl[] = {p->x, p->y, p->x0, p->y0, p->vx, p->vy, p->m, p->V, p->sxx,
-                   p->syy, p->sxy, p->lam, p->upn, p->upt, p->wcoh, p->str2};
+                   p->syy, p->sxy, p->lam, p->upn, p->upt, p->wcoh, p->str2, p->dis};
   for (size_t k = 0; k < sizeof dbl / sizeof dbl[0]; k++)
     free(dbl[k]);
   free(p->mat);

@@ -55,7 +55,7 @@ mpm_status mpm_scene_check(const mpm_scene *sc, char *err, size_t errlen)
   if (!(sc->nu > -1.0 && sc->nu < 0.5)) BAD("material.nu must be in (-1, 0.5)");
   if (!(sc->rho > 0.0)) BAD("material.rho must be > 0");
   if (sc->model < 0 || sc->model > 2) BAD("decohesion.model must be 0, 1 or 2");
-  if (sc->le_mode < MPM_LE_CELL || sc->le_mode > MPM_LE_STAIRCASE) BAD("decohesion.Le must be cell, particle or staircase");
+  if (sc->le_mode < MPM_LE_CELL || sc->le_mode > MPM_LE_ROW) BAD("decohesion.Le must be cell, particle, staircase or row");
   if (!(sc->le_factor > 0.0 && sc->le_factor <= 100.0)) BAD("decohesion.Le_factor must be in (0, 100]");
   if (sc->model) {
     if (!(sc->alpha_deg >= 0.0 && sc->alpha_deg < 180.0)) BAD("decohesion.alpha must be in [0, 180)");
@@ -113,6 +113,7 @@ void mpm_sim_free(mpm_sim *s)
   free(s->fixx);
   free(s->rowsep);
   free(s->led_part);
+  mpm_band_free(s->band);
   free(s);
 }
 
@@ -187,8 +188,16 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
    * step's corner has to strain with the band for it to open (a node there belongs to
    * both sides), so the narrowest band that can separate is 1 + |cot a| cells wide per
    * row: the band's volume per unit crack length is h (|sin a| + |cos a|). */
-  const double Le = sc->le_factor * (sc->le_mode == MPM_LE_STAIRCASE ? h * (fabs(sin(a)) + fabs(cos(a)))
-                                                                     : side * fmax(fabs(sin(a)), fabs(cos(a))));
+  const int stair = sc->le_mode == MPM_LE_STAIRCASE || sc->le_mode == MPM_LE_ROW;
+  const double Le = sc->le_factor * (stair ? h * (fabs(sin(a)) + fabs(cos(a))) : side * fmax(fabs(sin(a)), fabs(cos(a))));
+  /* ROW: each row starts from the staircase length and then measures its own
+   * (mpm_band.c); a row is dy = h / n high and its particles dx = h / n wide. */
+  if (sc->le_mode == MPM_LE_ROW &&
+      !(s->band = mpm_band_alloc(s->nrow, s->nstrip, h / n1, sc->le_factor * (h / n1) * fabs(sin(a)), Le))) {
+    mpm_sim_free(s);
+    snprintf(err, errlen, "out of memory for the rows' Le");
+    return MPM_ENOMEM;
+  }
   mpm_material_init(&s->mat[MPM_MAT_BAR], sc, sc->snf, Le);
   mpm_material_init(&s->mat[MPM_MAT_IMP], sc, sc->snf * sc->imp_factor, Le);
   mpm_material_init(&s->mat[MPM_MAT_HEAD], sc, sc->snf, Le);
@@ -298,7 +307,9 @@ void mpm_sim_energy(const mpm_sim *s, mpm_energy *e)
     const double eyy = (p->syy[i] - m->nu * p->sxx[i]) / m->E;
     se += 0.5 * p->V[i] * (p->sxx[i] * exx + p->syy[i] * eyy + p->sxy[i] * p->sxy[i] / m->G);
     wc += p->wcoh[i];
-    if (p->lam[i] > 0.0) /* eq. 10: U0 min(lambda, 1) per unit failure area V / Le */
+    if (s->band) /* Le changes in time: the sum of U0 dlambda V / Le, step by step */
+      dd += p->dis[i];
+    else if (p->lam[i] > 0.0) /* eq. 10: U0 min(lambda, 1) per unit failure area V / Le */
       dd += m->U0 * fmin(p->lam[i], 1.0) * p->V[i] / m->Le;
   }
   e->W_ext = s->W_ext;

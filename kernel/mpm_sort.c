@@ -70,7 +70,7 @@ void mpm_sim_sort(mpm_sim *s)
   for (size_t k = 0; k < n; k++)
     s->perm[s->count[s->key[k]]++] = (uint32_t)k;
   double **dbl[] = {&p->x, &p->y, &p->x0, &p->y0, &p->vx, &p->vy, &p->m, &p->V, &p->sxx,
-                    &p->syy, &p->sxy, &p->lam, &p->upn, &p->upt, &p->wcoh, &p->str2};
+                    &p->syy, &p->sxy, &p->lam, &p->upn, &p->upt, &p->wcoh, &p->str2, &p->dis};
   for (size_t f = 0; f < sizeof dbl / sizeof dbl[0]; f++)
     permute_d(dbl[f], &s->scratch, s->perm, n);
   permute_u8(&p->mat, &s->scratch8, s->perm, n);

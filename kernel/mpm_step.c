@@ -553,7 +553,7 @@ typedef struct {
 /* The full decohesion update (sec. 4) of the particles in the thread's list, in list
  * order, off the hot loop; one timing per batch.  Returns the ledger's
  * sum V dsigma : deps over them. */
-static __attribute__((noinline)) double constitutive_flush(const mpm_sim *s, mpm_particles *restrict p,
+static __attribute__((noinline)) double constitutive_flush(const mpm_sim *s, int q, mpm_particles *restrict p,
                                                             mpm_defer *d, mpm_dwork *dw, g2p_acc *acc)
 {
   if (d->n == 0)
@@ -563,6 +563,16 @@ static __attribute__((noinline)) double constitutive_flush(const mpm_sim *s, mpm
   for (size_t i = 0; i < d->n; i++) {
     const size_t k = d->k[i];
     const mpm_material *m = &s->mat[p->mat[k]];
+    mpm_band *b = s->band;
+    mpm_material mrow;
+    int j = 0;
+    if (b && m->model != MPM_DCOH_NONE && !p->sep[k]) { /* Le = row: this row's measured length */
+      j = mpm_band_row(b, p->y0[k]);
+      mrow = *m;
+      mrow.Le = b->le[j];
+      mrow.kL = mrow.ubar0 / mrow.Le;
+      m = &mrow;
+    }
     const mpm_dstate in = {p->sxx[k], p->syy[k], p->sxy[k], p->lam[k], p->upn[k], p->upt[k], p->sep[k]};
     mpm_dstate o;
     mpm_dinfo info;
@@ -580,7 +590,20 @@ static __attribute__((noinline)) double constitutive_flush(const mpm_sim *s, mpm
     p->upt[k] = o.upt;
     p->sep[k] = (uint8_t)o.sep;
     p->str2[k] = mpm_dcoh_str2(m, o.lam, o.sep);
-    p->wcoh[k] += info.w * p->V[k] / m->Le;
+    /* the decohesion strain is d ud / Le while softening, d ud / Lopen once separating */
+    p->wcoh[k] += info.w * p->V[k] / (info.path == MPM_DPATH_SOFTEN ? m->Le : m->Lopen);
+    const double dl = fmin(o.lam, 1.0) - fmin(in.lam, 1.0);
+    if (!b) {
+      p->dis[k] += m->U0 * dl * p->V[k] / m->Le;
+    } else if (m == &mrow) {
+      /* Le = row: a particle's dissipation ends where it separates, the rest of its
+       * 1 - lambda charged at the row's Le then (a complete row's: nothing) */
+      p->dis[k] += m->U0 * (info.path == MPM_DPATH_SEPARATE ? 1.0 - fmin(in.lam, 1.0) : dl) * p->V[k] / m->Le;
+      double *a = b->acc + 2 * ((size_t)q * (size_t)b->nrow + (size_t)j);
+      if (info.path == MPM_DPATH_SOFTEN)
+        a[0] += dl;
+      a[1] = fmax(a[1], o.sep ? 1.0 : fmin(o.lam, 1.0)); /* a separated particle: the row's crack is through */
+    }
     acc->soften += info.path == MPM_DPATH_SOFTEN;
     acc->separate += info.path == MPM_DPATH_SEPARATE;
     acc->bracketed += info.bracketed;
@@ -734,7 +757,7 @@ static inline __attribute__((always_inline)) void g2p_strip_impl(mpm_sim *s, int
       }
     }
     d->n = nd_;
-    qs += constitutive_flush(s, s->p, d, dw, acc);
+    qs += constitutive_flush(s, q, s->p, d, dw, acc);
   }
   acc->resort |= resort;
   s->led_part[q][MPM_LED_KP] += kv[GFX] + kv[GFY];
@@ -984,6 +1007,8 @@ mpm_status mpm_sim_step(mpm_sim *s, char *err, size_t errlen)
   }
   if (st != MPM_OK)
     return st;
+  if (s->band)
+    mpm_band_step(s->band);
   head_rigid(s);
   ledger_step(s);
   s->step++;

@@ -40,7 +40,7 @@ const keydef ver_scene_keys[] = {
   {"decohesion", "s0", K_DBL, OFF(s0), 0, 0, 0, LO_OPEN, -1, "> 0 (default: snf)"},
   {"decohesion", "q", K_DBL, OFF(q), 2, 0, 0, LO_OPEN, 0, "> 0"},
   {"decohesion", "separation", K_DBL, OFF(sep_threshold), 0, 0, 1, LO_OPEN | HI_CLOSED, 0.98, "in (0, 1]"},
-  {"decohesion", "Le", K_LE, OFF(le_mode), 0, 0, 0, 0, MPM_LE_CELL, "cell, particle or staircase"},
+  {"decohesion", "Le", K_LE, OFF(le_mode), 0, 0, 0, 0, MPM_LE_CELL, "cell, particle, staircase or row"},
   {"decohesion", "Le_factor", K_DBL, OFF(le_factor), 0, 0, 100, LO_OPEN | HI_CLOSED, 1.0, "in (0, 100]: Le times this"},
   {"imperfection", "snf_factor", K_DBL, OFF(imp_factor), 0, 0, 1, LO_OPEN | HI_CLOSED, 1.0, "in (0, 1]"},
   {"imperfection", "x", K_DBL, OFF(imp_x), 0, 0, 0, 0, -1, "a number (default: L / 2)"},
@@ -74,7 +74,7 @@ static const struct {
   const char *word;
   int value;
 } ENUMS[] = {
-  {K_LE, "cell", MPM_LE_CELL}, {K_LE, "particle", MPM_LE_PARTICLE}, {K_LE, "staircase", MPM_LE_STAIRCASE},
+  {K_LE, "cell", MPM_LE_CELL}, {K_LE, "particle", MPM_LE_PARTICLE}, {K_LE, "staircase", MPM_LE_STAIRCASE}, {K_LE, "row", MPM_LE_ROW},
   {K_SCHEME, "usl", MPM_SCHEME_USL}, {K_SCHEME, "musl", MPM_SCHEME_MUSL}, {K_SCHEME, "usf", MPM_SCHEME_USF},
   {K_SCHEME, "usavg", MPM_SCHEME_USAVG},
   {K_BC, "lagrangian", MPM_BC_LAGRANGIAN}, {K_BC, "both", MPM_BC_BOTH}, {K_BC, "consistent", MPM_BC_CONSISTENT},

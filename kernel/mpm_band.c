@@ -1,0 +1,84 @@
+/*
+ * mpm_band.c - Le measured from the band itself (decohesion.Le = row): the effective
+ * length of eq. 41, Le = V_e / A_d, taken per particle row of the bar from the particles
+ * that soften in it, instead of from the cell (docs/bands.md sec. 3).
+ *
+ * Why.  Eq. 41 makes a band of volume V dissipate U0 A when every particle in it
+ * separates and Le = V / A.  The cell and staircase lengths assume a band shape; on an
+ * inclined line with several particles per cell the band that forms is 3 to 6 particles
+ * wide per row at first and localizes later, so a fixed Le over- or under-charges it.
+ * A straight crack crosses each particle row of the bar (height dy) once, over a length
+ * dy / |sin a|.  If k particles of width dx soften together in a row, the zone's volume
+ * per unit crack length is k dx |sin a|: that is the row's Le.  k is the participation
+ * number of the row's softening in the step before, sum(dlambda) / max(dlambda), so a
+ * particle that softens a little beside the band counts a little.  With Le so, the row
+ * dissipates U0 (dy / |sin a|) max(dlambda) per step: the crack's own rate, whatever
+ * the zone's width (exact while the same particle leads the row).
+ *
+ * Threads: each strip sums its particles' dlambda per row in particle order; the rows'
+ * sums are reduced in strip order after the gather, so any thread count gives the
+ * same bits.
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "mpm.h"
+
+mpm_band *mpm_band_alloc(int nrow, int nstrip, double dy, double wlen, double le0)
+{
+  mpm_band *b = calloc(1, sizeof *b);
+  if (!b)
+    return NULL;
+  b->nrow = nrow;
+  b->nstrip = nstrip;
+  b->idy = 1.0 / dy;
+  b->wlen = wlen;
+  b->le = malloc((size_t)nrow * sizeof *b->le);
+  b->acc = calloc((size_t)nrow * (size_t)nstrip * 2, sizeof *b->acc);
+  b->lam = calloc((size_t)nrow, sizeof *b->lam);
+  b->sum = calloc((size_t)nrow, sizeof *b->sum);
+  if (!b->le || !b->acc || !b->lam || !b->sum) {
+    mpm_band_free(b);
+    return NULL;
+  }
+  for (int j = 0; j < nrow; j++)
+    b->le[j] = le0;
+  return b;
+}
+
+void mpm_band_free(mpm_band *b)
+{
+  if (!b)
+    return;
+  free(b->le);
+  free(b->acc);
+  free(b->lam);
+  free(b->sum);
+  free(b);
+}
+
+/* After the step's gather: the row's crack state lam_r is the largest min(lambda, 1) of
+ * its particles, and a row whose particles softened takes, for the next step,
+ * Le = k wlen with k = sum(dlambda) / d lam_r (strips reduced in order): its particles
+ * then dissipate U0 (dy / |sin a|) d lam_r together, the crack's own increment, even
+ * when the lead passes from one particle to another.  Once lam_r is 1 the row's crack
+ * is complete: k is MPM_BAND_KMAX, so a particle that still softens there finds no
+ * solution and separates (eqs. 56-58) without dissipating again. */
+void mpm_band_step(mpm_band *b)
+{
+  const size_t nr = (size_t)b->nrow;
+  for (size_t j = 0; j < nr; j++) {
+    double sum = 0.0, mx = 0.0;
+    for (int q = 0; q < b->nstrip; q++) {
+      const double *a = b->acc + 2 * ((size_t)q * nr + j);
+      sum += a[0];
+      mx = fmax(mx, a[1]);
+    }
+    b->lam[j] = fmax(b->lam[j], mx);
+    b->sum[j] += sum;
+    if (b->lam[j] > 0.0 && b->sum[j] > 0.0)
+      b->le[j] = fmax(b->sum[j] / b->lam[j], 1.0) * b->wlen;
+  }
+  memset(b->acc, 0, 2 * nr * (size_t)b->nstrip * sizeof *b->acc);
+}
