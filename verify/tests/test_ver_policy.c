@@ -159,6 +159,15 @@ static void test_ver_policy_band_method(void **state)
   c.D_final = 1.7 * c.ana.D_sep;
   ver_policy_case(&c);
   assert_int_equal(chk(&c, "D_final")->verdict, VER_FAIL);
+  /* Le = row measures the zone: 4 ppc is held to 10 % as well */
+  c.vs.sc.le_mode = MPM_LE_ROW;
+  c.D_final = 1.3 * c.ana.D_sep;
+  ver_policy_case(&c);
+  assert_int_equal(chk(&c, "D_final")->verdict, VER_FAIL);
+  c.D_final = 0.92 * c.ana.D_sep;
+  ver_policy_case(&c);
+  assert_int_equal(chk(&c, "D_final")->verdict, VER_PASS);
+  c.vs.sc.le_mode = MPM_LE_STAIRCASE;
   c.vs.sc.ppc = 1;
   /* one field with Le = staircase is not the band method: D stays known-limit */
   c.vs.sc.fields = MPM_FIELDS_ONE;
