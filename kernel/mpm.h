@@ -86,6 +86,7 @@ typedef struct {
   double le_factor;      /* Le is le_factor times the mode's length (1; the paper's proposal
                             of sec. 4.4: the fracture zone's measured volume per unit area) */
   double imp_factor;     /* snf multiplier at the imperfection particle (paper 0.9); 1 = none */
+  double imp_stf_factor; /* stf multiplier there (1: the paper's imperfection, snf only)   */
   double imp_x, imp_y;   /* the imperfection sits at the particle nearest this point   */
   double h;              /* grid spacing                                               */
   int ppc;               /* particles per cell, a perfect square (1, 4, 9, ...)        */

@@ -28,6 +28,7 @@ mpm_scene mpm_mms_scene(double h, int scheme, int bc)
   sc.snf = sc.stf = sc.U0 = sc.s0 = sc.q = 1.0;
   sc.sep_threshold = 0.98;
   sc.imp_factor = 1.0;
+  sc.imp_stf_factor = 1.0;
   sc.le_factor = 1.0;
   sc.h = h;
   sc.ppc = 1;

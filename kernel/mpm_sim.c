@@ -64,6 +64,7 @@ mpm_status mpm_scene_check(const mpm_scene *sc, char *err, size_t errlen)
     if (!(sc->q > 0.0)) BAD("decohesion.q must be > 0");
     if (!(sc->sep_threshold > 0.0 && sc->sep_threshold <= 1.0)) BAD("decohesion.separation must be in (0, 1]");
     if (!(sc->imp_factor > 0.0 && sc->imp_factor <= 1.0)) BAD("imperfection.snf_factor must be in (0, 1]");
+    if (!(sc->imp_stf_factor > 0.0 && sc->imp_stf_factor <= 1.0)) BAD("imperfection.stf_factor must be in (0, 1]");
   }
   if (!(sc->h > 0.0)) BAD("grid.h must be > 0");
   if (whole_cells(sc->L, sc->h) < 0 || whole_cells(sc->H, sc->h) < 0)
@@ -200,6 +201,8 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
   }
   mpm_material_init(&s->mat[MPM_MAT_BAR], sc, sc->snf, Le);
   mpm_material_init(&s->mat[MPM_MAT_IMP], sc, sc->snf * sc->imp_factor, Le);
+  s->mat[MPM_MAT_IMP].stf *= sc->imp_stf_factor; /* a shear-governed scene's imperfection */
+  mpm_material_derive(&s->mat[MPM_MAT_IMP]);
   mpm_material_init(&s->mat[MPM_MAT_HEAD], sc, sc->snf, Le);
   s->mat[MPM_MAT_HEAD].model = MPM_DCOH_NONE;            /* stress-free: it only carries mass */
   s->mat[MPM_MAT_HEAD].E1 = s->mat[MPM_MAT_HEAD].E2 = s->mat[MPM_MAT_HEAD].G = 0.0;
@@ -230,7 +233,7 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
         imp = k;
       }
     }
-  if (sc->model && sc->imp_factor < 1.0)
+  if (sc->model && (sc->imp_factor < 1.0 || sc->imp_stf_factor < 1.0))
     p->mat[imp] = MPM_MAT_IMP;
   /* The head: the same lattice continued MPM_HEAD_CELLS cells beyond x = 0, moving with
    * the grip. */

@@ -57,13 +57,13 @@ static int write_snapshot(const mpm_sim *s, const char *dir, const char *stem)
   FILE *f = open_tmp(dir, name, tmp, sizeof tmp);
   if (!f)
     return -1;
-  fprintf(f, "# delam particles.csv schema %d\nx0,y0,x,y,ux,uy,lambda,sxx,syy,sxy,upn,upt,sep,wcoh\n",
+  fprintf(f, "# delam particles.csv schema %d\nx0,y0,x,y,ux,uy,lambda,sxx,syy,sxy,upn,upt,sep,wcoh,dis\n",
           VER_SCHEMA_PARTICLES);
   for (size_t k = 0; k < p->n; k++)
     if (p->mat[k] != MPM_MAT_HEAD)
-      fprintf(f, "%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%d,%.9g\n", p->x0[k], p->y0[k],
+      fprintf(f, "%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%d,%.9g,%.9g\n", p->x0[k], p->y0[k],
             p->x[k], p->y[k], p->x[k] - p->x0[k], p->y[k] - p->y0[k], p->lam[k], p->sxx[k], p->syy[k],
-            p->sxy[k], p->upn[k], p->upt[k], p->sep[k], p->wcoh[k]);
+            p->sxy[k], p->upn[k], p->upt[k], p->sep[k], p->wcoh[k], p->dis[k]);
   if (commit_file(f, tmp))
     return -1;
   /* Legacy VTK polydata, one vertex per particle, for ParaView. */

@@ -48,6 +48,7 @@ static mpm_scene fig6_scene(void)
   sc.sep_threshold = 0.98;
   sc.le_mode = MPM_LE_CELL;
   sc.imp_factor = 1.0;
+  sc.imp_stf_factor = 1.0;
   sc.imp_x = 96.0;
   sc.imp_y = 16.0;
   sc.h = 8.0;
@@ -478,6 +479,8 @@ static void test_mpm_bar_scene_check(void **state)
   sc = d1; sc.sep_threshold = 0.0; expect_einval(&sc, "separation");
   sc = d1; sc.imp_factor = 0.0; expect_einval(&sc, "snf_factor");
   sc = d1; sc.imp_factor = 1.5; expect_einval(&sc, "snf_factor");
+  sc = d1; sc.imp_stf_factor = 0.0; expect_einval(&sc, "stf_factor");
+  sc = d1; sc.imp_stf_factor = 1.5; expect_einval(&sc, "stf_factor");
   sc = ok; sc.h = 0.0; expect_einval(&sc, "h");
   sc = ok; sc.h = 5.0; expect_einval(&sc, "h"); /* 5 divides neither 192 nor 32 */
   sc = ok; sc.h = 24.0; expect_einval(&sc, "h"); /* divides L = 192, not H = 32 */

@@ -47,6 +47,7 @@ static mpm_sim *blocks_shape(int fields, double v, int shape)
   sc.q = 1.0;
   sc.sep_threshold = 0.98;
   sc.imp_factor = 1.0;
+  sc.imp_stf_factor = 1.0;
   sc.imp_x = 24.0;
   sc.imp_y = 8.0;
   sc.h = 2.0;
