@@ -37,7 +37,7 @@ typedef struct {
   int cut;            /* 1: start with a separated band across the bar (cut_band) */
 } bench_case;
 
-#define PAPER "grid.shape=linear grid.fields=one decohesion.Le=cell"
+#define PAPER "grid.shape=linear grid.fields=one decohesion.Le=cell imperfection.stf_factor=1"
 static const bench_case cases[] = {
   {"fig6", 2.0, 4, 4000, "linear", "grid.shape=linear grid.fields=one", 0},
   {"fig6", 1.0, 4, 2000, "linear", "grid.shape=linear grid.fields=one", 0},
