@@ -55,6 +55,11 @@ enum { MPM_BC_LAGRANGIAN = 0, MPM_BC_BOTH = 1, MPM_BC_CONSISTENT = 2 };
 /* The grip: RIGID is the paper's rigid head (MPM_MAT_HEAD); NONE grips the node column
  * x = 0 alone (no head particles: the free-vibration scene). */
 enum { MPM_HEAD_RIGID = 0, MPM_HEAD_NONE = 1 };
+/* What the grip follows (mpm_control.c): GRIP, the paper's constant speed; DISSIPATION,
+ * from the first softening until the band has cut the bar, a dissipation that grows at
+ * speed x (the peak load so far), the grip moving back where the bar's curve snaps back
+ * (as a test machine under crack-opening control follows a snapback). */
+enum { MPM_CONTROL_GRIP = 0, MPM_CONTROL_DISSIPATION = 1 };
 /* The background grid is discarded every step (sec. 2), so it may be laid anywhere.
  * STRETCH lays it along the bar's mean stretch, x_i = L + (X_i - L)(1 + delta / L): the
  * gripped and fixed node columns stay on the bar's ends and no particle crosses them
@@ -82,6 +87,8 @@ typedef struct {
   double snf, stf;       /* failure tractions in opening and in shear                  */
   double U0, s0, q;      /* dissipation per area at separation, reference traction, softening exponent */
   double sep_threshold;  /* lambda above which the separation algorithm is used (paper 0.98) */
+  double eta;            /* decohesion viscosity, a time: F = eta dlambda/dt while softening
+                            (0: the paper's rate-independent law; mpm_decohesion.c)     */
   int le_mode;           /* MPM_LE_CELL, MPM_LE_PARTICLE or MPM_LE_STAIRCASE           */
   double le_factor;      /* Le is le_factor times the mode's length (1; the paper's proposal
                             of sec. 4.4: the fracture zone's measured volume per unit area) */
@@ -106,6 +113,7 @@ typedef struct {
                          /*   linear shapes, one field; tests/test_mpm_mms.c)           */
   double dt;             /* time step                                                  */
   double speed;          /* grip speed (pulls the left end in -x)                      */
+  int control;           /* MPM_CONTROL_GRIP (the paper) or MPM_CONTROL_DISSIPATION       */
   double end_delta;      /* the run never goes past this end displacement              */
 } mpm_scene;
 
@@ -126,6 +134,7 @@ typedef struct {
   double irho;           /* 1 / rho (the ledger's V = m / rho)                         */
   double Le;             /* effective length V_e / A_d (eq. 41), fixed for the run     */
   double sep_threshold;  /* eqs. 56-58 take over when lambda would pass this           */
+  double visc;           /* decohesion.eta / dt: overstress per unit dlambda in a step (0: none) */
   /* derived (mpm_material_derive), so that the hot paths multiply instead of divide */
   double isnf, istf;     /* 1 / snf, 1 / stf                                            */
   double isnf2, istf2;   /* 1 / snf^2, 1 / stf^2                                        */
@@ -351,6 +360,14 @@ typedef struct {
   double t;                /* time                                                     */
   long step;               /* steps taken                                              */
   double P_grip, P_fixed;  /* loads (tension positive) of the last step                 */
+  /* the grip (mpm_control.c): its speed this step (pulling, > 0), the change of that speed
+   * from the last step, its displacement so far (delta) */
+  double vgrip, dvgrip, ugrip;
+  double D_run;            /* dissipation so far, summed from the steps' increments       */
+  double *dpart;           /* this step's dissipation increment per strip                 */
+  double P_peak;           /* the largest grip load so far                                */
+  double ctl_t0, ctl_D0;   /* dissipation control: when and at what D it took over (t0 < 0: not yet) */
+  double ctl_int;          /* ... its integral term (a speed)                             */
   double W_ext;            /* accumulated external work                                */
   long n_soften, n_separate, n_bracketed; /* counters of constitutive paths           */
   /* sorting and threads (mpm_sort.c): particles sorted by cell, column by column;
@@ -406,9 +423,14 @@ mpm_status mpm_mms_error(double h, int scheme, int bc, double *e, char *err, siz
 /* One explicit step (eqs. 2-7, USL).  On failure, err names the step, particle and field. */
 mpm_status mpm_sim_step(mpm_sim *s, char *err, size_t errlen);
 double mpm_sim_delta(const mpm_sim *s);
+/* The grip's displacement after `ahead` more steps at its current speed (ahead 0: delta). */
+double mpm_sim_grip_u(const mpm_sim *s, int ahead);
 void mpm_sim_energy(const mpm_sim *s, mpm_energy *e);
 /* Called at the top of each step: picks the step's thread count (s->nthreads). */
 void mpm_threads_tick(mpm_sim *s);
+
+/* The grip's speed for the next step (mpm_control.c), at the top of each step. */
+void mpm_control_step(mpm_sim *s);
 
 /* Updates s->cut after new separations (cheap when there are none). */
 void mpm_sim_cut(mpm_sim *s);

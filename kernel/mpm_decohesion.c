@@ -89,6 +89,7 @@ void mpm_material_init(mpm_material *m, const mpm_scene *sc, double snf, double 
   m->ubar0 = sc->U0 / sc->s0;
   m->Le = Le;
   m->sep_threshold = sc->sep_threshold;
+  m->visc = sc->dt > 0.0 ? sc->eta / sc->dt : 0.0;
   mpm_material_derive(m);
 }
 
@@ -174,7 +175,9 @@ double mpm_dcoh_F(const mpm_material *m, double sxx, double syy, double sxy, dou
 }
 
 /* The consistency function along the frozen flow direction:
- * phi(dl) = se(s_tr - dl s_m) - 1 + (lam + dl)^q, with s_m the traction per unit dl. */
+ * phi(dl) = se(s_tr - dl s_m) - 1 + (lam + dl)^q - visc dl, with s_m the traction per unit
+ * dl and visc = eta / dt: the viscous overstress eta dlambda/dt of decohesion.eta (0: the
+ * paper's rate-independent law, eq. 23). */
 typedef struct {
   const mpm_material *m;
   double sn, st;     /* trial traction        */
@@ -186,7 +189,7 @@ static double phi(double dl, void *vp)
 {
   const phi_ctx *c = vp;
   return eff_traction(c->m, c->sn - dl * c->smn, c->st - dl * c->smt) - 1.0 +
-         powq(c->lam + dl, c->m->q);
+         powq(c->lam + dl, c->m->q) - c->m->visc * dl;
 }
 
 /* d phi / d dl, for Newton (se is smooth away from sn = 0 and se = 0). */
@@ -197,7 +200,7 @@ static double dphi(double dl, const phi_ctx *c)
   const double gn = sn > 0.0 ? sn * c->m->isnf2 : 0.0;
   const double gt = st * c->m->istf2;
   const double lq = c->lam + dl;
-  return -(gn * c->smn + gt * c->smt) / se + dpowq(lq, c->m->q);
+  return -(gn * c->smn + gt * c->smt) / se + dpowq(lq, c->m->q) - c->m->visc;
 }
 
 /* Root of phi in (0, dlmax]: 0 and *dl on success, -1 when none exists
@@ -322,7 +325,7 @@ mpm_status mpm_dcoh_update(const mpm_material *m, const mpm_dstate *in, const do
      * step of eq. 46, -c / 2b, where 2b < 0, is then c se^2 / (Q - dpow se^2): one
      * division, not two in a row. */
     const double Q = m->s0 * k * (m->E1 * gn * gn + (m->model == MPM_DCOH_MODEL2 ? 0.0 : m->G * gt * gt));
-    const double se2 = se * se, den = Q - dpowq(in->lam, m->q) * se2;
+    const double se2 = se * se, den = Q + (m->visc - dpowq(in->lam, m->q)) * se2;
     const double guess = (den > 0.0 && isfinite(den)) ? c * se2 / den : 0.0;
     const double dlmax = 1.0 - in->lam;
     double dl = 0.0;

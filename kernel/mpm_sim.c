@@ -62,6 +62,7 @@ mpm_status mpm_scene_check(const mpm_scene *sc, char *err, size_t errlen)
     if (!(sc->snf > 0.0) || !(sc->stf > 0.0)) BAD("decohesion: snf and stf must be > 0");
     if (!(sc->U0 > 0.0) || !(sc->s0 > 0.0)) BAD("decohesion: U0 and s0 must be > 0");
     if (!(sc->q > 0.0)) BAD("decohesion.q must be > 0");
+    if (!(sc->eta >= 0.0 && sc->eta <= 1e6)) BAD("decohesion.eta must be in [0, 1e6]");
     if (!(sc->sep_threshold > 0.0 && sc->sep_threshold <= 1.0)) BAD("decohesion.separation must be in (0, 1]");
     if (!(sc->imp_factor > 0.0 && sc->imp_factor <= 1.0)) BAD("imperfection.snf_factor must be in (0, 1]");
     if (!(sc->imp_stf_factor > 0.0 && sc->imp_stf_factor <= 1.0)) BAD("imperfection.stf_factor must be in (0, 1]");
@@ -85,6 +86,8 @@ mpm_status mpm_scene_check(const mpm_scene *sc, char *err, size_t errlen)
   if (sc->fields != MPM_FIELDS_ONE && sc->fields != MPM_FIELDS_TWO) BAD("grid.fields must be one or two");
   if (!(sc->dt > 0.0)) BAD("time.dt must be > 0");
   if (!(sc->speed > 0.0)) BAD("loading.speed must be > 0");
+  if (sc->control != MPM_CONTROL_GRIP && sc->control != MPM_CONTROL_DISSIPATION)
+    BAD("loading.control must be grip or dissipation");
   if (!(sc->end_delta > 0.0)) BAD("run.end_delta must be > 0");
   return MPM_OK;
 #undef BAD
@@ -114,6 +117,7 @@ void mpm_sim_free(mpm_sim *s)
   free(s->fixx);
   free(s->rowsep);
   free(s->led_part);
+  free(s->dpart);
   mpm_band_free(s->band);
   free(s);
 }
@@ -128,6 +132,8 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
   if (!s)
     return MPM_ENOMEM;
   s->sc = *sc;
+  s->vgrip = sc->speed;
+  s->ctl_t0 = -1.0;
   const double h = sc->h;
   const int cx = (int)whole_cells(sc->L, h), cy = (int)whole_cells(sc->H, h);
   /* The grid is only as large as the motion needs: margin all round (at least one
@@ -166,7 +172,8 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
     s->scratch = malloc(np * sizeof(double));
     s->scratch8 = malloc(np);
     s->led_part = calloc((size_t)s->nstrip, sizeof *s->led_part);
-    ok = s->strip_start && s->key && s->perm && s->count && s->scratch && s->scratch8 && s->led_part;
+    s->dpart = calloc((size_t)s->nstrip, sizeof *s->dpart);
+    ok = s->strip_start && s->key && s->perm && s->count && s->scratch && s->scratch8 && s->led_part && s->dpart;
     for (int t = 0; ok && t < s->thr.nmax; t++)
       ok = (s->dws[t] = mpm_dwork_alloc()) != NULL;
     if (ok && sc->fields == MPM_FIELDS_TWO) {
@@ -291,9 +298,16 @@ void mpm_sim_cut(mpm_sim *s)
   s->cut = rows == s->nrow;
 }
 
+double mpm_sim_grip_u(const mpm_sim *s, int ahead)
+{
+  if (s->sc.control == MPM_CONTROL_GRIP) /* the paper's: delta = speed t exactly */
+    return s->sc.speed * (double)(s->step + ahead) * s->sc.dt;
+  return s->ugrip + ahead * s->vgrip * s->sc.dt;
+}
+
 double mpm_sim_delta(const mpm_sim *s)
 {
-  return s->sc.speed * s->t;
+  return s->sc.control == MPM_CONTROL_GRIP ? s->sc.speed * s->t : s->ugrip;
 }
 
 void mpm_sim_energy(const mpm_sim *s, mpm_energy *e)

@@ -328,7 +328,7 @@ typedef struct {
  * treatment's v^L = v_bc and increment d, books the ledger's held-node terms (replacing
  * the free-node ones grid_update summed for it), and returns the reaction's impulse,
  * R dt = m (v_bc - v^L_free) for LAGRANGIAN and BOTH, m d - dt f for CONSISTENT. */
-static inline double hold(int bc, mpm_node *n, int y, double vbc, double bfac, hold_sums *h)
+static inline double hold(int bc, mpm_node *n, int y, double vbc, double dvbc, double bfac, hold_sums *h)
 {
   double *lp = y ? &n->py : &n->px, *lf = y ? &n->fy : &n->fx;
   const double m = n->m, vL = *lp, dv = *lf, v = vL - dv;
@@ -337,7 +337,7 @@ static inline double hold(int bc, mpm_node *n, int y, double vbc, double bfac, h
     d = dv + (vbc - vL); /* = v_bc - v: the FLIP increment pulls toward v_bc */
     R = m * (vbc - vL);
   } else {
-    d = 0.0; /* the change of v_bc over the step: the grip speed is constant */
+    d = dvbc; /* the change of v_bc over the step (0 at a constant grip speed) */
     R = bc == MPM_BC_BOTH ? m * (vbc - vL) : m * (d - dv);
   }
   *lp = vbc;
@@ -411,15 +411,15 @@ static void grid_update(mpm_sim *s, double bfac)
     grid_nodes(s, bfac, 0);
   /* The constraints (sc.bc; mpm.h), serial in node order.  Tension is positive in both
    * loads. */
-  const double vg = -s->sc.speed;
+  const double vg = -s->vgrip;
   const int bc = s->sc.bc;
   double Rg = 0.0, Rf = 0.0;
   hold_sums h = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
   for (int q = 0; q < s->ngrip; q++)
-    Rg += hold(bc, &g->nd[s->grip[q]], 0, vg, bfac, &h);
+    Rg += hold(bc, &g->nd[s->grip[q]], 0, vg, -s->dvgrip, bfac, &h);
   for (int q = 0; q < s->nfixx; q++)
-    Rf += hold(bc, &g->nd[s->fixx[q]], 0, 0.0, bfac, &h);
-  hold(bc, &g->nd[s->fixy], 1, 0.0, bfac, &h);
+    Rf += hold(bc, &g->nd[s->fixx[q]], 0, 0.0, 0.0, bfac, &h);
+  hold(bc, &g->nd[s->fixy], 1, 0.0, 0.0, bfac, &h);
   mpm_ledger *L = &s->led;
   L->s_A += h.A;
   L->s_K += h.K;
@@ -440,7 +440,7 @@ static void held_velocity_lanes(mpm_sim *s)
 {
   mpm_grid *g = s->g;
   for (int q = 0; q < s->ngrip; q++)
-    g->nd[s->grip[q]].fx = -s->sc.speed;
+    g->nd[s->grip[q]].fx = -s->vgrip;
   for (int q = 0; q < s->nfixx; q++)
     g->nd[s->fixx[q]].fx = 0.0;
   g->nd[s->fixy].fy = 0.0;
@@ -454,7 +454,7 @@ static void grid_start_velocity(mpm_sim *s, double frac)
 {
   mpm_grid *g = s->g;
   const double c = frac * s->sc.dt, mmin = MPM_MASS_EPS * s->p->m[0];
-  const double vg = -s->sc.speed;
+  const double vg = -s->vgrip;
   /* held components first, while the lanes hold the forces: the loop below sums
    * -c f . p / m for them; B wants -c f . v_bc */
   double Bh = 0.0;
@@ -593,17 +593,20 @@ static __attribute__((noinline)) double constitutive_flush(const mpm_sim *s, int
     /* the decohesion strain is d ud / Le while softening, d ud / Lopen once separating */
     p->wcoh[k] += info.w * p->V[k] / (info.path == MPM_DPATH_SOFTEN ? m->Le : m->Lopen);
     const double dl = fmin(o.lam, 1.0) - fmin(in.lam, 1.0);
+    double dd = 0.0;
     if (!b) {
-      p->dis[k] += m->U0 * dl * p->V[k] / m->Le;
+      dd = m->U0 * dl * p->V[k] / m->Le;
     } else if (m == &mrow) {
       /* Le = row: a particle's dissipation ends where it separates, the rest of its
-       * 1 - lambda charged at the row's Le then (a complete row's: nothing) */
-      p->dis[k] += m->U0 * (info.path == MPM_DPATH_SEPARATE ? 1.0 - fmin(in.lam, 1.0) : dl) * p->V[k] / m->Le;
+       * 1 - lambda charged at the row's Le then */
+      dd = m->U0 * (info.path == MPM_DPATH_SEPARATE ? 1.0 - fmin(in.lam, 1.0) : dl) * p->V[k] / m->Le;
       double *a = b->acc + 2 * ((size_t)q * (size_t)b->nrow + (size_t)j);
       if (info.path == MPM_DPATH_SOFTEN)
         a[0] += dl;
       a[1] = fmax(a[1], o.sep ? 1.0 : fmin(o.lam, 1.0)); /* a separated particle: the row's crack is through */
     }
+    p->dis[k] += dd;
+    s->dpart[q] += dd;
     acc->soften += info.path == MPM_DPATH_SOFTEN;
     acc->separate += info.path == MPM_DPATH_SEPARATE;
     acc->bracketed += info.bracketed;
@@ -881,12 +884,12 @@ static void head_rigid(mpm_sim *s)
     return; /* the head is the grip: without one (tests of the bare step) it is left alone */
   if (!(m > 0.0))
     return;
-  const double vy = my / m, dx = -s->sc.speed * (s->step + 1) * s->sc.dt;
+  const double vy = my / m, dx = -mpm_sim_grip_u(s, 1);
   s->head_dy += vy * s->sc.dt;
   double ke1 = 0.0;
   for (size_t i = 0; i < s->nhead; i++) {
     const size_t k = s->head[i];
-    p->vx[k] = -s->sc.speed;
+    p->vx[k] = -s->vgrip;
     p->vy[k] = vy;
     p->x[k] = p->x0[k] + dx;
     p->y[k] = p->y0[k] + s->head_dy;
@@ -952,6 +955,7 @@ static mpm_status g2p_timed(mpm_sim *s, int mode, double frac, char *err, size_t
 mpm_status mpm_sim_step(mpm_sim *s, char *err, size_t errlen)
 {
   mpm_threads_tick(s);
+  mpm_control_step(s);
   mpm_sim_cut(s);
   lay_grid(s);
   double t0 = wall(), t1;
@@ -1011,6 +1015,12 @@ mpm_status mpm_sim_step(mpm_sim *s, char *err, size_t errlen)
     mpm_band_step(s->band);
   head_rigid(s);
   ledger_step(s);
+  s->ugrip += s->vgrip * s->sc.dt;
+  s->P_peak = fmax(s->P_peak, s->P_grip);
+  for (int q = 0; q < s->nstrip; q++) { /* strip order: the same sum for any thread count */
+    s->D_run += s->dpart[q];
+    s->dpart[q] = 0.0;
+  }
   s->step++;
   s->t = s->step * s->sc.dt;
   return MPM_OK;

@@ -210,6 +210,11 @@ static int run_setup(run_state *r, char *err, size_t errlen)
   const mpm_scene *sc = &r->vs->sc;
   r->vdt = sc->speed * sc->dt;
   r->nmax = (long)ceil(sc->end_delta / r->vdt - 1e-9);
+  /* loading.control = dissipation: the grip may move back for a while, so the steps to
+   * end_delta are not known; three times the grip's own budget, and the loop stops at
+   * end_delta */
+  if (sc->control == MPM_CONTROL_DISSIPATION)
+    r->nmax *= 3;
   r->every = (long)fmax(1.0, floor(r->vs->interval / r->vdt + 0.5));
   const long nrows_max = r->nmax / r->every + 2;
   r->rows = malloc(sizeof(row) * (size_t)nrows_max);
@@ -386,6 +391,8 @@ static int run_loop(run_state *r, ver_summary *u, double w0, char *err, size_t e
       rc = 1;
     if (!rc && u->delta_sep >= 0 && r->vs->stop_margin > 0 && delta >= u->delta_sep + r->vs->stop_margin &&
         delta >= r->last_snap)
+      break;
+    if (s->sc.control == MPM_CONTROL_DISSIPATION && delta >= s->sc.end_delta - 0.5 * r->vdt)
       break;
     if (show && (s->step & 255) == 0 && ver_now_wall() > next_show) {
       next_show = ver_now_wall() + 0.5;

@@ -251,6 +251,30 @@ static void test_mpm_decohesion_opening_q1(void **state)
   assert_true(lam >= 0.98);
 }
 
+/* decohesion.eta: a softening step ends on F = eta dlambda / dt (the viscous overstress),
+ * not on F = 0, and softens less than the rate-independent step from the same trial. */
+static void test_mpm_decohesion_viscous_overstress(void **state)
+{
+  (void)state;
+  mpm_dwork *w = mpm_dwork_alloc();
+  mpm_material m = make_mat(MPM_DCOH_MODEL1, 90.0, 1.0, 10.0, 1.0, 1.0);
+  const double e0 = 1.0 / m.E1;         /* at 90 deg n = (1, 0): sxx reaches snf */
+  const double de[3] = {1.02 * e0, 0.0, 0.0};
+  mpm_dstate a = zero_state(), b;
+  mpm_dinfo info;
+  step(&m, &a, de, &info, w);          /* rate-independent: on F = 0 */
+  assert_int_equal(info.path, MPM_DPATH_SOFTEN);
+  assert_abs(mpm_dcoh_F(&m, a.sxx, a.syy, a.sxy, a.lam), 0.0, 1e-10, "eta 0: F after softening");
+  m.visc = 5.0; /* eta / dt */
+  b = zero_state();
+  step(&m, &b, de, &info, w);
+  assert_int_equal(info.path, MPM_DPATH_SOFTEN);
+  assert_abs(mpm_dcoh_F(&m, b.sxx, b.syy, b.sxy, b.lam), m.visc * b.lam, 1e-10,
+             "eta > 0: F after softening vs eta dlambda / dt");
+  assert_true(b.lam > 0.0 && b.lam < a.lam);
+  mpm_dwork_free(w);
+}
+
 /* q = 0.8 and 1.2 (and Model 2 in pure opening, which must agree with Model 1):
  * monotone softening onto the bisected branch, separation, work UF(q);
  * q < 1 must start with the bracketed solver (lambda^(q-1) infinite at 0). */
@@ -618,6 +642,7 @@ int main(void)
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_mpm_decohesion_elastic_below_initiation),
       cmocka_unit_test(test_mpm_decohesion_opening_q1),
+      cmocka_unit_test(test_mpm_decohesion_viscous_overstress),
       cmocka_unit_test(test_mpm_decohesion_opening_q_range),
       cmocka_unit_test(test_mpm_decohesion_shear),
       cmocka_unit_test(test_mpm_decohesion_mixed_model1),
