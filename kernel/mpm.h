@@ -330,9 +330,10 @@ typedef struct {
 } mpm_ledger;
 
 /* Per-strip partial sums of one step (fixed partition: the same sums for any thread
- * count).  Node terms: A = sum m v . d, K = sum m |d|^2 / 2, B = -dt sum f . u;
- * particle terms: Kp = sum m |dv_p|^2 / 2, Q = sum V dsigma : deps / 2. */
-enum { MPM_LED_A = 0, MPM_LED_K, MPM_LED_B, MPM_LED_KP, MPM_LED_Q, MPM_LED_N };
+ * count).  Node terms: A = sum m v . d, K = sum m |d|^2, B = -dt sum f . u;
+ * particle terms: KP = sum m |dv_p|^2, QS = sum m sigma_new : deps (mpm_step.c,
+ * ledger_step). */
+enum { MPM_LED_A = 0, MPM_LED_K, MPM_LED_B, MPM_LED_KP, MPM_LED_QS, MPM_LED_N };
 
 /* ---- the simulation ---- */
 /* Particles whose elastic trial left the elastic domain, waiting for the full

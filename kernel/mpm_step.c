@@ -49,7 +49,8 @@
  *   B + Q,   B = -dt sum f_i . u_i,  Q = sum V_p dsigma_p : de_p / 2,
  * where u_i is the nodal velocity the strain is taken from (B is sum V sigma : de at the
  * old stress, by linearity of de in u; Q is exact for the elastic part, and the
- * decohesion update's own error is left over).  With K = sum m_i |d_i|^2 / 2 and the
+ * decohesion update's own error is left over; the gather forms Q as
+ * (sum V sigma_new : de - B) / 2, which saves it the stress difference).  With K = sum m_i |d_i|^2 / 2 and the
  * work W = R v_bc dt booked in W_ext, the step's loss W - dE splits into
  *   L_flip   = K - Kp >= 0: kinetic energy lost interpolating the increments to the
  *              particles (Jensen); it includes any node pattern the particles do not
@@ -82,6 +83,7 @@
  *    a per-thread list and get the full update (mpm_decohesion.c) after each chunk;
  *  - no allocation, no atomics and no per-particle timing in the loops.
  */
+#include <assert.h>
 #include <math.h>
 #include <stddef.h>
 #include <stdio.h>
@@ -353,8 +355,9 @@ static inline double hold(int bc, mpm_node *n, int y, double vbc, double dvbc, d
 }
 
 /* The free update of every node (eq. 4) and the ledger's node sums, strip by strip:
- * A + bfac B (with B the stress power of the share bfac of the strain taken from v^L)
- * and K.  usl (bfac = 1): A + B = -K exactly, so only K is summed. */
+ * A, K and bfac B (B the stress power of the share bfac of the strain taken from v^L).
+ * usl (bfac = 1): B = -(A + K) exactly, and dt f . dv = m |dv|^2.  A scalar loop: with
+ * AVX-512 a vectorised one gathers and scatters the 64-byte records, which was slower. */
 static inline __attribute__((always_inline)) void grid_nodes(mpm_sim *s, double bfac, const int usl)
 {
   mpm_grid *g = s->g;
@@ -366,17 +369,13 @@ static inline __attribute__((always_inline)) void grid_nodes(mpm_sim *s, double 
     long k0, k1;
     strip_nodes(s, q, &k0, &k1);
     double A = 0.0, K = 0.0, B = 0.0;
-    /* simd reduction: the ledger's sums may be added in vector lanes (a fixed order for
-     * a given build, whatever the threads), so the loop stays vectorised */
-#ifdef _OPENMP
-#pragma omp simd reduction(+ : A, K, B)
-#endif
     for (long k = k0; k < k1; k++) {
       mpm_node *n = &g->nd[k];
       if (n->m > mmin) {
         const double im = 1.0 / n->m;
         const double dvx = dt * n->fx * im, dvy = dt * n->fy * im;
-        if (usl) { /* m |dv|^2 = dt f . dv; A + B = -m |dv|^2 (USL: u = v^L = v + dv) */
+        if (usl) { /* A = m v . dv = p . dv; K = m |dv|^2 = dt f . dv */
+          A += n->px * dvx + n->py * dvy;
           K += dt * (n->fx * dvx + n->fy * dvy);
         } else {
           const double vx = n->px * im, vy = n->py * im, mdx = n->m * dvx, mdy = n->m * dvy;
@@ -392,8 +391,9 @@ static inline __attribute__((always_inline)) void grid_nodes(mpm_sim *s, double 
         n->px = n->py = n->fx = n->fy = 0.0;
       }
     }
-    s->led_part[q][MPM_LED_A] += usl ? -K : A + bfac * B;
+    s->led_part[q][MPM_LED_A] += A;
     s->led_part[q][MPM_LED_K] += K;
+    s->led_part[q][MPM_LED_B] += usl ? -(A + K) : bfac * B;
   }
 }
 
@@ -552,7 +552,7 @@ typedef struct {
 
 /* The full decohesion update (sec. 4) of the particles in the thread's list, in list
  * order, off the hot loop; one timing per batch.  Returns the ledger's
- * sum V dsigma : deps over them. */
+ * sum m sigma_new : deps over them (ledger_step). */
 static __attribute__((noinline)) double constitutive_flush(const mpm_sim *s, int q, mpm_particles *restrict p,
                                                             mpm_defer *d, mpm_dwork *dw, g2p_acc *acc)
 {
@@ -581,7 +581,7 @@ static __attribute__((noinline)) double constitutive_flush(const mpm_sim *s, int
       acc->bad_k = k;
     }
     const double *de = d->de[i];
-    qs += p->V[k] * ((o.sxx - in.sxx) * de[0] + (o.syy - in.syy) * de[1] + 2.0 * (o.sxy - in.sxy) * de[2]);
+    qs += p->m[k] * (o.sxx * de[0] + o.syy * de[1] + o.sxy * (2.0 * de[2]));
     p->sxx[k] = o.sxx;
     p->syy[k] = o.syy;
     p->sxy[k] = o.sxy;
@@ -656,9 +656,12 @@ static inline __attribute__((always_inline)) void g2p_strip_impl(mpm_sim *s, int
   if (gimp)
     mpm_gimp_lc(s, &lcx, &lcy);
   const size_t end = s->strip_start[q + 1];
-  int resort = 0;
-  double qs = 0.0; /* ledger: sum V dsigma : deps, and sum m |dv_p|^2 in kv */
+  /* ledger: sum m sigma_new : deps (ledger_step), and sum m |dv_p|^2 in kv */
+  double qs = 0.0;
   mpm_v4 kv = {0.0, 0.0, 0.0, 0.0};
+  /* the strip's leftmost and rightmost new positions: a particle left the safe columns
+   * iff one of those did (the column is monotone in x, rounding included); NaN ignored */
+  double xlo = INFINITY, xhi = -INFINITY;
   /* Chunks of at most MPM_DEFER particles: the list cannot overflow inside one, and the
    * full updates run after it, outside the restrict-qualified block. */
   for (size_t c0 = s->strip_start[q]; c0 < end; c0 += MPM_DEFER) {
@@ -726,7 +729,7 @@ static inline __attribute__((always_inline)) void g2p_strip_impl(mpm_sim *s, int
         kv += pm[k] * (S * S); /* lanes GFX, GFY: m |dv_p|^2 */
       }
       if (strain) {
-        const double de0 = GX[ux], de1 = GY[uy], de2 = 0.5 * (GY[ux] + GX[uy]);
+        const double de0 = GX[ux], de1 = GY[uy], g2 = GY[ux] + GX[uy], de2 = 0.5 * g2;
         /* sec. 4: the elastic trial, kept where F <= 0 (eq. 23), tested as
          * <s_nn / snf>^2 + (s_nt / stf)^2 < (1 - lambda^q)^2 with the strength cached
          * (str2 < 0 once separated: always the full update).  It rounds differently from
@@ -748,23 +751,26 @@ static inline __attribute__((always_inline)) void g2p_strip_impl(mpm_sim *s, int
           dde[nd_][2] = de2;
           nd_++;
         } else {
-          qs += pm[k] * m->irho * ((txx - sxx[k]) * de0 + (tyy - syy[k]) * de1 + 2.0 * (txy - sxy[k]) * de2);
+          qs += pm[k] * (txx * de0 + tyy * de1 + txy * g2);
           sxx[k] = txx;
           syy[k] = tyy;
           sxy[k] = txy;
         }
       }
       if (mode & G2P_X) {
-        const double col = (xn - ox) * ihx + shift;
-        resort |= (col < clo) | (col >= chi);
+        xlo = xn < xlo ? xn : xlo;
+        xhi = xn > xhi ? xn : xhi;
       }
     }
     d->n = nd_;
     qs += constitutive_flush(s, q, s->p, d, dw, acc);
   }
-  acc->resort |= resort;
+  if ((mode & G2P_X) && xlo <= xhi) {
+    const double clo_x = (xlo - ox) * ihx + shift, chi_x = (xhi - ox) * ihx + shift;
+    acc->resort |= (clo_x < clo) | (chi_x >= chi);
+  }
   s->led_part[q][MPM_LED_KP] += kv[GFX] + kv[GFY];
-  s->led_part[q][MPM_LED_Q] += qs;
+  s->led_part[q][MPM_LED_QS] += qs;
 }
 
 /* One copy of the loop per pass kind and shape, so that each reads only the lanes it
@@ -855,7 +861,13 @@ static void ledger_step(mpm_sim *s)
       t[i] += s->led_part[q][i];
   mpm_ledger *L = &s->led;
   const double A = t[MPM_LED_A] + L->s_A, K = 0.5 * (t[MPM_LED_K] + L->s_K);
-  const double B = t[MPM_LED_B] + L->s_B + L->s_Bstart, Kp = 0.5 * t[MPM_LED_KP], Q = 0.5 * t[MPM_LED_Q];
+  const double B = t[MPM_LED_B] + L->s_B + L->s_Bstart, Kp = 0.5 * t[MPM_LED_KP];
+  /* Q = sum V dsigma : deps / 2 = (sum V sigma_new : deps - B) / 2: B is the particles'
+   * sum V sigma : deps at the old stress (the strain is linear in the nodal velocity
+   * u_i, the force in the stress), formed on the nodes.  V = m / rho, one rho for all
+   * materials (mpm_sim_alloc). */
+  assert(s->mat[MPM_MAT_IMP].irho == s->mat[MPM_MAT_BAR].irho && s->mat[MPM_MAT_HEAD].irho == s->mat[MPM_MAT_BAR].irho);
+  const double Q = 0.5 * (s->mat[MPM_MAT_BAR].irho * t[MPM_LED_QS] - B);
   L->L_flip += K - Kp;
   L->L_bc += -L->s_H + (L->s_Wbook - L->s_Wtrue);
   L->L_scheme += L->s_Wtrue - A - K - B - Q + L->s_H - L->s_C;
