@@ -290,7 +290,7 @@ typedef struct {
   double L_flip;   /* lost interpolating the nodal velocity increments to the particles */
   double L_scheme; /* the time integration's own loss (negative: gain)                */
   double W_head;   /* taken by the rigid head (its KE change and its projection)      */
-  double L_contact; /* taken by the contact between two velocity fields (mpm_fields.c) */
+  double L_contact; /* taken by the contact between two velocity fields: its impulse's work */
 } mpm_energy;
 
 /* ---- threads: the count a step uses (mpm_threads.c) ---- */

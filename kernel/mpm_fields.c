@@ -19,7 +19,7 @@
  *     both take their centre-of-mass normal velocity (momentum is kept, the
  *     tangential velocities are free: frictionless).  Otherwise they are independent,
  *     so a separated band carries no load and does not close through itself.  The
- *     energy ledger books what the contact removes (mpm_energy.L_contact).
+ *     energy ledger books the work its impulse takes (mpm_energy.L_contact).
  * Before the cut the band's intact ligament must stay bonded: splitting the nodes
  * around the first separated particles decoupled its still-softening neighbours and left
  * their dissipation short (Fig. 6, h 8: D 11.65 against 12.01), so one field is kept
@@ -130,22 +130,28 @@ void mpm_fields_mark(mpm_sim *s)
  * adds c = dr n to its increment: with v its projected velocity and dv its free
  * increment (d = dv + c, v^L = v + dv + c), A = m v . d gains m dr v . n, the sum
  * m |d|^2 gains 2 m dr dv . n + m dr^2, the share bfac of B = -m dv . v^L gains
- * -bfac m dr dv . n; the contact's loss, the kinetic energy its impulse m c takes from
- * the velocity v + dv it acts on, is -m dr ((v + dv) . n + dr / 2). */
+ * -bfac m dr dv . n.  The contact's loss is the work its impulse m c takes from the
+ * record over the step, at the mean of the start and end velocities (the trapezoid, as
+ * the stress work is taken): -m c . (v + v^L) / 2.  Both records end with the same normal
+ * velocity and m1 c1 = -m2 c2, so the pair's end terms cancel and -m dr (v . n) / 2 of
+ * each record is left. */
 static void contact_ledger(mpm_ledger *L, double m, double vn, double dvn, double dr, double bfac)
 {
   L->s_A += m * dr * vn;
   L->s_K += m * dr * (2.0 * dvn + dr);
   L->s_B -= bfac * m * dr * dvn;
-  L->s_C -= m * dr * (vn + dvn + 0.5 * dr);
+  L->s_C -= 0.5 * m * dr * vn;
 }
 
 /* Step 3 and the second field's eq. 4: after grid_update has done the first field.
  * bfac: the share of the strain taken from v^L after it (grid_update's).  The ledger
  * (mpm_step.c, "Energy"): the second field's node terms A, K and B, as grid_nodes sums
  * the first field's, and what the contact changes in both (contact_ledger).  Summed
- * per pair, the contact's loss is mu (w2 - w1)^2 / 2, mu = m1 m2 / (m1 + m2), with w the
- * normal velocities it equalises: a perfectly inelastic, frictionless impact
+ * per pair, the contact's loss is mu (w2L - w1L)(w2 - w1) / 2, mu = m1 m2 / (m1 + m2),
+ * with wL the normal velocities it equalises and w those at the start of the step:
+ * mu (w2 - w1)^2 / 2 in a free impact (a perfectly inelastic, frictionless one), 0 for
+ * fields resting against each other however hard the stress presses them, negative
+ * only where they were parting at the start and the stress brought them together
  * (mpm_energy.L_contact).  Serial in node order: the same sums whatever the threads. */
 void mpm_fields_grid(mpm_sim *s, double bfac)
 {

@@ -63,7 +63,7 @@
  * and the rigid head takes W_head (its kinetic energy change and what its projection
  * removes).  With two velocity fields each field's record at a split node is a node of
  * these sums (mpm_fields.c adds the second field's and the contact's change), and the
- * contact takes L_contact, the kinetic energy its projection removes at the nodes.
+ * contact takes L_contact, the work its impulse takes over the step (mpm_fields.c).
  * Every term is a sum the step forms anyway, over nodes or, in the passes that already
  * touch each particle, over particles, in a fixed order.  So W_ext + KE(0) + SE(0) =
  * KE + SE + W_coh + L_bc + L_flip + L_scheme + W_head + L_contact holds to rounding and

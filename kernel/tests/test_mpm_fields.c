@@ -227,7 +227,8 @@ static void test_mpm_fields_ledger_closes(void **state)
                  sname[scheme], dir > 0 ? "parting" : "meeting");
         assert_true(split_steps == 1000); /* two fields throughout */
         assert_abs(worst, 0.0, 1e-12, what);
-        /* the contact is an inelastic impact: never a gain; a real loss when the blocks
+        /* the contact's work (the trapezoid: mpm_fields.c) on blocks that start the step
+         * approaching is an inelastic impact's, never a gain: a real loss when the blocks
          * meet, next to nothing when they part (only while the gap is still closed at the
          * start, where the shear wave's Poisson motion brings a few nodes together) */
         snprintf(what, sizeof what, "%s, %s, blocks %s: L_contact / E0", shape ? "gimp" : "linear", sname[scheme],
