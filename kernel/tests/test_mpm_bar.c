@@ -299,6 +299,23 @@ static void test_mpm_bar_fig6_decohesion_energy(void **state)
   fig6_decohesion_case(MPM_SCHEME_USL, MPM_SHAPE_LINEAR, MPM_LE_ROW);
 }
 
+/* The Fig. 7 bar at 60 deg (Model 1, snf 1, stf 10, U0 0.375, h 8, 1 ppc) with the
+ * inclined scene files' band method: uGIMP, two fields, Le = row, MUSL. */
+static mpm_scene band_scene(void)
+{
+  mpm_scene sc = fig6_scene();
+  sc.model = MPM_DCOH_MODEL1;
+  sc.alpha_deg = 60.0;
+  sc.imp_factor = 0.9;
+  sc.ppc = 1;
+  sc.margin = 16.0;
+  sc.scheme = MPM_SCHEME_MUSL;
+  sc.shape = MPM_SHAPE_GIMP;
+  sc.fields = MPM_FIELDS_TWO;
+  sc.le_mode = MPM_LE_ROW;
+  return sc;
+}
+
 /* (b') An inclined band at 60 deg (the paper's Fig. 7 scene: Model 1, snf 1, stf 10,
  * U0 0.375) with the band method and Le measured per row: the dissipation is
  * U0 x crack area = U0 H / sin a (eq. 10 over the crack, sec. 3) within 10 %, and
@@ -306,17 +323,8 @@ static void test_mpm_bar_fig6_decohesion_energy(void **state)
 static void test_mpm_bar_inclined_row_energy(void **state)
 {
   (void)state;
-  mpm_scene sc = fig6_scene();
-  sc.model = MPM_DCOH_MODEL1;
-  sc.alpha_deg = 60.0;
-  sc.imp_factor = 0.9;
-  sc.ppc = 1;
-  sc.margin = 16.0;
+  mpm_scene sc = band_scene();
   sc.end_delta = 0.6;
-  sc.scheme = MPM_SCHEME_MUSL;
-  sc.shape = MPM_SHAPE_GIMP;
-  sc.fields = MPM_FIELDS_TWO;
-  sc.le_mode = MPM_LE_ROW;
   mpm_sim *s = make_sim(&sc, 1);
   const long nsteps = lround(sc.end_delta / (sc.speed * sc.dt));
   double Pmax = 0.0, Pend = 0.0;
@@ -347,23 +355,14 @@ static void test_mpm_bar_inclined_row_energy(void **state)
 static void test_mpm_bar_snapback_control(void **state)
 {
   (void)state;
-  mpm_scene sc = fig6_scene();
-  sc.model = MPM_DCOH_MODEL1;
-  sc.alpha_deg = 60.0;
+  mpm_scene sc = band_scene();
   sc.snf = 10.0;
   sc.stf = 1.0;
   sc.s0 = 10.0;
-  sc.imp_factor = 0.9;
   sc.imp_stf_factor = 0.9;
   sc.h = 4.0;
   sc.dt = 0.05;
-  sc.ppc = 1;
-  sc.margin = 16.0;
   sc.end_delta = 1.0;
-  sc.scheme = MPM_SCHEME_MUSL;
-  sc.shape = MPM_SHAPE_GIMP;
-  sc.fields = MPM_FIELDS_TWO;
-  sc.le_mode = MPM_LE_ROW;
   sc.control = MPM_CONTROL_DISSIPATION;
   sc.eta = 4.0;
   mpm_sim *s = make_sim(&sc, 1);
