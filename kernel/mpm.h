@@ -255,12 +255,12 @@ static inline size_t mpm_grid_node(const mpm_grid *g, int i, int j)
 void mpm_grid_free(mpm_grid *g);
 
 /* decohesion.Le = row (mpm_band.c): Le per particle row of the bar, measured from the
- * particles softening in it, k dx |sin a| with k their participation number. */
+ * particles softening in it, k dx |sin a| with k = sum / lam (mpm_band_le). */
 typedef struct {
   int nrow, nstrip;        /* particle rows of the bar; strips of the gather            */
   double idy;              /* 1 / the row height h / sqrt(ppc)                           */
   double wlen;             /* Le per participating particle, dx |sin a| Le_factor        */
-  double *le;              /* each row's Le for this step                               */
+  double le0;              /* a row's Le before any of its particles has softened        */
   double *acc;             /* per strip and row: sum of this step's dlambda (softening), and
                               the largest min(lambda, 1) reached                        */
   double *lam;             /* each row's crack state: the largest min(lambda, 1) in it   */
@@ -274,6 +274,15 @@ static inline int mpm_band_row(const mpm_band *b, double y0)
 {
   const int j = (int)(y0 * b->idy);
   return j < 0 ? 0 : j >= b->nrow ? b->nrow - 1 : j;
+}
+/* Row j's Le for this step: k wlen, k = sum / lam (at least 1), once it has softened. */
+static inline double mpm_band_le(const mpm_band *b, int j)
+{
+  const double lam = b->lam[j], sum = b->sum[j];
+  if (!(lam > 0.0 && sum > 0.0))
+    return b->le0;
+  const double k = sum / lam;
+  return (k > 1.0 ? k : 1.0) * b->wlen;
 }
 
 /* ---- energies (sec. 3 eq. 25 for the surface terms) ---- */
@@ -332,8 +341,8 @@ typedef struct {
 /* Per-strip partial sums of one step (fixed partition: the same sums for any thread
  * count).  Node terms: A = sum m v . d, K = sum m |d|^2, B = -dt sum f . u;
  * particle terms: KP = sum m |dv_p|^2, QS = sum m sigma_new : deps (mpm_step.c,
- * ledger_step). */
-enum { MPM_LED_A = 0, MPM_LED_K, MPM_LED_B, MPM_LED_KP, MPM_LED_QS, MPM_LED_N };
+ * ledger_step); and D, the step's dissipation (sim.D_run, for mpm_control.c). */
+enum { MPM_LED_A = 0, MPM_LED_K, MPM_LED_B, MPM_LED_KP, MPM_LED_QS, MPM_LED_D, MPM_LED_N };
 
 /* ---- the simulation ---- */
 /* Particles whose elastic trial left the elastic domain, waiting for the full
@@ -365,7 +374,6 @@ typedef struct {
    * from the last step, its displacement so far (delta) */
   double vgrip, dvgrip, ugrip;
   double D_run;            /* dissipation so far, summed from the steps' increments       */
-  double *dpart;           /* this step's dissipation increment per strip                 */
   double P_peak;           /* the largest grip load so far                                */
   double ctl_t0, ctl_D0;   /* dissipation control: when and at what D it took over (t0 < 0: not yet) */
   double ctl_int;          /* ... its integral term (a speed)                             */

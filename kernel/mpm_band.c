@@ -9,11 +9,10 @@
  * wide per row at first and localizes later, so a fixed Le over- or under-charges it.
  * A straight crack crosses each particle row of the bar (height dy) once, over a length
  * dy / |sin a|.  If k particles of width dx soften together in a row, the zone's volume
- * per unit crack length is k dx |sin a|: that is the row's Le.  k is the participation
- * number of the row's softening in the step before, sum(dlambda) / max(dlambda), so a
- * particle that softens a little beside the band counts a little.  With Le so, the row
- * dissipates U0 (dy / |sin a|) max(dlambda) per step: the crack's own rate, whatever
- * the zone's width (exact while the same particle leads the row).
+ * per unit crack length is k dx |sin a|: that is the row's Le.  k is measured as
+ * S / lam_r, S the sum of every dlambda the row's particles have softened so far and
+ * lam_r the row's largest lambda, so a particle that softens a little beside the band
+ * counts a little (mpm_band_step has what that charges).
  *
  * Threads: each strip sums its particles' dlambda per row in particle order; the rows'
  * sums are reduced in strip order after the gather, so any thread count gives the
@@ -34,16 +33,14 @@ mpm_band *mpm_band_alloc(int nrow, int nstrip, double dy, double wlen, double le
   b->nstrip = nstrip;
   b->idy = 1.0 / dy;
   b->wlen = wlen;
-  b->le = malloc((size_t)nrow * sizeof *b->le);
+  b->le0 = le0;
   b->acc = calloc((size_t)nrow * (size_t)nstrip * 2, sizeof *b->acc);
   b->lam = calloc((size_t)nrow, sizeof *b->lam);
   b->sum = calloc((size_t)nrow, sizeof *b->sum);
-  if (!b->le || !b->acc || !b->lam || !b->sum) {
+  if (!b->acc || !b->lam || !b->sum) {
     mpm_band_free(b);
     return NULL;
   }
-  for (int j = 0; j < nrow; j++)
-    b->le[j] = le0;
   return b;
 }
 
@@ -51,7 +48,6 @@ void mpm_band_free(mpm_band *b)
 {
   if (!b)
     return;
-  free(b->le);
   free(b->acc);
   free(b->lam);
   free(b->sum);
@@ -60,8 +56,8 @@ void mpm_band_free(mpm_band *b)
 
 /* After the step's gather (strips reduced in order): the row's crack state lam_r is the
  * largest min(lambda, 1) of its particles (1 once one has separated), S the sum of
- * every dlambda its particles have softened, and the next step's Le is k wlen with
- * k = S / lam_r, the number of particles the zone holds, each counted by its share of
+ * every dlambda its particles have softened, and the next step's Le (mpm_band_le) is
+ * k wlen with k = S / lam_r, the number of particles the zone holds, each counted by its share of
  * the leader's lambda.  The row then dissipates U0 (dy / |sin a|) lam_r dS / S: its
  * crack's increment while the zone keeps its shape; a particle that stops softening
  * beside the band still widens the measured zone, so the band's own particles are then
@@ -78,8 +74,6 @@ void mpm_band_step(mpm_band *b)
     }
     b->lam[j] = fmax(b->lam[j], mx);
     b->sum[j] += sum;
-    if (b->lam[j] > 0.0 && b->sum[j] > 0.0)
-      b->le[j] = fmax(b->sum[j] / b->lam[j], 1.0) * b->wlen;
   }
   memset(b->acc, 0, 2 * nr * (size_t)b->nstrip * sizeof *b->acc);
 }

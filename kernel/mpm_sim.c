@@ -117,7 +117,6 @@ void mpm_sim_free(mpm_sim *s)
   free(s->fixx);
   free(s->rowsep);
   free(s->led_part);
-  free(s->dpart);
   mpm_band_free(s->band);
   free(s);
 }
@@ -172,8 +171,7 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
     s->scratch = malloc(np * sizeof(double));
     s->scratch8 = malloc(np);
     s->led_part = calloc((size_t)s->nstrip, sizeof *s->led_part);
-    s->dpart = calloc((size_t)s->nstrip, sizeof *s->dpart);
-    ok = s->strip_start && s->key && s->perm && s->count && s->scratch && s->scratch8 && s->led_part && s->dpart;
+    ok = s->strip_start && s->key && s->perm && s->count && s->scratch && s->scratch8 && s->led_part;
     for (int t = 0; ok && t < s->thr.nmax; t++)
       ok = (s->dws[t] = mpm_dwork_alloc()) != NULL;
     if (ok && sc->fields == MPM_FIELDS_TWO) {

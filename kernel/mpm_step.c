@@ -569,7 +569,7 @@ static __attribute__((noinline)) double constitutive_flush(const mpm_sim *s, int
     if (b && m->model != MPM_DCOH_NONE && !p->sep[k]) { /* Le = row: this row's measured length */
       j = mpm_band_row(b, p->y0[k]);
       mrow = *m;
-      mrow.Le = b->le[j];
+      mrow.Le = mpm_band_le(b, j);
       mrow.kL = mrow.ubar0 / mrow.Le;
       m = &mrow;
     }
@@ -606,7 +606,7 @@ static __attribute__((noinline)) double constitutive_flush(const mpm_sim *s, int
       a[1] = fmax(a[1], o.sep ? 1.0 : fmin(o.lam, 1.0)); /* a separated particle: the row's crack is through */
     }
     p->dis[k] += dd;
-    s->dpart[q] += dd;
+    s->led_part[q][MPM_LED_D] += dd;
     acc->soften += info.path == MPM_DPATH_SOFTEN;
     acc->separate += info.path == MPM_DPATH_SEPARATE;
     acc->bracketed += info.bracketed;
@@ -852,7 +852,8 @@ static mpm_status g2p(mpm_sim *s, int mode, double frac, char *err, size_t errle
 }
 
 /* The step's ledger (see "Energy" above), from the per-strip partial sums, in strip
- * order, and the serial held-node sums: the same bits for any thread count. */
+ * order, and the serial held-node sums: the same bits for any thread count.  The same
+ * sums carry the step's dissipation into sim.D_run (mpm_control.c). */
 static void ledger_step(mpm_sim *s)
 {
   double t[MPM_LED_N] = {0.0};
@@ -872,6 +873,7 @@ static void ledger_step(mpm_sim *s)
   L->L_bc += -L->s_H + (L->s_Wbook - L->s_Wtrue);
   L->L_scheme += L->s_Wtrue - A - K - B - Q + L->s_H - L->s_C;
   L->L_contact += L->s_C;
+  s->D_run += t[MPM_LED_D];
 }
 
 /* The head is rigid: in x it moves with the grip; in y it is free, as one body whose
@@ -1029,10 +1031,6 @@ mpm_status mpm_sim_step(mpm_sim *s, char *err, size_t errlen)
   ledger_step(s);
   s->ugrip += s->vgrip * s->sc.dt;
   s->P_peak = fmax(s->P_peak, s->P_grip);
-  for (int q = 0; q < s->nstrip; q++) { /* strip order: the same sum for any thread count */
-    s->D_run += s->dpart[q];
-    s->dpart[q] = 0.0;
-  }
   s->step++;
   s->t = s->step * s->sc.dt;
   return MPM_OK;
