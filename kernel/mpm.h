@@ -77,6 +77,12 @@ enum { MPM_SHAPE_LINEAR = 0, MPM_SHAPE_GIMP = 1 };
 /* Velocity fields per node: ONE, the paper's; TWO, a second field at the nodes next to
  * a separated band, one per side of it (mpm_fields.c). */
 enum { MPM_FIELDS_ONE = 0, MPM_FIELDS_TWO = 1 };
+/* grid.node_mass: how a node's v^L takes its acceleration (eq. 4) where the strain is
+ * taken from v^L (usl, usavg) on bilinear shapes.  LUMPED (the paper): v^L = v + dt f / m
+ * at every node.  LIMITED: a node whose stiffness-to-mass bound exceeds what the step
+ * can integrate takes the acceleration with a mass floor in v^L (mpm_step.c, "Nodal
+ * mass limit"); the particles' velocity increment keeps the lumped mass. */
+enum { MPM_NODEMASS_LUMPED = 0, MPM_NODEMASS_LIMITED = 1 };
 
 /* ---- scene: everything a run needs, as plain numbers (filled by verify/scene.c) ---- */
 typedef struct {
@@ -104,6 +110,7 @@ typedef struct {
   int fields;            /* MPM_FIELDS_ONE (the paper) or MPM_FIELDS_TWO: one velocity field
                             per side of a separated band (mpm_fields.c)              */
   int bc;                /* MPM_BC_* (how a held node enters eq. 6)                   */
+  int node_mass;         /* MPM_NODEMASS_LUMPED (default, the paper) or _LIMITED        */
   int head;              /* MPM_HEAD_RIGID (default) or MPM_HEAD_NONE                 */
   int vib_mode;          /* > 0: start from axial mode m, vx += vib_amp sin(m pi X / L) */
   double vib_amp;        /* its velocity amplitude                                    */

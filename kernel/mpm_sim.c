@@ -75,6 +75,7 @@ mpm_status mpm_scene_check(const mpm_scene *sc, char *err, size_t errlen)
   if (!(sc->margin >= 0.0)) BAD("grid.margin must be >= 0");
   if (sc->scheme < MPM_SCHEME_USL || sc->scheme > MPM_SCHEME_USAVG) BAD("time.scheme must be usl, musl, usf or usavg");
   if (sc->bc < MPM_BC_LAGRANGIAN || sc->bc > MPM_BC_CONSISTENT) BAD("grid.bc must be lagrangian, both or consistent");
+  if (sc->node_mass != MPM_NODEMASS_LUMPED && sc->node_mass != MPM_NODEMASS_LIMITED) BAD("grid.node_mass must be lumped or limited");
   if (sc->head != MPM_HEAD_RIGID && sc->head != MPM_HEAD_NONE) BAD("loading.head must be rigid or none");
   if (sc->vib_mode < 0) BAD("vibration.mode must be >= 0");
   if (sc->vib_mode > 0 && !isfinite(sc->vib_amp)) BAD("vibration.amplitude must be finite");

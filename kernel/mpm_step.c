@@ -70,6 +70,26 @@
  * the constitutive update's error; what does not close is the run's energy residual
  * (summary.json).
  *
+ * Nodal mass limit (grid.node_mass = limited; usl and usavg, bilinear shapes).  Where
+ * the strain is taken from v^L = v + dt f / m, a node that a particle barely touches
+ * (weight N -> 0 as it nears the next node, while its gradient stays 1 / h) has a
+ * stiffness-to-mass ratio growing as 1 / N, and the explicit step amplifies whatever
+ * stress the particle holds: the cell-crossing instability of USL at a free surface
+ * (Fig. 6 at h 2, 1 ppc: after the band has cut the bar, the gripped part's free end
+ * column fails at delta 3.05, 3.18, 3.21 with dt, dt / 2, dt / 4, i.e. where N falls
+ * below 0.087, 0.02, 0.005: the threshold scales with dt^2).  The bound used: node i's
+ * row sum of the stiffness (Gershgorin) is at most k_i = E1 sum_p V_p a_ip b_p, with
+ * a_ip = |Gx_ip| + |Gy_ip|, b_p = sum_j a_jp = 2 / hx + 2 / hy, and the step integrates
+ * the node stably while k_i / m_i <= 4 / dt^2.  Past that, v^L takes the acceleration
+ * with the mass m* = k_i / rmax, rmax = max(4 / dt^2, the ratio of a node inside a
+ * uniformly filled lattice), so the bar's interior never changes at any dt the CFL bound
+ * allows.  The particles' velocity increment keeps the lumped mass (momentum is kept
+ * exactly; positions and strain move with v^L, as before), and the ledger's stress power
+ * takes the strain's extra share, -dt f . (v^L* - v^L).  The bound predicts the onset
+ * above within a factor of two (0.17 against 0.087 at fig6.ini's dt).  Inside a body
+ * the limit never binds: Fig. 6 at h 2, 1 ppc gives the lumped step's load.csv bit for
+ * bit up to delta 2.70, past the cut, until the free end nears a node.
+ *
  * Threads: the scatters run strip by strip, even strips then odd (mpm_sort.c); the
  * gathers are independent per particle.  Results are bit-for-bit the same for any
  * number of threads.
@@ -136,6 +156,25 @@ static inline void cell_sums_flush(const cell_sums *c, mpm_node *nd, size_t nny)
   node_add(nd + c->cur + nny + 1, c->c11);
 }
 
+/* grid.node_mass = limited: the cell's sums sv = sum V, sx = sum V wx1, sy = sum V wy1
+ * of its particles, added at the flush to lane qx of its corners as their shares of
+ * sum_p V_p (|Gx_ip| + |Gy_ip|) = sum V (wy / hx + wx / hy) ("Nodal mass limit"). */
+typedef struct {
+  double sv, sx, sy;
+} cell_vols;
+
+static inline void cell_vols_flush(cell_vols *c, size_t cur, mpm_node *nd, size_t nny, double ihx, double ihy)
+{
+  if (cur == SIZE_MAX)
+    return;
+  const double x0 = ihy * (c->sv - c->sx), x1 = ihy * c->sx, y0 = ihx * (c->sv - c->sy), y1 = ihx * c->sy;
+  nd[cur].qx += x0 + y0;
+  nd[cur + nny].qx += x1 + y0;
+  nd[cur + 1].qx += x0 + y1;
+  nd[cur + nny + 1].qx += x1 + y1;
+  c->sv = c->sx = c->sy = 0.0;
+}
+
 static inline void cell_sums_move(cell_sums *c, mpm_node *nd, size_t nny, size_t n00)
 {
   if (n00 == c->cur)
@@ -154,7 +193,8 @@ static inline void cell_sums_move(cell_sums *c, mpm_node *nd, size_t nny, size_t
  *   c01 = wx0 T1 + R1,  c11 = wx1 T1 - R1,  T1 = wy1 P - FY,  R1 = wy1 FX.
  * The particles are sorted by cell, so the shares are summed per cell (cell_sums). */
 static inline __attribute__((always_inline)) int p2g_range_impl(const mpm_grid *gg, const mpm_particles *p,
-                                                                 size_t a, size_t b, const int two, const int body)
+                                                                 size_t a, size_t b, const int two, const int body,
+                                                                 const int lim)
 {
   const mpm_grid geo = *gg, *g = &geo; /* a local copy: no store below can alias it */
   const size_t nny = (size_t)g->nny;
@@ -165,6 +205,7 @@ static inline __attribute__((always_inline)) int p2g_range_impl(const mpm_grid *
   const double *restrict sxx = p->sxx, *restrict syy = p->syy, *restrict sxy = p->sxy;
   const mpm_fields *fld = g->fld;
   cell_sums cs = {.cur = SIZE_MAX};
+  cell_vols cv = {0.0, 0.0, 0.0};
   int out = 0;
   for (size_t k = a; k < b; k++) {
     mpm_shape sh;
@@ -186,10 +227,18 @@ static inline __attribute__((always_inline)) int p2g_range_impl(const mpm_grid *
       double w[4];
       mpm_shape_stencil(&sh, nny, n, w);
       const int side = mpm_fields_side_w(fld, n, w, 4, x[k], y[k], g->h);
-      node_add(mpm_fields_node(fld, nd, n[0], side), sh.wx0 * T0 + R0);
-      node_add(mpm_fields_node(fld, nd, n[1], side), sh.wx1 * T0 - R0);
-      node_add(mpm_fields_node(fld, nd, n[2], side), sh.wx0 * T1 + R1);
-      node_add(mpm_fields_node(fld, nd, n[3], side), sh.wx1 * T1 - R1);
+      mpm_v8 e0 = {0.0}, e1 = {0.0}, e2 = {0.0}, e3 = {0.0}; /* lane 5, per corner */
+      if (lim) {
+        const double Vk = V[k];
+        e0[5] = Vk * (sh.wy0 * ihx + sh.wx0 * ihy);
+        e1[5] = Vk * (sh.wy0 * ihx + sh.wx1 * ihy);
+        e2[5] = Vk * (sh.wy1 * ihx + sh.wx0 * ihy);
+        e3[5] = Vk * (sh.wy1 * ihx + sh.wx1 * ihy);
+      }
+      node_add(mpm_fields_node(fld, nd, n[0], side), sh.wx0 * T0 + R0 + e0);
+      node_add(mpm_fields_node(fld, nd, n[1], side), sh.wx1 * T0 - R0 + e1);
+      node_add(mpm_fields_node(fld, nd, n[2], side), sh.wx0 * T1 + R1 + e2);
+      node_add(mpm_fields_node(fld, nd, n[3], side), sh.wx1 * T1 - R1 + e3);
       continue;
     }
     /* body (manufactured solutions only): f_i += m_p b(X_p, t) N_ip in the fx lane */
@@ -197,6 +246,17 @@ static inline __attribute__((always_inline)) int p2g_range_impl(const mpm_grid *
     const mpm_v8 P = {mm, mm * vx[k], mm * vy[k], fb, 0.0, 0.0, 0.0, 0.0};
     const mpm_v8 T0 = sh.wy0 * P + FY, R0 = sh.wy0 * FX;
     const mpm_v8 T1 = sh.wy1 * P - FY, R1 = sh.wy1 * FX;
+    if (lim && sh.n00 != cs.cur) { /* after the cell's vector flush: a narrower load
+                                      * than the store before it forwards */
+      const size_t old = cs.cur;
+      cell_sums_move(&cs, nd, nny, sh.n00);
+      cell_vols_flush(&cv, old, nd, nny, ihx, ihy);
+    }
+    if (lim) {
+      cv.sv += V[k];
+      cv.sx += V[k] * sh.wx1;
+      cv.sy += V[k] * sh.wy1;
+    }
     cell_sums_move(&cs, nd, nny, sh.n00);
     cs.c00 += sh.wx0 * T0 + R0;
     cs.c10 += sh.wx1 * T0 - R0;
@@ -204,6 +264,8 @@ static inline __attribute__((always_inline)) int p2g_range_impl(const mpm_grid *
     cs.c11 += sh.wx1 * T1 - R1;
   }
   cell_sums_flush(&cs, nd, nny);
+  if (lim)
+    cell_vols_flush(&cv, cs.cur, nd, nny, ihx, ihy);
   return out;
 }
 
@@ -211,14 +273,14 @@ static inline __attribute__((always_inline)) int p2g_range_impl(const mpm_grid *
  * the new momentum m_p v_p N_ip summed into lanes qx, qy.  The pass reads lanes that
  * it never writes, so one pass does both; as it scatters, it runs by colour.  Returns
  * the ledger's sum m |dv_p|^2 over the range. */
-static int p2g_range(const mpm_grid *g, const mpm_particles *p, size_t a, size_t b)
+static int p2g_range(const mpm_grid *g, const mpm_particles *p, size_t a, size_t b, int lim)
 {
   /* one loop without the two-field test, for every step before a band is cut */
   if (g->fld && g->fld->nsplit)
-    return p2g_range_impl(g, p, a, b, 1, 0);
+    return lim ? p2g_range_impl(g, p, a, b, 1, 0, 1) : p2g_range_impl(g, p, a, b, 1, 0, 0);
   if (g->body_now != 0.0) /* a manufactured solution's body force: its own loop */
-    return p2g_range_impl(g, p, a, b, 0, 1);
-  return p2g_range_impl(g, p, a, b, 0, 0);
+    return p2g_range_impl(g, p, a, b, 0, 1, 0);
+  return lim ? p2g_range_impl(g, p, a, b, 0, 0, 1) : p2g_range_impl(g, p, a, b, 0, 0, 0);
 }
 
 static inline __attribute__((always_inline)) double musl_velocity_range_impl(const mpm_grid *gg, mpm_particles *p,
@@ -285,11 +347,47 @@ static double musl_velocity_range(const mpm_grid *g, mpm_particles *p, size_t a,
 
 /* Scatter over the strips, colour by colour (deterministic, no atomics).  which = 0:
  * eqs. 2-3; which = 1: MUSL velocities and their momentum into lanes (qx, qy). */
+/* grid.node_mass = limited applies where the strain is taken from v^L (usl, usavg) on
+ * bilinear shapes (uGIMP's gradient vanishes with its weight at the support's edge, so
+ * a node that a particle barely touches is no stiffer than any other). */
+static int node_limit_on(const mpm_sim *s)
+{
+  return s->sc.node_mass == MPM_NODEMASS_LIMITED && s->sc.shape == MPM_SHAPE_LINEAR &&
+         (s->sc.scheme == MPM_SCHEME_USL || s->sc.scheme == MPM_SCHEME_USAVG);
+}
+
+/* The nodal mass limit's constants ("Nodal mass limit"): k_i = ck sum_p V_p a_ip bounds
+ * the row sum of node i's stiffness (Gershgorin), with a_ip = |Gx_ip| + |Gy_ip|,
+ * ck = E1 sum_j a_jp = E1 (2 / hx + 2 / hy) for bilinear hats (E1 = E / (1 - nu^2), the
+ * largest entry of the plane-stress stiffness, over the materials).  The step integrates
+ * a node stably while k_i / m_i <= 4 / dt^2; a node inside a uniformly filled lattice has
+ * k / m = ck 2 (hx + hy) / (rho hx hy), and the limit never binds below that, so the
+ * bar's interior keeps the lumped mass at any dt the CFL bound allows.  1 / rmax out. */
+static void node_limit_consts(const mpm_sim *s, double *ck, double *irmax)
+{
+  const mpm_grid *g = s->g;
+  double e1 = 0.0;
+  for (int i = 0; i < 3; i++) /* MPM_MAT_BAR, _IMP, _HEAD */
+    e1 = fmax(e1, s->mat[i].E1);
+  *ck = e1 * 2.0 * (g->ihx + g->ihy);
+  const double dt = s->sc.dt, hx = 1.0 / g->ihx, hy = 1.0 / g->ihy;
+  const double rref = *ck * 2.0 * (hx + hy) * s->mat[MPM_MAT_BAR].irho * g->ihx * g->ihy;
+  *irmax = 1.0 / fmax(4.0 / (dt * dt), rref);
+}
+
+/* The excess of v^L over the lumped one at a node, as a multiple of the FLIP increment:
+ * m / m* - 1 with m* = ck sum V a / rmax (lane qx: sum V a) past the limit, else 0. */
+static inline double node_limit_excess(const mpm_node *n, double ck, double irmax)
+{
+  const double mstar = ck * n->qx * irmax;
+  return mstar > n->m ? n->m / mstar - 1.0 : 0.0;
+}
+
 static int scatter(mpm_sim *s, int which)
 {
   mpm_grid *g = s->g;
   mpm_particles *p = s->p;
-  const int gimp = s->sc.shape == MPM_SHAPE_GIMP;
+  const int gimp = s->sc.shape == MPM_SHAPE_GIMP, lim = node_limit_on(s);
   double lcx = 0.0, lcy = 0.0;
   if (gimp)
     mpm_gimp_lc(s, &lcx, &lcy);
@@ -301,7 +399,7 @@ static int scatter(mpm_sim *s, int which)
     for (int q = colour; q < s->nstrip; q += 2) {
       const size_t a = s->strip_start[q], b = s->strip_start[q + 1];
       if (which == 0)
-        out |= gimp ? mpm_gimp_p2g_range(g, p, a, b, lcx, lcy) : p2g_range(g, p, a, b);
+        out |= gimp ? mpm_gimp_p2g_range(g, p, a, b, lcx, lcy) : p2g_range(g, p, a, b, lim);
       else if (gimp)
         s->led_part[q][MPM_LED_KP] = mpm_gimp_musl_range(g, p, a, b, lcx, lcy);
       else
@@ -330,10 +428,14 @@ typedef struct {
  * treatment's v^L = v_bc and increment d, books the ledger's held-node terms (replacing
  * the free-node ones grid_update summed for it), and returns the reaction's impulse,
  * R dt = m (v_bc - v^L_free) for LAGRANGIAN and BOTH, m d - dt f for CONSISTENT. */
-static inline double hold(int bc, mpm_node *n, int y, double vbc, double dvbc, double bfac, hold_sums *h)
+static inline double hold(int bc, mpm_node *n, int y, double vbc, double dvbc, double bfac, const double lim[2],
+                          hold_sums *h)
 {
   double *lp = y ? &n->py : &n->px, *lf = y ? &n->fy : &n->fx;
-  const double m = n->m, vL = *lp, dv = *lf, v = vL - dv;
+  /* lim (grid.node_mass = limited: ck, 1 / rmax; else NULL): v^L's excess over the
+   * lumped one, (m / m* - 1) dv, is not the node's velocity */
+  const double m = n->m, vL = *lp, dv = *lf;
+  const double v = vL - dv - (lim && m > 0.0 ? node_limit_excess(n, lim[0], lim[1]) * dv : 0.0);
   double d, R;
   if (bc == MPM_BC_LAGRANGIAN) {
     d = dv + (vbc - vL); /* = v_bc - v: the FLIP increment pulls toward v_bc */
@@ -358,22 +460,36 @@ static inline double hold(int bc, mpm_node *n, int y, double vbc, double dvbc, d
  * A, K and bfac B (B the stress power of the share bfac of the strain taken from v^L).
  * usl (bfac = 1): B = -(A + K) exactly, and dt f . dv = m |dv|^2.  A scalar loop: with
  * AVX-512 a vectorised one gathers and scatters the 64-byte records, which was slower. */
-static inline __attribute__((always_inline)) void grid_nodes(mpm_sim *s, double bfac, const int usl)
+static inline __attribute__((always_inline)) void grid_nodes(mpm_sim *s, double bfac, const int usl,
+                                                             const int lim)
 {
   mpm_grid *g = s->g;
   const double dt = s->sc.dt, mmin = MPM_MASS_EPS * s->p->m[0];
+  /* Nodal mass limit: the floor is m* = ck sum V a / rmax (lane qx holds sum V a) */
+  double ck = 0.0, irmax = 0.0;
+  if (lim)
+    node_limit_consts(s, &ck, &irmax);
 #ifdef _OPENMP
 #pragma omp parallel for schedule(static) num_threads(s->nthreads)
 #endif
   for (int q = 0; q < s->nstrip; q++) {
     long k0, k1;
     strip_nodes(s, q, &k0, &k1);
-    double A = 0.0, K = 0.0, B = 0.0;
+    double A = 0.0, K = 0.0, B = 0.0, Bc = 0.0;
     for (long k = k0; k < k1; k++) {
       mpm_node *n = &g->nd[k];
       if (n->m > mmin) {
         const double im = 1.0 / n->m;
         const double dvx = dt * n->fx * im, dvy = dt * n->fy * im;
+        /* lim: v^L takes the acceleration with the floor m* past the limit; the excess
+         * e over the lumped v^L (node_limit_excess: hold() finds it again) */
+        double ex = 0.0, ey = 0.0;
+        if (lim && __builtin_expect(ck * n->qx * irmax > n->m, 0)) {
+          const double r = node_limit_excess(n, ck, irmax);
+          ex = r * dvx;
+          ey = r * dvy;
+          Bc -= n->m * (dvx * ex + dvy * ey); /* the strain's extra stress power -dt f . e */
+        }
         if (usl) { /* A = m v . dv = p . dv; K = m |dv|^2 = dt f . dv */
           A += n->px * dvx + n->py * dvy;
           K += dt * (n->fx * dvx + n->fy * dvy);
@@ -383,8 +499,8 @@ static inline __attribute__((always_inline)) void grid_nodes(mpm_sim *s, double 
           K += mdx * dvx + mdy * dvy;
           B -= mdx * (vx + dvx) + mdy * (vy + dvy);
         }
-        n->px = n->px * im + dvx;
-        n->py = n->py * im + dvy;
+        n->px = n->px * im + dvx + ex;
+        n->py = n->py * im + dvy + ey;
         n->fx = dvx;
         n->fy = dvy;
       } else {
@@ -393,7 +509,7 @@ static inline __attribute__((always_inline)) void grid_nodes(mpm_sim *s, double 
     }
     s->led_part[q][MPM_LED_A] += A;
     s->led_part[q][MPM_LED_K] += K;
-    s->led_part[q][MPM_LED_B] += usl ? -(A + K) : bfac * B;
+    s->led_part[q][MPM_LED_B] += usl ? -(A + K) + Bc : bfac * (B + Bc);
   }
 }
 
@@ -405,10 +521,14 @@ static void grid_update(mpm_sim *s, double bfac)
 {
   mpm_grid *g = s->g;
   const double dt = s->sc.dt;
+  const int lim = node_limit_on(s);
+  double lc[2] = {0.0, 0.0};
+  if (lim)
+    node_limit_consts(s, &lc[0], &lc[1]);
   if (bfac == 1.0)
-    grid_nodes(s, 1.0, 1);
+    lim ? grid_nodes(s, 1.0, 1, 1) : grid_nodes(s, 1.0, 1, 0);
   else
-    grid_nodes(s, bfac, 0);
+    lim ? grid_nodes(s, bfac, 0, 1) : grid_nodes(s, bfac, 0, 0);
   /* The constraints (sc.bc; mpm.h), serial in node order.  Tension is positive in both
    * loads. */
   const double vg = -s->vgrip;
@@ -416,10 +536,10 @@ static void grid_update(mpm_sim *s, double bfac)
   double Rg = 0.0, Rf = 0.0;
   hold_sums h = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
   for (int q = 0; q < s->ngrip; q++)
-    Rg += hold(bc, &g->nd[s->grip[q]], 0, vg, -s->dvgrip, bfac, &h);
+    Rg += hold(bc, &g->nd[s->grip[q]], 0, vg, -s->dvgrip, bfac, lim ? lc : NULL, &h);
   for (int q = 0; q < s->nfixx; q++)
-    Rf += hold(bc, &g->nd[s->fixx[q]], 0, 0.0, 0.0, bfac, &h);
-  hold(bc, &g->nd[s->fixy], 1, 0.0, 0.0, bfac, &h);
+    Rf += hold(bc, &g->nd[s->fixx[q]], 0, 0.0, 0.0, bfac, lim ? lc : NULL, &h);
+  hold(bc, &g->nd[s->fixy], 1, 0.0, 0.0, bfac, lim ? lc : NULL, &h);
   mpm_ledger *L = &s->led;
   L->s_A += h.A;
   L->s_K += h.K;

@@ -55,6 +55,7 @@ const keydef ver_scene_keys[] = {
   {"grid", "motion", K_MOTION, OFF(grid_motion), 0, 0, 0, 0, MPM_GRID_FIXED, "fixed (the paper) or stretch (follows the bar's mean stretch)"},
   {"grid", "fields", K_FIELDS, OFF(fields), 0, 0, 0, 0, MPM_FIELDS_ONE, "one (the paper) or two (one per side of a band once it has cut the bar)"},
   {"grid", "shape", K_SHAPE, OFF(shape), 0, 0, 0, 0, MPM_SHAPE_LINEAR, "linear (the paper's bilinear hats) or gimp (uGIMP)"},
+  {"grid", "node_mass", K_NODEMASS, OFF(node_mass), 0, 0, 0, 0, MPM_NODEMASS_LUMPED, "lumped (the paper) or limited (a mass floor in v^L where a node is stiffer than the step can integrate; usl and usavg, linear shapes)"},
   {"grid", "bc", K_BC, OFF(bc), 0, 0, 0, 0, MPM_BC_LAGRANGIAN, "lagrangian (on v^L only), both (on v and v^L) or consistent"},
   {"loading", "head", K_HEAD, OFF(head), 0, 0, 0, 0, MPM_HEAD_RIGID, "rigid (the paper's rigid head) or none (the node column x = 0 alone)"},
   {"vibration", "mode", K_INT, OFF(vib_mode), 0, 0, 1000, LO_CLOSED | HI_CLOSED, 0, "0 (none) or the axial mode m, 1 to 1000, to start from"},
@@ -87,6 +88,7 @@ static const struct {
   {K_MOTION, "fixed", MPM_GRID_FIXED}, {K_MOTION, "stretch", MPM_GRID_STRETCH},
   {K_SHAPE, "linear", MPM_SHAPE_LINEAR}, {K_SHAPE, "gimp", MPM_SHAPE_GIMP},
   {K_FIELDS, "one", MPM_FIELDS_ONE}, {K_FIELDS, "two", MPM_FIELDS_TWO},
+  {K_NODEMASS, "lumped", MPM_NODEMASS_LUMPED}, {K_NODEMASS, "limited", MPM_NODEMASS_LIMITED},
 };
 #define NENUMS (sizeof ENUMS / sizeof ENUMS[0])
 

@@ -15,7 +15,7 @@
 #include "mpm.h"
 
 #define VER_MAX_SNAP 16
-#define VER_NKEYS 40
+#define VER_NKEYS 44
 #define VER_NSECT 12
 #define VER_MAX_OVER 32
 
