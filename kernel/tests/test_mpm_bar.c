@@ -84,14 +84,30 @@ static void run_steps(mpm_sim *s, long n)
 /* (a) Without boundary conditions the grid forces sum to zero, so the particles' total
  * momentum is that of the start, to rounding (scale: sum m |v|), under a translating,
  * rotating and random velocity field that also shears and stresses the bar. */
-static void momentum_case(int scheme, int shape)
+/* A free 16 x 8 block on an h 2 grid (the Fig. 6 material), for the free-body tests. */
+static mpm_scene block_scene(int ppc, double margin)
 {
   mpm_scene sc = fig6_scene();
   sc.L = 16.0;
   sc.H = 8.0;
   sc.h = 2.0;
-  sc.ppc = 4;
-  sc.margin = 6.0;
+  sc.ppc = ppc;
+  sc.margin = margin;
+  return sc;
+}
+
+/* No grip, no fixed end: the fixed-y node is moved to a corner of the padding, which
+ * never carries mass. */
+static void release_block(mpm_sim *s)
+{
+  s->ngrip = 0;
+  s->nfixx = 0;
+  s->fixy = 0;
+}
+
+static void momentum_case(int scheme, int shape)
+{
+  mpm_scene sc = block_scene(4, 6.0);
   sc.scheme = scheme;
   sc.shape = shape;
   sc.dt = 0.2 * sqrt(2.0) * mpm_scene_dt_crit(&sc); /* 0.2 h / c, as written for */
@@ -103,9 +119,7 @@ static void momentum_case(int scheme, int shape)
     p->vx[k] = 0.03 - om * (p->y[k] - cy) + 0.005 * (urand(&seed) - 0.5);
     p->vy[k] = -0.02 + om * (p->x[k] - cx) + 0.005 * (urand(&seed) - 0.5);
   }
-  s->ngrip = 0;
-  s->nfixx = 0;
-  s->fixy = 0; /* a corner node of the padding: never carries mass (checked below) */
+  release_block(s); /* checked below: the corner never carries mass */
   double px0, py0, scale = 0.0;
   mpm_particles_momentum(p, &px0, &py0);
   for (size_t k = 0; k < p->n; k++)
@@ -306,22 +320,15 @@ static void test_mpm_bar_fig6_decohesion_energy(void **state)
  * nears a node, the node beyond it holds a sliver of mass N m with the full gradient
  * 1 / h, and v^L = v + dt f / m there drives the particle's strain with gain growing as
  * 1 / N: the lumped step (the paper's) amplifies the seed until KE + SE is many times
- * its start (or throws a particle off the grid); with the limit it stays at its start.  Both are asserted, so that the
- * case is known to exercise what the limit is for. */
+ * its start (or throws a particle off the grid); with the limit it stays at its start.
+ * Both are asserted, so that the case is known to exercise what the limit is for. */
 static double node_mass_case(int node_mass)
 {
-  mpm_scene sc = fig6_scene();
-  sc.L = 16.0;
-  sc.H = 8.0;
-  sc.h = 2.0;
-  sc.ppc = 1;
-  sc.margin = 8.0;
+  mpm_scene sc = block_scene(1, 8.0);
   sc.dt = 0.025; /* fig6.ini's dt at h 2: c dt / h = 0.41 */
   sc.node_mass = node_mass;
   mpm_sim *s = make_sim(&sc, 1);
-  s->ngrip = 0;
-  s->nfixx = 0;
-  s->fixy = 0; /* a corner node of the padding: never carries mass */
+  release_block(s);
   mpm_particles *p = s->p;
   uint64_t seed = 77;
   for (size_t k = 0; k < p->n; k++) {
