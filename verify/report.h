@@ -8,6 +8,9 @@
 #ifndef DELAM_REPORT_H
 #define DELAM_REPORT_H
 
+/* --set overrides a case may carry (the paper's method has six). */
+#define REP_NSET 8
+
 #include <stddef.h>
 
 #include "ana.h"
@@ -32,13 +35,13 @@ enum { REP_STABLE = 0, REP_NOISY = 1, REP_BLOWN = 2 };
 
 typedef struct {
   /* what to run */
-  char id[96];          /* case id: <scene>-h<h>-ppc<n>[-u<until>][-dt<dt>][-<tag>]          */
+  char id[128];         /* case id: <scene>-h<h>-ppc<n>[-u<until>][-dt<dt>][-<tag>]          */
   char scene[32];       /* scene name, data/scenes/<scene>.ini                               */
   double h;             /* grid spacing                                                      */
   int ppc;              /* particles per cell                                                */
   double dt;            /* time step; 0: the scene's, scaled with h                          */
   double until;         /* --until; 0: the scene's stop rule                                  */
-  char set[4][64];      /* --set overrides                                                    */
+  char set[REP_NSET][64]; /* --set overrides                                                  */
   int nset;
   int allow_unstable;   /* pass --allow-unstable; a failed run is then a result, not an error */
   int role;             /* REP_* mask                                                         */

@@ -54,13 +54,13 @@ int ver_report_add(rep_ctx *r, const char *scene, double h, int ppc, double dt, 
 int ver_report_add_sets(rep_ctx *r, const char *scene, double h, int ppc, double dt, double until,
                         const char *const *sets, int nset, int role, double tag)
 {
-  char id[96];
+  char id[128];
   snprintf(id, sizeof id, "%s-h%g-ppc%d", scene, h, ppc);
   if (until > 0)
     snprintf(id + strlen(id), sizeof id - strlen(id), "-u%g", until);
   if (dt > 0)
     snprintf(id + strlen(id), sizeof id - strlen(id), "-dt%.4g", dt);
-  for (int j = 0; j < nset && j < 4; j++)
+  for (int j = 0; j < nset && j < REP_NSET; j++)
     id_suffix(id, sizeof id, sets[j]);
   const int k = ver_report_find(r, id);
   if (k >= 0) {
@@ -77,7 +77,7 @@ int ver_report_add_sets(rep_ctx *r, const char *scene, double h, int ppc, double
   c->ppc = ppc;
   c->dt = dt;
   c->until = until;
-  for (int j = 0; j < nset && j < 4; j++)
+  for (int j = 0; j < nset && j < REP_NSET; j++)
     snprintf(c->set[c->nset++], sizeof c->set[0], "%s", sets[j]);
   c->allow_unstable = (role & REP_STAB) != 0;
   c->role = role;
@@ -279,7 +279,7 @@ static int plan_runs(rep_ctx *r, rep_case **todo, int *reused)
   return ntodo;
 }
 
-enum { NARG = 32, ALEN = REP_PATH + 64 };
+enum { NARG = 40, ALEN = REP_PATH + 64 };
 
 /* The `delam run` command line of case c in av (strings in s, NARG x ALEN). */
 static void run_argv(const rep_ctx *r, const rep_case *c, char **av, char *s)
