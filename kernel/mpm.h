@@ -42,7 +42,7 @@ enum { MPM_DCOH_NONE = 0, MPM_DCOH_MODEL1 = 1, MPM_DCOH_MODEL2 = 2 };
  * the new stress (Bardenhagen 2002).  USAVG: half the strain increment as USF before
  * the forces, half as USL after them (Nairn 2003).  mpm_step.c has the energy of each. */
 enum { MPM_SCHEME_USL = 0, MPM_SCHEME_MUSL = 1, MPM_SCHEME_USF = 2, MPM_SCHEME_USAVG = 3 };
-/* How a held node enters the FLIP update (eq. 6), mpm_step.c grid_update.
+/* How a held node enters the FLIP update (eq. 6), mpm_nodes.c mpm_nodes_update.
  * LAGRANGIAN: the constraint is set on v^L only, so the increment at a held node is
  *   v_bc - v_i, with v_i the projected velocity: it pulls the particles there toward the
  *   held velocity every step (a damper: mpm_ledger.L_bc).
@@ -340,7 +340,7 @@ typedef struct {
   double L_bc, L_flip, L_scheme, W_head, L_contact;
   double KE_head0;         /* the head's kinetic energy at the start                   */
   double head_reset;       /* kinetic energy the head's rigid projection removed so far */
-  /* this step's held-node and serial sums (mpm_step.c; reset every step) */
+  /* this step's held-node and serial sums (mpm_nodes.c, mpm_step.c; reset every step) */
   double s_A, s_K, s_B, s_Bheld, s_Bstart, s_H, s_Wtrue, s_Wbook;
   double s_C;              /* the contact's loss this step (mpm_fields.c)               */
 } mpm_ledger;

@@ -143,8 +143,8 @@ static void contact_ledger(mpm_ledger *L, double m, double vn, double dvn, doubl
   L->s_C -= 0.5 * m * dr * vn;
 }
 
-/* Step 3 and the second field's eq. 4: after grid_update has done the first field.
- * bfac: the share of the strain taken from v^L after it (grid_update's).  The ledger
+/* Step 3 and the second field's eq. 4: after mpm_nodes_update has done the first field.
+ * bfac: the share of the strain taken from v^L after it (mpm_nodes_update's).  The ledger
  * (mpm_step.c, "Energy"): the second field's node terms A, K and B, as grid_nodes sums
  * the first field's, and what the contact changes in both (contact_ledger).  Summed
  * per pair, the contact's loss is mu (w2L - w1L)(w2 - w1) / 2, mu = m1 m2 / (m1 + m2),
@@ -209,7 +209,7 @@ void mpm_fields_grid(mpm_sim *s, double bfac)
 }
 
 /* USF and USAVG: the second field's projected velocity v = p / m into (fx, fy), as
- * grid_start_velocity does for the first, and the ledger's stress power of that share
+ * mpm_nodes_start_velocity does for the first, and the ledger's stress power of that share
  * (frac) of the strain increment, -frac dt f . v, from the forces still in the lanes. */
 void mpm_fields_start(mpm_sim *s, double frac)
 {
@@ -231,10 +231,10 @@ void mpm_fields_start(mpm_sim *s, double frac)
   s->led.s_B += B;
 }
 
-/* MUSL: the second field's v' = q / m into (fx, fy), as grid_musl_velocity does for
+/* MUSL: the second field's v' = q / m into (fx, fy), as mpm_nodes_musl_velocity does for
  * the first, and the ledger's stress power B = -dt f . v' = -m dv . v' (q = m v') at the
  * split nodes: the second field's, and, where the contact acted, the first field's
- * correction (grid_musl_velocity summed -m d . v' with d = dv + c). */
+ * correction (mpm_nodes_musl_velocity summed -m d . v' with d = dv + c). */
 void mpm_fields_musl(mpm_sim *s)
 {
   mpm_fields *f = s->g->fld;
