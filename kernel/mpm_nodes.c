@@ -162,8 +162,8 @@ static inline __attribute__((always_inline)) void grid_nodes(mpm_sim *s, double 
         /* lim: v^L takes the acceleration with the floor m* past the limit; the excess
          * e over the lumped v^L (node_limit_excess: hold() finds it again) */
         double ex = 0.0, ey = 0.0;
-        if (lim && __builtin_expect(ck * n->qx * irmax > n->m, 0)) {
-          const double r = node_limit_excess(n, ck, irmax);
+        const double r = lim ? node_limit_excess(n, ck, irmax) : 0.0;
+        if (__builtin_expect(r != 0.0, 0)) {
           ex = r * dvx;
           ey = r * dvy;
           Bc -= n->m * (dvx * ex + dvy * ey); /* the strain's extra stress power -dt f . e */

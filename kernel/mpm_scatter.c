@@ -130,18 +130,17 @@ static inline __attribute__((always_inline)) int p2g_range_impl(const mpm_grid *
     const mpm_v8 P = {mm, mm * vx[k], mm * vy[k], fb, 0.0, 0.0, 0.0, 0.0};
     const mpm_v8 T0 = sh.wy0 * P + FY, R0 = sh.wy0 * FX;
     const mpm_v8 T1 = sh.wy1 * P - FY, R1 = sh.wy1 * FX;
-    if (lim && sh.n00 != cs.cur) { /* after the cell's vector flush: a narrower load
-                                      * than the store before it forwards */
+    if (sh.n00 != cs.cur) {
       const size_t old = cs.cur;
       cell_sums_move(&cs, nd, nny, sh.n00);
-      cell_vols_flush(&cv, old, nd, nny, ihx, ihy);
+      if (lim) /* after the cell's vector flush: a narrower load than the store forwards */
+        cell_vols_flush(&cv, old, nd, nny, ihx, ihy);
     }
     if (lim) {
       cv.sv += V[k];
       cv.sx += V[k] * sh.wx1;
       cv.sy += V[k] * sh.wy1;
     }
-    cell_sums_move(&cs, nd, nny, sh.n00);
     cs.c00 += sh.wx0 * T0 + R0;
     cs.c10 += sh.wx1 * T0 - R0;
     cs.c01 += sh.wx0 * T1 + R1;
