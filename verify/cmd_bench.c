@@ -35,21 +35,20 @@ typedef struct {
   const char *method; /* label in the case id                                   */
   const char *sets;   /* the method: overrides, separated by spaces              */
   int cut;            /* 1: start with a separated band across the bar (cut_band) */
+  int paper;          /* 1: the paper's method (ver_paper_sets) before sets      */
 } bench_case;
 
-#define PAPER \
-  "grid.shape=linear grid.fields=one decohesion.Le=cell imperfection.stf_factor=1 time.scheme=usl grid.node_mass=limited"
 static const bench_case cases[] = {
   /* the paper's step (lumped v^L); fig6.ini's nodal mass limit in a case of its own */
-  {"fig6", 2.0, 4, 4000, "linear", "grid.shape=linear grid.fields=one grid.node_mass=lumped", 0},
-  {"fig6", 1.0, 4, 2000, "linear", "grid.shape=linear grid.fields=one grid.node_mass=lumped", 0},
-  {"fig6", 2.0, 4, 4000, "limited", "grid.shape=linear grid.fields=one grid.node_mass=limited", 0},
-  {"fig7", 2.0, 4, 4000, "paper", PAPER, 0},
-  {"fig6", 2.0, 4, 4000, "gimp", "grid.shape=gimp grid.fields=one", 0},
-  {"fig7", 2.0, 4, 4000, "gimp", "grid.shape=gimp grid.fields=one decohesion.Le=cell", 0},
-  {"fig7", 2.0, 4, 4000, "gimp-two", "grid.shape=gimp grid.fields=two decohesion.Le=staircase", 1},
+  {"fig6", 2.0, 4, 4000, "linear", "grid.shape=linear grid.fields=one grid.node_mass=lumped", 0, 0},
+  {"fig6", 1.0, 4, 2000, "linear", "grid.shape=linear grid.fields=one grid.node_mass=lumped", 0, 0},
+  {"fig6", 2.0, 4, 4000, "limited", "grid.shape=linear grid.fields=one grid.node_mass=limited", 0, 0},
+  {"fig7", 2.0, 4, 4000, "paper", "", 0, 1},
+  {"fig6", 2.0, 4, 4000, "gimp", "grid.shape=gimp grid.fields=one", 0, 0},
+  {"fig7", 2.0, 4, 4000, "gimp", "grid.shape=gimp grid.fields=one decohesion.Le=cell", 0, 0},
+  {"fig7", 2.0, 4, 4000, "gimp-two", "grid.shape=gimp grid.fields=two decohesion.Le=staircase", 1, 0},
   /* the fig7 file's method, timed through the softening, where the rows measure Le */
-  {"fig7", 2.0, 4, 4000, "gimp-row", "grid.shape=gimp grid.fields=two decohesion.Le=row", 0},
+  {"fig7", 2.0, 4, 4000, "gimp-row", "grid.shape=gimp grid.fields=two decohesion.Le=row", 0, 0},
 };
 
 /* A separated band along the failure plane through the bar's centre: in each particle
@@ -157,6 +156,8 @@ static int bench_scene(const bench_case *bc, ver_scene *vs, ana_bar *bar)
   ver_scene_set(vs, set, err, sizeof err);
   snprintf(set, sizeof set, "grid.ppc=%d", bc->ppc);
   ver_scene_set(vs, set, err, sizeof err);
+  for (int i = 0; bc->paper && i < VER_PAPER_NSETS; i++)
+    ver_scene_set(vs, ver_paper_sets[i], err, sizeof err);
   if (apply_sets(vs, bc->sets, err, sizeof err)) {
     fprintf(stderr, "delam bench: %s\n", err);
     return 2;

@@ -124,16 +124,6 @@ static int scan_from(report *R)
   return n;
 }
 
-/* The paper's method where the scene table has the keys for another one: its bilinear
- * shapes, one field, Le of the cell, snf-only imperfection and USL, with the nodal mass
- * limit, which changes nothing until a node passes its stable stiffness-to-mass ratio
- * (the paper's lumped USL blows up (KE + SE at the end 5e3 to 3e13) in 14 of 24 inclined
- * runs at h 8-2, 1 and 4 ppc; docs/bands.md sec. 4). */
-static const char *const PAPER_SETS[] = {"grid.shape=linear", "grid.fields=one", "decohesion.Le=cell",
-                                         "imperfection.stf_factor=1", "time.scheme=usl",
-                                         "grid.node_mass=limited"};
-#define NPAPER ((int)(sizeof PAPER_SETS / sizeof PAPER_SETS[0]))
-
 /* 1 if the scene file's own method is not the paper's (and the keys exist to say so). */
 static int needs_paper_run(const rep_ctx *r, const char *scene)
 {
@@ -143,8 +133,8 @@ static int needs_paper_run(const rep_ctx *r, const char *scene)
   if (ver_scene_load(path, &vs, err, sizeof err) != 0)
     return 0;
   const mpm_scene own = vs.sc;
-  for (int i = 0; i < NPAPER; i++)
-    if (ver_scene_set(&vs, PAPER_SETS[i], err, sizeof err) != 0)
+  for (int i = 0; i < VER_PAPER_NSETS; i++)
+    if (ver_scene_set(&vs, ver_paper_sets[i], err, sizeof err) != 0)
       return 0;
   return own.shape != vs.sc.shape || own.fields != vs.sc.fields || own.le_mode != vs.sc.le_mode ||
          own.imp_stf_factor != vs.sc.imp_stf_factor || own.scheme != vs.sc.scheme ||
@@ -176,7 +166,7 @@ void ver_report_build_cases(report *R)
     /* Figs. 7(d) and 8(c) also with the paper's method where the scene file chooses
      * another (the same run otherwise, so it is not repeated) */
     if (i > 0 && needs_paper_run(r, pics[i]))
-      ver_report_add_sets(r, pics[i], h, ppc, 0, 0, PAPER_SETS, NPAPER, REP_PAPER, 0);
+      ver_report_add_sets(r, pics[i], h, ppc, 0, 0, ver_paper_sets, VER_PAPER_NSETS, REP_PAPER, 0);
   }
   /* sweep over h and particles per cell, to a little past separation */
   const int from_n = r->from[0] ? scan_from(R) : 0;
@@ -197,7 +187,7 @@ void ver_report_build_cases(report *R)
   for (int s = 1; s < REP_NSWEEP; s++)
     if (needs_paper_run(r, rep_sweep_scene[s]))
       for (double h = 8; h >= 2; h /= 2)
-        ver_report_add_sets(r, rep_sweep_scene[s], h, 1, 0, rep_sweep_until[s], PAPER_SETS, NPAPER, REP_PAPER, 1);
+        ver_report_add_sets(r, rep_sweep_scene[s], h, 1, 0, rep_sweep_until[s], ver_paper_sets, VER_PAPER_NSETS, REP_PAPER, 1);
   /* time-step sweep: fig6, h = 8, 1 ppc, to delta 0.5 */
   const double crit = ver_report_dt_crit(r, "fig6", 8);
   for (int i = 0; i < NSTAB; i++)

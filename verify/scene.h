@@ -38,6 +38,11 @@ typedef struct {
   double file_h, file_dt;     /* grid.h and time.dt as the file gave them               */
 } ver_scene;
 
+/* The overrides ("section.key=value") that turn any scene file's method into the
+ * paper's (scene_bar.c). */
+#define VER_PAPER_NSETS 6
+extern const char *const ver_paper_sets[VER_PAPER_NSETS];
+
 /* Reads and validates a scene file.  Returns 0, or 2 with one line in err. */
 int ver_scene_load(const char *path, ver_scene *vs, char *err, size_t errlen);
 /* Parses it without the final validation, so that overrides can follow.  Files
