@@ -58,6 +58,14 @@ static const ver_check *chk(const ver_case *c, const char *name)
   return NULL;
 }
 
+/* c's verdict on D when it measures f times U0 x area. */
+static int d_verdict(ver_case *c, double f)
+{
+  c->D_final = f * c->ana.D_sep;
+  ver_policy_case(c);
+  return chk(c, "D_final")->verdict;
+}
+
 static void test_ver_policy_fig6_pass_and_fail(void **state)
 {
   (void)state;
@@ -81,9 +89,7 @@ static void test_ver_policy_fig6_pass_and_fail(void **state)
   assert_int_equal(chk(&c, "peak_P")->verdict, VER_PASS);
   /* D 5 % high at alpha 90 fails: the band is one cell, D must be U0 x area */
   fig6_case(&c, 4);
-  c.D_final = 1.05 * c.ana.D_sep;
-  ver_policy_case(&c);
-  assert_int_equal(chk(&c, "D_final")->verdict, VER_FAIL);
+  assert_int_equal(d_verdict(&c, 1.05), VER_FAIL);
   /* an incomplete run fails the run check */
   fig6_case(&c, 4);
   c.complete = 0;
@@ -99,15 +105,11 @@ static void test_ver_policy_inclined_known_limit(void **state)
   c.vs.sc.alpha_deg = 60;
   c.angle = 62;
   /* D at +100 % (Fig. 7's band two cells wide): known-limit, inside [-2 %, +300 %] */
-  c.D_final = 2.0 * c.ana.D_sep;
-  ver_policy_case(&c);
-  assert_int_equal(chk(&c, "D_final")->verdict, VER_KNOWN);
+  assert_int_equal(d_verdict(&c, 2.0), VER_KNOWN);
   assert_int_equal(chk(&c, "crack_angle")->verdict, VER_PASS);
   assert_int_equal(c.verdict, VER_KNOWN);
   /* D at +400 % is past the bound: fail */
-  c.D_final = 5.0 * c.ana.D_sep;
-  ver_policy_case(&c);
-  assert_int_equal(chk(&c, "D_final")->verdict, VER_FAIL);
+  assert_int_equal(d_verdict(&c, 5.0), VER_FAIL);
   /* an angle off by 12 deg fails (10 deg tolerance, no known-limit) with 8 cells
    * across the bar; with 4 (h 8) it is known-limit (up to 30 deg), 32 off fails */
   c.D_final = c.ana.D_sep;
@@ -141,40 +143,26 @@ static void test_ver_policy_band_method(void **state)
   c.vs.sc.fields = MPM_FIELDS_TWO;
   c.vs.sc.le_mode = MPM_LE_STAIRCASE;
   c.angle = 64;
-  c.D_final = 1.09 * c.ana.D_sep;
-  ver_policy_case(&c);
-  assert_int_equal(chk(&c, "D_final")->verdict, VER_PASS);
+  assert_int_equal(d_verdict(&c, 1.09), VER_PASS);
   assert_int_equal(chk(&c, "crack_angle")->verdict, VER_PASS);
   c.D_final = 1.11 * c.ana.D_sep; /* the paper's method would call this known-limit */
   ver_policy_case(&c);
   assert_int_equal(chk(&c, "D_final")->verdict, VER_FAIL);
-  c.D_final = 0.89 * c.ana.D_sep;
-  ver_policy_case(&c);
-  assert_int_equal(chk(&c, "D_final")->verdict, VER_FAIL);
+  assert_int_equal(d_verdict(&c, 0.89), VER_FAIL);
   /* 4 ppc: the partial softening beside the band is a known limit, up to +60 % */
   c.vs.sc.ppc = 4;
-  c.D_final = 1.3 * c.ana.D_sep;
-  ver_policy_case(&c);
-  assert_int_equal(chk(&c, "D_final")->verdict, VER_KNOWN);
-  c.D_final = 1.7 * c.ana.D_sep;
-  ver_policy_case(&c);
-  assert_int_equal(chk(&c, "D_final")->verdict, VER_FAIL);
+  assert_int_equal(d_verdict(&c, 1.3), VER_KNOWN);
+  assert_int_equal(d_verdict(&c, 1.7), VER_FAIL);
   /* Le = row measures the zone: 4 ppc is held to 10 % as well */
   c.vs.sc.le_mode = MPM_LE_ROW;
-  c.D_final = 1.3 * c.ana.D_sep;
-  ver_policy_case(&c);
-  assert_int_equal(chk(&c, "D_final")->verdict, VER_FAIL);
-  c.D_final = 0.92 * c.ana.D_sep;
-  ver_policy_case(&c);
-  assert_int_equal(chk(&c, "D_final")->verdict, VER_PASS);
+  assert_int_equal(d_verdict(&c, 1.3), VER_FAIL);
+  assert_int_equal(d_verdict(&c, 0.92), VER_PASS);
   c.vs.sc.le_mode = MPM_LE_STAIRCASE;
   c.vs.sc.ppc = 1;
   /* one field with Le = staircase is not the band method: D stays known-limit */
   c.vs.sc.fields = MPM_FIELDS_ONE;
   c.angle = 60;
-  c.D_final = 1.5 * c.ana.D_sep;
-  ver_policy_case(&c);
-  assert_int_equal(chk(&c, "D_final")->verdict, VER_KNOWN);
+  assert_int_equal(d_verdict(&c, 1.5), VER_KNOWN);
 }
 
 /* Fig. 8's bar (Mode II at 60 deg, g = 0.446): the analytic softening slope just after
