@@ -382,8 +382,8 @@ typedef struct {
   double vgrip, dvgrip, ugrip;
   double D_run;            /* dissipation so far, summed from the steps' increments       */
   double P_peak;           /* the largest grip load so far                                */
-  double ctl_t0, ctl_D0;   /* dissipation control: when and at what D it took over (t0 < 0: not yet) */
-  double ctl_int;          /* ... its integral term (a speed)                             */
+  double ctl_D0;           /* dissipation control: the D held to (infinite: not yet)     */
+  double ctl_int;          /* ... its integral term (a speed; 0 until it takes over)      */
   double W_ext;            /* accumulated external work                                */
   long n_soften, n_separate, n_bracketed; /* counters of constitutive paths           */
   /* sorting and threads (mpm_sort.c): particles sorted by cell, column by column;

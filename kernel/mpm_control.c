@@ -32,13 +32,9 @@ void mpm_control_step(mpm_sim *s)
     const mpm_material *m = &s->mat[MPM_MAT_BAR];
     const double tau = 2.0 * sc->L / sqrt(m->E1 / m->rho), dt = sc->dt;
     const double rate = v0 * s->P_peak; /* the dissipation rate held to */
-    if (s->ctl_t0 < 0.0) {
-      s->ctl_t0 = s->t;
-      s->ctl_D0 = s->D_run;
-      s->ctl_int = 0.0;
-    }
     /* the target never runs ahead of D by more than a step's rate: the loop only holds D
-     * back (ctl_D0 is the target) and never pulls to make it catch up */
+     * back (ctl_D0 is the target, infinite until the first softening, so that it starts
+     * at D) and never pulls to make it catch up */
     s->ctl_D0 = fmin(s->ctl_D0, s->D_run) + rate * dt;
     const double e = (s->ctl_D0 - s->D_run) / s->P_peak; /* a length, < 0 when D runs ahead */
     const double i1 = fmin(s->ctl_int + e * dt / (tau * tau), 0.0);

@@ -133,7 +133,7 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
     return MPM_ENOMEM;
   s->sc = *sc;
   s->vgrip = sc->speed;
-  s->ctl_t0 = -1.0;
+  s->ctl_D0 = INFINITY; /* dissipation control: the target starts at D (mpm_control.c) */
   const double h = sc->h;
   const int cx = (int)whole_cells(sc->L, h), cy = (int)whole_cells(sc->H, h);
   /* The grid is only as large as the motion needs: margin all round (at least one
