@@ -139,6 +139,8 @@ typedef struct {
   double U0, s0, q;      /* eq. 19-20                                                  */
   double ubar0;          /* U0 / s0                                                    */
   double irho;           /* 1 / rho (the ledger's V = m / rho)                         */
+  double mp;             /* the mass of each of its particles (mpm_sim.c: one lattice),
+                            so that the gather's ledger sums need not read p->m         */
   double Le;             /* effective length V_e / A_d (eq. 41), fixed for the run     */
   double sep_threshold;  /* eqs. 56-58 take over when lambda would pass this           */
   double visc;           /* decohesion.eta / dt: overstress per unit dlambda in a step (0: none) */

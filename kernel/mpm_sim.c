@@ -220,6 +220,8 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
    * not launch a start-up wave (a decision; the paper does not say). */
   mpm_particles *p = s->p;
   const double d = h / n1, mp = sc->rho * d * d;
+  for (int i = 0; i < 3; i++)
+    s->mat[i].mp = mp; /* the head has the bar's density */
   size_t k = 0;
   double best = INFINITY;
   size_t imp = 0;

@@ -80,6 +80,7 @@ static mpm_sim *blocks_shape(int fields, double v, int shape)
       p->str2[k] = -1.0;
     }
   }
+  s->mat[MPM_MAT_HEAD].mp = 0.0; /* the mass the gather's ledger sums take for it */
   s->led.KE_head0 = 0.0; /* the ledger's start energy of the head: it was parked massless */
   return s;
 }
