@@ -13,7 +13,8 @@
  *   DIR/final.csv    optional (or --particles FILE): the final particles, x0, y0 and
  *                    lambda; gives the band width and the crack angle.
  * A first line starting with '#' (delam's schema line) and blank lines are skipped.
- * Output: one line per check, the verdict, DIR/check.json.  Exit status 0 every check
+ * Output: one line per check, an informational line (D at the separation, never judged),
+ * the verdict, DIR/check.json.  Exit status 0 every check
  * passed (or is within a known limit), 1 a check failed, 2 unusable input (the file,
  * line and column are named).
  */
@@ -31,6 +32,7 @@
 #include "datadir.h"
 #include "foreign.h"
 #include "io.h"
+#include "metrics.h"
 #include "summary.h"
 
 #define PROG "delam check"
@@ -98,8 +100,20 @@ static int build_scene(const char *arg, const char *dir, double h, double ppc, c
   return ver_scene_validate(vs, err, errlen);
 }
 
-static int write_json(const char *out, const ver_case *c, const char *dir, const char *scene_path, int have_en,
-                      const char *pfile, int rc)
+/* Informational, never judged (not a ver_check: the checks' classes and verdicts stay as
+ * policy.c makes them): the dissipation at the separation this check detected and after
+ * it.  A snapback run (fig8, a30) can decohere after the band has cut the bar (docs/bands.md
+ * sec. 5c); D_final alone does not say when.  Needs energy.csv with the same rows as
+ * load.csv (as delam writes them), whose deltas then date its D column. */
+typedef struct {
+  int have;          /* 1: computed                                         */
+  double delta_sep;  /* the check's separation (the load test)              */
+  double D_cut, D_after_cut, D_ref; /* D at delta_sep, D_final - D_cut, U0 x area */
+  char why[120];     /* why it is left out, when it is                      */
+} check_info;
+
+static int write_json(const char *out, const ver_case *c, const check_info *info, const char *dir,
+                      const char *scene_path, int have_en, const char *pfile, int rc)
 {
   cJSON *o = cJSON_CreateObject();
   cJSON_AddNumberToObject(o, "schema", VER_SCHEMA_CHECK);
@@ -121,6 +135,15 @@ static int write_json(const char *out, const ver_case *c, const char *dir, const
   cJSON *ck = cJSON_AddArrayToObject(o, "checks");
   for (int j = 0; j < c->nchk; j++)
     cJSON_AddItemToArray(ck, ver_check_json(&c->chk[j]));
+  if (have_en) { /* informational: not a check, never part of the verdict */
+    cJSON *io = cJSON_AddObjectToObject(o, "info");
+    cJSON_AddNumberToObject(io, "delta_sep", info->delta_sep);
+    cJSON_AddNumberToObject(io, "D_cut", info->have ? info->D_cut : NAN);
+    cJSON_AddNumberToObject(io, "D_after_cut", info->have ? info->D_after_cut : NAN);
+    cJSON_AddNumberToObject(io, "D_reference", info->D_ref);
+    if (!info->have)
+      cJSON_AddStringToObject(io, "note", info->why);
+  }
   cJSON_AddStringToObject(o, "verdict", ver_verdict_name(c->verdict));
   cJSON_AddNumberToObject(o, "exit_status", rc);
   char *txt = cJSON_Print(o);
@@ -191,11 +214,38 @@ static int check_args(int argc, char **argv, check_opts *o)
   return 0;
 }
 
-/* The verdict lines: every check, then the case's verdict and what was left out. */
-static void print_verdict(const char *label, const ver_case *c, int have_en, int have_pt)
+static void info_measure(const ver_case *c, const ver_table *ld, const ver_table *en, check_info *in)
+{
+  memset(in, 0, sizeof *in);
+  in->delta_sep = c->delta_sep;
+  in->D_ref = c->have_ana ? c->ana.D_sep : NAN;
+  if (!en)
+    snprintf(in->why, sizeof in->why, "no energy.csv");
+  else if (en->n != ld->n)
+    snprintf(in->why, sizeof in->why, "energy.csv has %ld rows, load.csv %ld: its rows are not dated", en->n, ld->n);
+  else if (!(c->delta_sep >= 0))
+    snprintf(in->why, sizeof in->why, "no separation detected");
+  else {
+    in->D_cut = ver_value_at(ld->col[0], en->col[4], (size_t)ld->n, c->delta_sep);
+    in->D_after_cut = en->col[4][en->n - 1] - in->D_cut;
+    in->have = isfinite(in->D_cut);
+    if (!in->have)
+      snprintf(in->why, sizeof in->why, "no row at delta_sep %.4g", c->delta_sep);
+  }
+}
+
+/* The verdict lines: every check, the informational line, then the case's verdict and
+ * what was left out. */
+static void print_verdict(const char *label, const ver_case *c, const check_info *in, int have_en, int have_pt)
 {
   for (int j = 0; j < c->nchk; j++)
     ver_sweep_print_check(label, &c->chk[j]);
+  if (in->have)
+    printf("%-11s %s D_cut: %.6g at the detected separation (delta %.4g), %.6g after it; over U0 x area %.4g: "
+           "%.4g and %.4g -- informational, never judged\n", "info", label, in->D_cut, in->delta_sep,
+           in->D_after_cut, in->D_ref, in->D_cut / in->D_ref, in->D_after_cut / in->D_ref);
+  else if (have_en)
+    printf("%-11s %s D_cut: left out (%s)\n", "info", label, in->why);
   printf("check: %s", ver_verdict_name(c->verdict));
   if (c->verdict == VER_FAIL) {
     printf(", failed:");
@@ -282,13 +332,15 @@ int ver_cmd_check(int argc, char **argv)
   }
   char label[160];
   snprintf(label, sizeof label, "%s vs %s-h%g-ppc%d", dir, c.vs.name, c.vs.sc.h, c.vs.sc.ppc);
-  print_verdict(label, &c, have_en, have_pt);
+  check_info info;
+  info_measure(&c, &ld, have_en ? &en : NULL, &info);
+  print_verdict(label, &c, &info, have_en, have_pt);
   const int rc = c.verdict == VER_FAIL ? 1 : 0;
   char jpath[1400];
   snprintf(jpath, sizeof jpath, "%s", out ? out : "");
   if (!out)
     snprintf(jpath, sizeof jpath, "%s/check.json", dir);
-  int wrc = write_json(jpath, &c, dir, c.vs.path, have_en, have_pt ? ppath : NULL, rc);
+  int wrc = write_json(jpath, &c, &info, dir, c.vs.path, have_en, have_pt ? ppath : NULL, rc);
   ver_table_free(&ld);
   if (have_en)
     ver_table_free(&en);

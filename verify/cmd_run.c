@@ -106,10 +106,10 @@ static void print_result(const ver_scene *vs, const char *id, const ver_summary 
            id, u.energy_kept, u.L_bc_final, u.L_flip_final, u.L_scheme_final, u.energy_start, u.period,
            u.period_exact, 100.0 * u.period_error, u.energy_residual);
   else
-    printf("%s: peak P %.4g at delta %.4g, separation at delta %.4g, D %.4g, W_ext %.4g, "
+    printf("%s: peak P %.4g at delta %.4g, separation at delta %.4g, D %.4g (%.4g at separation), W_ext %.4g, "
            "elastic slope %.4g, energy residual %.2e (unbooked %.2e) to delta %.4g\n",
-           id, u.peak_P, u.delta_peak, u.delta_sep, u.D_final, u.W_ext_final, u.k_elastic, u.energy_residual,
-           u.energy_unbooked, u.delta_end);
+           id, u.peak_P, u.delta_peak, u.delta_sep, u.D_final, u.D_cut, u.W_ext_final, u.k_elastic,
+           u.energy_residual, u.energy_unbooked, u.delta_end);
   printf("%s: %zu particles, %ld steps, %.2f s, %.3g particle-updates/s -> %s/\n", id, u.particles, u.steps,
          u.wall_s, u.updates_per_s, outdir);
 }

@@ -307,3 +307,14 @@ double ver_curve_end(const ana_bar *b, double thr)
 {
   return fmax(ver_sep_ref(b, thr), b->delta_peak);
 }
+
+double ver_value_at(const double *delta, const double *v, size_t n, double at)
+{
+  if (!isfinite(at) || at < 0.0)
+    return NAN;
+  const double tol = 1e-9 * fmax(1.0, fabs(at));
+  for (size_t i = 0; i < n; i++)
+    if (delta[i] >= at - tol)
+      return v[i];
+  return NAN;
+}

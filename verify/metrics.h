@@ -91,6 +91,13 @@ int ver_gci(double f1, double f2, double f3, double r, double p_lo, double p_hi,
 #define VER_ENERGY_COLS 9
 double ver_energy_residual(const double *const e[VER_ENERGY_COLS], size_t n, double E0, double *raw);
 
+/* The value of a column at an output row: v of the first row with delta >= at (up to a
+ * relative 1e-9, so a delta taken from a row finds that row).  The dissipation at the
+ * detected separation (summary.json's D_cut, `delam check`'s info line) is this with
+ * at = delta_sep.  NaN if at is negative (no separation: delta_sep -1) or not finite,
+ * or if no row reaches it. */
+double ver_value_at(const double *delta, const double *v, size_t n, double at);
+
 /* (max - min) / mean; NaN if n == 0 or the mean is 0. */
 double ver_spread(const double *v, size_t n);
 

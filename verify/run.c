@@ -342,6 +342,21 @@ static void finish(const run_state *r, ver_summary *u, double w0, double c0)
   mpm_energy e;
   mpm_sim_energy(s, &e);
   u->D_final = e.D;
+  /* the dissipation at the detected separation: the output row at delta_sep (the cut
+   * test fires on a row; the load test's window centre takes the first row at or past it) */
+  u->D_cut = NAN;
+  if (r->nrow > 0) {
+    double *b = malloc(2 * sizeof(double) * (size_t)r->nrow);
+    if (b) {
+      for (long i = 0; i < r->nrow; i++) {
+        b[i] = r->rows[i].delta;
+        b[r->nrow + i] = r->rows[i].e.D;
+      }
+      u->D_cut = ver_value_at(b, b + r->nrow, (size_t)r->nrow, u->delta_sep);
+      free(b);
+    }
+  }
+  u->D_after_cut = u->D_final - u->D_cut;
   u->W_ext_final = e.W_ext;
   u->W_coh_final = e.W_coh;
   u->KE_final = e.KE;

@@ -27,6 +27,8 @@ static const struct {
   {"delta_sep_load", offsetof(ver_summary, delta_sep_load), F_DBL},
   {"k_elastic", offsetof(ver_summary, k_elastic), F_DBL},
   {"D_final", offsetof(ver_summary, D_final), F_DBL},
+  {"D_cut", offsetof(ver_summary, D_cut), F_DBL},
+  {"D_after_cut", offsetof(ver_summary, D_after_cut), F_DBL},
   {"W_ext_final", offsetof(ver_summary, W_ext_final), F_DBL},
   {"W_coh_final", offsetof(ver_summary, W_coh_final), F_DBL},
   {"KE_final", offsetof(ver_summary, KE_final), F_DBL},

@@ -18,6 +18,8 @@ typedef struct {
   double delta_sep_load;         /* first delta after the peak with the windowed |P| < sep_load * peak */
   double k_elastic;              /* least-squares slope of P(delta) for 0.1-0.6 peak before the peak */
   double D_final, W_ext_final, W_coh_final, KE_final, SE_final;
+  double D_cut;                  /* D of the output row at delta_sep (NaN, null in the file, if none) */
+  double D_after_cut;            /* D_final - D_cut: what decohered after the detected separation */
   double energy_residual;        /* max |W_ext + E0 - KE - SE - W_coh - booked| / max(max W_ext, E0) over
                                     the rows: what the energy ledger does not explain */
   double energy_unbooked;        /* the same without the booked terms                */

@@ -415,6 +415,28 @@ static void test_ver_metrics_gci(void **state)
   assert_true(isnan(g.gci12));
 }
 
+/* The value at a row (summary.json's D_cut): a made-up D(delta) on rows 0.0005 apart,
+ * D = 12 before the cut row at 0.439, growing by 1 a row after it; the cut row's D is
+ * 12.5 by construction.  A delta between rows (the load test's window centre) takes the
+ * next row; no separation (-1) or a delta past the last row gives NaN. */
+static void test_ver_metrics_value_at_row(void **state)
+{
+  (void)state;
+  enum { N = 1000 };
+  double d[N], D[N];
+  const int icut = 878; /* 878 x 0.0005 = 0.439 */
+  for (int i = 0; i < N; i++) {
+    d[i] = 0.0005 * (i + 1) - 0.0005; /* rounding as a running sum would have it */
+    D[i] = i < icut ? 12.0 : i == icut ? 12.5 : 12.5 + (i - icut);
+  }
+  assert_true(ver_value_at(d, D, N, 0.439) == 12.5);
+  assert_true(ver_value_at(d, D, N, 0.43925) == 13.5);
+  assert_true(ver_value_at(d, D, N, 0.0) == 12.0);
+  assert_true(isnan(ver_value_at(d, D, N, -1.0)));
+  assert_true(isnan(ver_value_at(d, D, N, 0.6)));
+  assert_true(isnan(ver_value_at(d, D, N, NAN)));
+}
+
 int main(void)
 {
   const struct CMUnitTest tests[] = {
@@ -436,6 +458,7 @@ int main(void)
     cmocka_unit_test(test_ver_metrics_sep_ref),
     cmocka_unit_test(test_ver_metrics_energy_residual),
     cmocka_unit_test(test_ver_metrics_gci),
+    cmocka_unit_test(test_ver_metrics_value_at_row),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
