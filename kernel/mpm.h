@@ -303,12 +303,13 @@ typedef struct {
   double D;      /* dissipation, U0 min(lambda, 1) per unit failure area (eq. 10)      */
   /* The ledger (mpm_step.c, "Energy"): what the step itself removes, accumulated, so
    * that W_ext + KE(0) = KE + SE + W_coh + L_bc + L_flip + L_scheme + W_head + L_contact
-   * up to the constitutive update's own integration error. */
+   * + L_debris up to the constitutive update's own integration error. */
   double L_bc;     /* removed at held nodes by the constraint's velocity jump          */
   double L_flip;   /* lost interpolating the nodal velocity increments to the particles */
   double L_scheme; /* the time integration's own loss (negative: gain)                */
   double W_head;   /* taken by the rigid head (its KE change and its projection)      */
   double L_contact; /* taken by the contact between two velocity fields: its impulse's work */
+  double L_debris; /* carried off the grid by separated particles that left it (KE + SE) */
 } mpm_energy;
 
 /* ---- threads: the count a step uses (mpm_threads.c) ---- */
@@ -339,7 +340,7 @@ typedef struct {
 void mpm_threads_init(mpm_threads *t, int requested, size_t particles);
 /* The ledger's sums (mpm_step.c), accumulated step by step in a fixed order. */
 typedef struct {
-  double L_bc, L_flip, L_scheme, W_head, L_contact;
+  double L_bc, L_flip, L_scheme, W_head, L_contact, L_debris;
   double KE_head0;         /* the head's kinetic energy at the start                   */
   double head_reset;       /* kinetic energy the head's rigid projection removed so far */
   /* this step's held-node and serial sums (mpm_nodes.c, mpm_step.c; reset every step) */
@@ -366,7 +367,8 @@ typedef struct {
 
 typedef struct {
   mpm_scene sc;            /* copy of the scene                                        */
-  mpm_material mat[3];     /* MPM_MAT_BAR, MPM_MAT_IMP (the imperfection), MPM_MAT_HEAD */
+  mpm_material mat[4];     /* MPM_MAT_BAR, MPM_MAT_IMP (the imperfection), MPM_MAT_HEAD,
+                              MPM_MAT_DEBRIS */
   size_t nhead;            /* particles of the rigid head (p->n - nhead are the bar's)  */
   uint32_t *head;          /* their indices, ascending (rebuilt by each sort)          */
   double head_dy;          /* the head's vertical displacement (it moves as one body)   */
@@ -388,6 +390,7 @@ typedef struct {
   double ctl_int;          /* ... its integral term (a speed; 0 until it takes over)      */
   double W_ext;            /* accumulated external work                                */
   long n_soften, n_separate, n_bracketed; /* counters of constitutive paths           */
+  long n_debris;           /* separated particles that left the grid (MPM_MAT_DEBRIS)    */
   /* sorting and threads (mpm_sort.c): particles sorted by cell, column by column;
    * strips of MPM_STRIP columns of cells are coloured even/odd for the scatter */
   int nthreads;            /* threads of the current step (set by mpm_threads_tick)     */
@@ -419,7 +422,9 @@ enum { MPM_T_SORT = 0, MPM_T_P2G, MPM_T_GRID, MPM_T_G2P, MPM_T_CONST };
  * ever being nearly empty, which under USL tore the gripped end off once a particle
  * crossed the gripped node line (Fig. 6 at h 4 past delta 2, at h 2 with 9 ppc before
  * separation).  Head particles are left out of the energies and the snapshots. */
-enum { MPM_MAT_BAR = 0, MPM_MAT_IMP = 1, MPM_MAT_HEAD = 2 };
+/* MPM_MAT_DEBRIS: a separated particle that left the grid (mpm_step.c, "Debris"): no
+ * mass, no stiffness, no strength; it keeps its lambda, dis and wcoh. */
+enum { MPM_MAT_BAR = 0, MPM_MAT_IMP = 1, MPM_MAT_HEAD = 2, MPM_MAT_DEBRIS = 3 };
 #define MPM_HEAD_CELLS 2
 #define MPM_STRIP 4        /* columns of cells per strip (>= 3: see mpm_sort.c)           */
 #define MPM_SORT_EVERY 64  /* steps between sorts (quasi-static: particles move ~1e-5 h a
@@ -443,6 +448,8 @@ mpm_status mpm_sim_step(mpm_sim *s, char *err, size_t errlen);
 double mpm_sim_delta(const mpm_sim *s);
 /* The grip's displacement after `ahead` more steps at its current speed (ahead 0: delta). */
 double mpm_sim_grip_u(const mpm_sim *s, int ahead);
+/* Particle i's kinetic and elastic energy (plane-stress compliance of its material). */
+void mpm_particle_energy(const mpm_sim *s, size_t i, double *ke, double *se);
 void mpm_sim_energy(const mpm_sim *s, mpm_energy *e);
 /* Called at the top of each step: picks the step's thread count (s->nthreads). */
 void mpm_threads_tick(mpm_sim *s);

@@ -161,7 +161,7 @@ void mpm_fields_grid(mpm_sim *s, double bfac)
   mpm_grid *g = s->g;
   mpm_ledger *L = &s->led;
   const size_t nn = (size_t)g->nnx * (size_t)g->nny;
-  const double dt = s->sc.dt, mmin = MPM_MASS_EPS * s->p->m[0], nx = f->nx, ny = f->ny;
+  const double dt = s->sc.dt, mmin = MPM_MASS_EPS * s->mat[MPM_MAT_BAR].mp, nx = f->nx, ny = f->ny;
   for (size_t k = 0; k < nn; k++) {
     if (!f->split[k])
       continue;
@@ -217,7 +217,7 @@ void mpm_fields_start(mpm_sim *s, double frac)
   if (f->nsplit == 0)
     return;
   const size_t nn = (size_t)s->g->nnx * (size_t)s->g->nny;
-  const double c = frac * s->sc.dt, mmin = MPM_MASS_EPS * s->p->m[0];
+  const double c = frac * s->sc.dt, mmin = MPM_MASS_EPS * s->mat[MPM_MAT_BAR].mp;
   double B = 0.0;
   for (size_t k = 0; k < nn; k++) {
     if (!f->split[k])
@@ -241,7 +241,7 @@ void mpm_fields_musl(mpm_sim *s)
   if (f->nsplit == 0)
     return;
   const size_t nn = (size_t)s->g->nnx * (size_t)s->g->nny;
-  const double mmin = MPM_MASS_EPS * s->p->m[0], nx = f->nx, ny = f->ny;
+  const double mmin = MPM_MASS_EPS * s->mat[MPM_MAT_BAR].mp, nx = f->nx, ny = f->ny;
   double B = 0.0;
   for (size_t k = 0; k < nn; k++) {
     if (!f->split[k])

@@ -142,7 +142,7 @@ static inline __attribute__((always_inline)) void grid_nodes(mpm_sim *s, double 
                                                              const int lim)
 {
   mpm_grid *g = s->g;
-  const double dt = s->sc.dt, mmin = MPM_MASS_EPS * s->p->m[0];
+  const double dt = s->sc.dt, mmin = MPM_MASS_EPS * s->mat[MPM_MAT_BAR].mp;
   /* Nodal mass limit: the floor is m* = ck sum V a / rmax (lane qx holds sum V a) */
   double ck = 0.0, irmax = 0.0;
   if (lim)
@@ -251,7 +251,7 @@ static void held_velocity_lanes(mpm_sim *s)
 void mpm_nodes_start_velocity(mpm_sim *s, double frac)
 {
   mpm_grid *g = s->g;
-  const double c = frac * s->sc.dt, mmin = MPM_MASS_EPS * s->p->m[0];
+  const double c = frac * s->sc.dt, mmin = MPM_MASS_EPS * s->mat[MPM_MAT_BAR].mp;
   const double vg = -s->vgrip;
   /* held components first, while the lanes hold the forces: the loop below sums
    * -c f . p / m for them; B wants -c f . v_bc */
@@ -290,7 +290,7 @@ void mpm_nodes_start_velocity(mpm_sim *s, double frac)
 void mpm_nodes_musl_velocity(mpm_sim *s)
 {
   mpm_grid *g = s->g;
-  const double mmin = MPM_MASS_EPS * s->p->m[0];
+  const double mmin = MPM_MASS_EPS * s->mat[MPM_MAT_BAR].mp;
   /* held components, before their v' is set: -m dv . v' was summed with the
    * increment d in place of dv; take it out (d q = m d v') */
   double corr = 0.0;

@@ -213,6 +213,13 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
   s->mat[MPM_MAT_HEAD].model = MPM_DCOH_NONE;            /* stress-free: it only carries mass */
   s->mat[MPM_MAT_HEAD].E1 = s->mat[MPM_MAT_HEAD].E2 = s->mat[MPM_MAT_HEAD].G = 0.0;
   mpm_material_derive(&s->mat[MPM_MAT_HEAD]);
+  /* debris: the bar's constants (U0, Le: its D stays as it was), no stiffness, no
+   * strength test (fn = ft = 0: the elastic trial always holds), no mass */
+  s->mat[MPM_MAT_DEBRIS] = s->mat[MPM_MAT_BAR];
+  s->mat[MPM_MAT_DEBRIS].model = MPM_DCOH_NONE;
+  s->mat[MPM_MAT_DEBRIS].E1 = s->mat[MPM_MAT_DEBRIS].E2 = s->mat[MPM_MAT_DEBRIS].G = 0.0;
+  for (int i = 0; i < 3; i++)
+    s->mat[MPM_MAT_DEBRIS].fn[i] = s->mat[MPM_MAT_DEBRIS].ft[i] = 0.0;
   s->nhead = nhead;
 
   /* Particles at the centres of an n x n subdivision of each cell.  The velocity starts
@@ -222,6 +229,7 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
   const double d = h / n1, mp = sc->rho * d * d;
   for (int i = 0; i < 3; i++)
     s->mat[i].mp = mp; /* the head has the bar's density */
+  s->mat[MPM_MAT_DEBRIS].mp = 0.0;
   size_t k = 0;
   double best = INFINITY;
   size_t imp = 0;
@@ -311,6 +319,17 @@ double mpm_sim_delta(const mpm_sim *s)
   return s->sc.control == MPM_CONTROL_GRIP ? s->sc.speed * s->t : s->ugrip;
 }
 
+void mpm_particle_energy(const mpm_sim *s, size_t i, double *ke, double *se)
+{
+  const mpm_particles *p = s->p;
+  const mpm_material *m = &s->mat[p->mat[i]];
+  *ke = 0.5 * p->m[i] * (p->vx[i] * p->vx[i] + p->vy[i] * p->vy[i]);
+  /* plane-stress compliance: exx = (sxx - nu syy)/E, eyy = (syy - nu sxx)/E, gxy = sxy/G */
+  const double exx = (p->sxx[i] - m->nu * p->syy[i]) / m->E;
+  const double eyy = (p->syy[i] - m->nu * p->sxx[i]) / m->E;
+  *se = 0.5 * p->V[i] * (p->sxx[i] * exx + p->syy[i] * eyy + p->sxy[i] * p->sxy[i] / m->G);
+}
+
 void mpm_sim_energy(const mpm_sim *s, mpm_energy *e)
 {
   const mpm_particles *p = s->p;
@@ -319,11 +338,12 @@ void mpm_sim_energy(const mpm_sim *s, mpm_energy *e)
     if (p->mat[i] == MPM_MAT_HEAD)
       continue; /* the machine, not the specimen */
     const mpm_material *m = &s->mat[p->mat[i]];
-    ke += 0.5 * p->m[i] * (p->vx[i] * p->vx[i] + p->vy[i] * p->vy[i]);
-    /* plane-stress compliance: exx = (sxx - nu syy)/E, eyy = (syy - nu sxx)/E, gxy = sxy/G */
-    const double exx = (p->sxx[i] - m->nu * p->syy[i]) / m->E;
-    const double eyy = (p->syy[i] - m->nu * p->sxx[i]) / m->E;
-    se += 0.5 * p->V[i] * (p->sxx[i] * exx + p->syy[i] * eyy + p->sxy[i] * p->sxy[i] / m->G);
+    if (p->mat[i] != MPM_MAT_DEBRIS) { /* debris: its KE and SE went into L_debris */
+      double k1, s1;
+      mpm_particle_energy(s, i, &k1, &s1);
+      ke += k1;
+      se += s1;
+    }
     wc += p->wcoh[i];
     if (s->band) /* Le changes in time: the sum of U0 dlambda V / Le, step by step */
       dd += p->dis[i];
@@ -340,4 +360,5 @@ void mpm_sim_energy(const mpm_sim *s, mpm_energy *e)
   e->L_scheme = s->led.L_scheme;
   e->W_head = s->led.W_head;
   e->L_contact = s->led.L_contact;
+  e->L_debris = s->led.L_debris;
 }

@@ -491,26 +491,77 @@ static void lay_grid(mpm_sim *s)
   g->ox = L + (s->grid_ox0 - L) * stretch;
 }
 
+static int particle_inside(const mpm_sim *s, size_t k)
+{
+  mpm_shape sh;
+  const mpm_particles *p = s->p;
+  return s->sc.shape == MPM_SHAPE_GIMP ? mpm_gimp_inside(s->g, p->x[k], p->y[k])
+                                       : mpm_shape_at(s->g, p->x[k], p->y[k], &sh);
+}
+
+/* Debris.  After the cut a snapback scene's release can fling a block of separated
+ * particles off the bar (docs/bands.md sec. 6).  A separated particle (sep) of the bar
+ * found outside the grid leaves the computation: its kinetic and elastic energy are
+ * booked in L_debris, its mass, velocity and stress become 0 and its material
+ * MPM_MAT_DEBRIS (no stiffness, no strength), and it is parked at the nearest point one
+ * cell inside the grid's edge, where nothing moves it: it keeps its lambda, dis and
+ * wcoh (D and W_coh are unchanged).  Any other particle outside the grid is an error.
+ * Returns the particles parked. */
+static long debris(mpm_sim *s)
+{
+  mpm_particles *p = s->p;
+  const mpm_grid *g = s->g;
+  const double xlo = g->ox + g->hx, xhi = g->ox + (g->ncx - 1) * g->hx;
+  const double ylo = g->oy + g->h, yhi = g->oy + (g->ncy - 1) * g->h;
+  long n = 0, moved = 0;
+  for (size_t k = 0; k < p->n; k++) {
+    if (particle_inside(s, k) || !isfinite(p->x[k]) || !isfinite(p->y[k]))
+      continue;
+    if (p->mat[k] != MPM_MAT_DEBRIS) {
+      if (!p->sep[k] || p->mat[k] == MPM_MAT_HEAD)
+        continue; /* not debris: the caller names it */
+      double ke, se;
+      mpm_particle_energy(s, k, &ke, &se);
+      s->led.L_debris += ke + se;
+      p->m[k] = 0.0;
+      p->sxx[k] = p->syy[k] = p->sxy[k] = 0.0;
+      p->str2[k] = 1.0; /* the elastic trial's bound: fn = ft = 0 pass it */
+      p->mat[k] = MPM_MAT_DEBRIS;
+      n++;
+    }
+    /* parked; a massless particle still follows the nodes' velocity, so debris that other
+     * debris carried out again is parked again (it has no energy to book) */
+    p->vx[k] = p->vy[k] = 0.0;
+    p->x[k] = fmin(fmax(p->x[k], xlo), xhi);
+    p->y[k] = fmin(fmax(p->y[k], ylo), yhi);
+    moved++;
+  }
+  s->n_debris += n;
+  return moved;
+}
+
 /* eqs. 2-3 into a zeroed grid; MPM_EDOMAIN or MPM_ENOTFINITE, with the particle
- * named, if one is outside it. */
+ * named, if one is outside it (debris aside). */
 static mpm_status p2g(mpm_sim *s, char *err, size_t errlen)
 {
   mpm_grid *g = s->g;
   const size_t nn = (size_t)g->nnx * (size_t)g->nny;
-  memset(g->nd, 0, nn * sizeof(mpm_node));
   g->body_k = 3.14159265358979323846 / s->sc.L;
   g->body_now = s->sc.body_amp != 0.0 ? s->sc.body_amp * sin(s->sc.body_omega * s->t) : 0.0;
-  if (g->fld)
-    mpm_fields_mark(s);
-  if (!mpm_scatter(s, 0))
-    return MPM_OK;
+  for (int pass = 0; pass < 2; pass++) {
+    memset(g->nd, 0, nn * sizeof(mpm_node));
+    if (g->fld)
+      mpm_fields_mark(s);
+    if (!mpm_scatter(s, 0))
+      return MPM_OK;
+    if (pass > 0 || debris(s) == 0)
+      break;
+    mpm_sim_sort(s); /* the parked particles moved: their strips again */
+  }
   const mpm_particles *p = s->p;
   mpm_status st = MPM_EDOMAIN;
   for (size_t k = 0; k < p->n; k++) {
-    mpm_shape sh;
-    const int in = s->sc.shape == MPM_SHAPE_GIMP ? mpm_gimp_inside(g, p->x[k], p->y[k])
-                                                 : mpm_shape_at(g, p->x[k], p->y[k], &sh);
-    if (!in) {
+    if (!particle_inside(s, k)) {
       st = isfinite(p->x[k]) && isfinite(p->y[k]) ? MPM_EDOMAIN : MPM_ENOTFINITE;
       snprintf(err, errlen, "step %ld: particle at X = %g, Y = %g %s at (%g, %g)%s", s->step, p->x0[k],
                p->y0[k], st == MPM_EDOMAIN ? "left the grid" : "has a non-finite position", p->x[k],

@@ -361,7 +361,7 @@ static void test_ver_metrics_energy_residual(void **state)
 {
   (void)state;
   const double W[2] = {1, 2}, KE[2] = {0.5, 0.5}, SE[2] = {0.25, 1}, Wc[2] = {0, 0.25}, Lb[2] = {0.25, 0.25};
-  const double *e[VER_ENERGY_COLS] = {W, KE, SE, Wc, NULL, NULL, NULL, NULL, NULL};
+  const double *e[VER_ENERGY_COLS] = {W, KE, SE, Wc, NULL, NULL, NULL, NULL, NULL, NULL};
   double raw = -1;
   assert_true(fabs(ver_energy_residual(e, 2, 0.0, &raw) - 0.125) < 1e-15);
   assert_true(fabs(raw - 0.125) < 1e-15);
