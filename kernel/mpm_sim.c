@@ -216,10 +216,9 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
   /* debris: the bar's constants (U0, Le: its D stays as it was), no stiffness, no
    * strength test (fn = ft = 0: the elastic trial always holds), no mass */
   s->mat[MPM_MAT_DEBRIS] = s->mat[MPM_MAT_BAR];
-  s->mat[MPM_MAT_DEBRIS].model = MPM_DCOH_NONE;
+  s->mat[MPM_MAT_DEBRIS].model = MPM_DCOH_NONE; /* as the head: derive sets fn = ft = 0 */
   s->mat[MPM_MAT_DEBRIS].E1 = s->mat[MPM_MAT_DEBRIS].E2 = s->mat[MPM_MAT_DEBRIS].G = 0.0;
-  for (int i = 0; i < 3; i++)
-    s->mat[MPM_MAT_DEBRIS].fn[i] = s->mat[MPM_MAT_DEBRIS].ft[i] = 0.0;
+  mpm_material_derive(&s->mat[MPM_MAT_DEBRIS]);
   s->nhead = nhead;
 
   /* Particles at the centres of an n x n subdivision of each cell.  The velocity starts

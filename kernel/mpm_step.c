@@ -504,9 +504,9 @@ static int particle_inside(const mpm_sim *s, size_t k)
  * found outside the grid leaves the computation: its kinetic and elastic energy are
  * booked in L_debris, its mass, velocity and stress become 0 and its material
  * MPM_MAT_DEBRIS (no stiffness, no strength), and it is parked at the nearest point one
- * cell inside the grid's edge, where nothing moves it: it keeps its lambda, dis and
- * wcoh (D and W_coh are unchanged).  Any other particle outside the grid is an error.
- * Returns the particles parked. */
+ * cell inside the grid's edge; it keeps its lambda, dis and wcoh (D and W_coh are
+ * unchanged).  Any other particle outside the grid is an error.  Returns the particles
+ * parked. */
 static long debris(mpm_sim *s)
 {
   mpm_particles *p = s->p;
@@ -540,23 +540,29 @@ static long debris(mpm_sim *s)
   return moved;
 }
 
-/* eqs. 2-3 into a zeroed grid; MPM_EDOMAIN or MPM_ENOTFINITE, with the particle
- * named, if one is outside it (debris aside). */
+/* eqs. 2-3 into a zeroed grid; 1 if a particle is outside it. */
+static int scatter_zeroed(mpm_sim *s)
+{
+  mpm_grid *g = s->g;
+  memset(g->nd, 0, (size_t)g->nnx * (size_t)g->nny * sizeof(mpm_node));
+  if (g->fld)
+    mpm_fields_mark(s);
+  return mpm_scatter(s, 0);
+}
+
+/* eqs. 2-3; MPM_EDOMAIN or MPM_ENOTFINITE, with the particle named, if one is outside
+ * the grid and is not debris. */
 static mpm_status p2g(mpm_sim *s, char *err, size_t errlen)
 {
   mpm_grid *g = s->g;
-  const size_t nn = (size_t)g->nnx * (size_t)g->nny;
   g->body_k = 3.14159265358979323846 / s->sc.L;
   g->body_now = s->sc.body_amp != 0.0 ? s->sc.body_amp * sin(s->sc.body_omega * s->t) : 0.0;
-  for (int pass = 0; pass < 2; pass++) {
-    memset(g->nd, 0, nn * sizeof(mpm_node));
-    if (g->fld)
-      mpm_fields_mark(s);
-    if (!mpm_scatter(s, 0))
-      return MPM_OK;
-    if (pass > 0 || debris(s) == 0)
-      break;
+  if (!scatter_zeroed(s))
+    return MPM_OK;
+  if (debris(s) > 0) {
     mpm_sim_sort(s); /* the parked particles moved: their strips again */
+    if (!scatter_zeroed(s))
+      return MPM_OK;
   }
   const mpm_particles *p = s->p;
   mpm_status st = MPM_EDOMAIN;
