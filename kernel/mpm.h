@@ -121,6 +121,9 @@ typedef struct {
   double dt;             /* time step                                                  */
   double speed;          /* grip speed (pulls the left end in -x)                      */
   int control;           /* MPM_CONTROL_GRIP (the paper) or MPM_CONTROL_DISSIPATION       */
+  double damping;        /* local damping of the nodal accelerations, in [0, 1) (0: the
+                            paper's undamped step; mpm_damping.c)                      */
+  double damping_tau;    /* its low-pass time constant (0: 2 L / c)                    */
   double end_delta;      /* the run never goes past this end displacement              */
 } mpm_scene;
 
@@ -303,13 +306,14 @@ typedef struct {
   double D;      /* dissipation, U0 min(lambda, 1) per unit failure area (eq. 10)      */
   /* The ledger (mpm_step.c, "Energy"): what the step itself removes, accumulated, so
    * that W_ext + KE(0) = KE + SE + W_coh + L_bc + L_flip + L_scheme + W_head + L_contact
-   * + L_debris up to the constitutive update's own integration error. */
+   * + L_debris + L_damp up to the constitutive update's own integration error. */
   double L_bc;     /* removed at held nodes by the constraint's velocity jump          */
   double L_flip;   /* lost interpolating the nodal velocity increments to the particles */
   double L_scheme; /* the time integration's own loss (negative: gain)                */
   double W_head;   /* taken by the rigid head (its KE change and its projection)      */
   double L_contact; /* taken by the contact between two velocity fields: its impulse's work */
   double L_debris; /* carried off the grid by separated particles that left it (KE + SE) */
+  double L_damp;   /* taken by the local damping (time.damping; mpm_damping.c)         */
 } mpm_energy;
 
 /* ---- threads: the count a step uses (mpm_threads.c) ---- */
@@ -340,12 +344,13 @@ typedef struct {
 void mpm_threads_init(mpm_threads *t, int requested, size_t particles);
 /* The ledger's sums (mpm_step.c), accumulated step by step in a fixed order. */
 typedef struct {
-  double L_bc, L_flip, L_scheme, W_head, L_contact, L_debris;
+  double L_bc, L_flip, L_scheme, W_head, L_contact, L_debris, L_damp;
   double KE_head0;         /* the head's kinetic energy at the start                   */
   double head_reset;       /* kinetic energy the head's rigid projection removed so far */
   /* this step's held-node and serial sums (mpm_nodes.c, mpm_step.c; reset every step) */
   double s_A, s_K, s_B, s_Bheld, s_Bstart, s_H, s_Wtrue, s_Wbook;
   double s_C;              /* the contact's loss this step (mpm_fields.c)               */
+  double s_Dmp;            /* the damper's work this step (mpm_damping.c)               */
 } mpm_ledger;
 
 /* Per-strip partial sums of one step (fixed partition: the same sums for any thread
@@ -413,7 +418,17 @@ typedef struct {
   mpm_ledger led;          /* the energy ledger                                        */
   mpm_band *band;          /* decohesion.Le = row: the rows' measured Le, or NULL       */
   double (*led_part)[MPM_LED_N]; /* per-strip partial sums of the step (nstrip rows)  */
+  struct mpm_damping *damp; /* time.damping > 0: its state (mpm_damping.c), else NULL   */
 } mpm_sim;
+
+/* Local damping (time.damping, mpm_damping.c): after the node update (and the second
+ * field's), on every free velocity component; under MUSL, its share of the stress power
+ * after the re-projection. */
+typedef struct mpm_damping mpm_damping;
+mpm_damping *mpm_damping_alloc(const mpm_sim *s);
+void mpm_damping_free(mpm_damping *d);
+void mpm_damping_apply(mpm_sim *s, double bfac);
+void mpm_damping_musl(mpm_sim *s);
 
 enum { MPM_T_SORT = 0, MPM_T_P2G, MPM_T_GRID, MPM_T_G2P, MPM_T_CONST };
 /* Materials.  The head is the loading machine (paper, sec. 4.4: "a rigid head with

@@ -89,6 +89,11 @@ mpm_status mpm_scene_check(const mpm_scene *sc, char *err, size_t errlen)
   if (!(sc->speed > 0.0)) BAD("loading.speed must be > 0");
   if (sc->control != MPM_CONTROL_GRIP && sc->control != MPM_CONTROL_DISSIPATION)
     BAD("loading.control must be grip or dissipation");
+  if (!(sc->damping >= 0.0 && sc->damping < 1.0)) BAD("time.damping must be in [0, 1)");
+  if (!(sc->damping_tau >= 0.0 && isfinite(sc->damping_tau))) BAD("time.damping_tau must be >= 0 (0: 2 L / c)");
+  if (sc->damping > 0.0 && sc->node_mass == MPM_NODEMASS_LIMITED && sc->shape == MPM_SHAPE_LINEAR &&
+      (sc->scheme == MPM_SCHEME_USL || sc->scheme == MPM_SCHEME_USAVG))
+    BAD("time.damping needs grid.node_mass = lumped here (the mass limit's v^L is not the node's velocity)");
   if (!(sc->end_delta > 0.0)) BAD("run.end_delta must be > 0");
   return MPM_OK;
 #undef BAD
@@ -101,6 +106,7 @@ void mpm_sim_free(mpm_sim *s)
   mpm_particles_free(s->p);
   if (s->g)
     mpm_fields_free(s->g->fld);
+  mpm_damping_free(s->damp);
   mpm_grid_free(s->g);
   if (s->dws)
     for (int t = 0; t < s->thr.nmax; t++)
@@ -276,6 +282,11 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
   s->ngrip = ngrip;
   s->nfixx = nfixcol * (cy + 1);
   s->fixy = s->fixx[cy / 2];
+  if (sc->damping > 0.0 && !(s->damp = mpm_damping_alloc(s))) {
+    mpm_sim_free(s);
+    snprintf(err, errlen, "out of memory for the damping's node arrays");
+    return MPM_ENOMEM;
+  }
   for (size_t i = nbar; i < np; i++)
     s->led.KE_head0 += 0.5 * p->m[i] * (p->vx[i] * p->vx[i] + p->vy[i] * p->vy[i]);
   mpm_sim_sort(s);
@@ -360,4 +371,5 @@ void mpm_sim_energy(const mpm_sim *s, mpm_energy *e)
   e->W_head = s->led.W_head;
   e->L_contact = s->led.L_contact;
   e->L_debris = s->led.L_debris;
+  e->L_damp = s->led.L_damp;
 }

@@ -35,7 +35,7 @@
  * (sum V sigma_new : de - B) / 2).  With K = sum m_i |d_i|^2 / 2 and the constraint's
  * work in W_ext, the step's loss splits into L_flip = K - Kp, L_bc (held nodes,
  * mpm_nodes.c), L_scheme (the integration's own), W_head (the rigid head) and L_contact
- * (mpm_fields.c), every one a sum the passes form anyway, in a fixed order; what does
+ * (mpm_fields.c) and L_damp (mpm_damping.c), every one a sum the passes form anyway, in a fixed order; what does
  * not close is summary.json's energy residual.
  *
  * Threads: the scatters run strip by strip, even strips then odd (mpm_sort.c); the
@@ -435,8 +435,9 @@ static void ledger_step(mpm_sim *s)
   const double Q = 0.5 * (s->mat[MPM_MAT_BAR].irho * t[MPM_LED_QS] - B);
   L->L_flip += K - Kp;
   L->L_bc += -L->s_H + (L->s_Wbook - L->s_Wtrue);
-  L->L_scheme += L->s_Wtrue - A - K - B - Q + L->s_H - L->s_C;
+  L->L_scheme += L->s_Wtrue - A - K - B - Q + L->s_H - L->s_C - L->s_Dmp;
   L->L_contact += L->s_C;
+  L->L_damp += L->s_Dmp;
   s->D_run += t[MPM_LED_D];
 }
 
@@ -602,7 +603,7 @@ mpm_status mpm_sim_step(mpm_sim *s, char *err, size_t errlen)
   }
   memset(s->led_part, 0, (size_t)s->nstrip * sizeof *s->led_part);
   mpm_ledger *L = &s->led;
-  L->s_A = L->s_K = L->s_B = L->s_Bheld = L->s_Bstart = L->s_H = L->s_Wtrue = L->s_Wbook = L->s_C = 0.0;
+  L->s_A = L->s_K = L->s_B = L->s_Bheld = L->s_Bstart = L->s_H = L->s_Wtrue = L->s_Wbook = L->s_C = L->s_Dmp = 0.0;
   const int sch = s->sc.scheme;
   mpm_status st = p2g(s, err, errlen);
   if (st != MPM_OK)
@@ -630,6 +631,8 @@ mpm_status mpm_sim_step(mpm_sim *s, char *err, size_t errlen)
   mpm_nodes_update(s, bfac);
   if (s->g->fld)
     mpm_fields_grid(s, bfac);
+  if (s->damp)
+    mpm_damping_apply(s, bfac);
   t0 = wall();
   s->time_split[MPM_T_GRID] += t0 - t1;
   if (sch == MPM_SCHEME_MUSL) {
@@ -637,6 +640,8 @@ mpm_status mpm_sim_step(mpm_sim *s, char *err, size_t errlen)
     mpm_nodes_musl_velocity(s);
     if (s->g->fld)
       mpm_fields_musl(s);
+    if (s->damp)
+      mpm_damping_musl(s);
     s->time_split[MPM_T_G2P] += wall() - t0;
     st = g2p_timed(s, G2P_MUSL, 1.0, err, errlen);
   } else if (sch == MPM_SCHEME_USF) {

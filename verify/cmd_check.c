@@ -282,7 +282,7 @@ int ver_cmd_check(int argc, char **argv)
 
   static const char *const lnames[] = {"delta", "P_grip", "P_fixed"};
   static const char *const enames[] = {"W_ext", "KE",       "SE",     "W_coh",    "D",
-                                       "L_bc",  "L_flip",   "L_scheme", "W_head", "L_contact", "L_debris"};
+                                       "L_bc",  "L_flip",   "L_scheme", "W_head", "L_contact", "L_debris", "L_damp"};
   static const char *const pnames[] = {"x0", "y0", "lambda"};
   char path[1400], ppath[1400];
   ver_table ld, en, pt;
@@ -295,7 +295,7 @@ int ver_cmd_check(int argc, char **argv)
     return 2;
   }
   snprintf(path, sizeof path, "%s/energy.csv", dir);
-  r = ver_table_read(path, enames, 11, 5, &en, err, sizeof err);
+  r = ver_table_read(path, enames, 12, 5, &en, err, sizeof err);
   if (r == 2) {
     fprintf(stderr, PROG ": %s\n", err);
     ver_table_free(&ld);

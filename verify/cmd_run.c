@@ -98,7 +98,7 @@ static void print_result(const ver_scene *vs, const char *id, const ver_summary 
   else if (vs->sc.vib_mode == 0 && !(u.energy_unbooked <= VER_ENERGY_TOL))
     fprintf(stderr, "delam run: warning: energy not accounted for %.3g over the whole run (to delta %.4g) is above the "
             "tolerance %g (W_ext + E0 - KE - SE - W_coh over max W_ext, nothing booked; booked residual %.3g; "
-            "energy.csv L_bc, L_flip, L_scheme, W_head, L_contact, L_debris)\n", u.energy_unbooked, u.delta_end, VER_ENERGY_TOL,
+            "energy.csv L_bc, L_flip, L_scheme, W_head, L_contact, L_debris, L_damp)\n", u.energy_unbooked, u.delta_end, VER_ENERGY_TOL,
             u.energy_residual);
   if (vs->sc.vib_mode > 0) /* free vibration: what it kept and its period */
     printf("%s: energy kept %.4f (booked: L_bc %.3g, L_flip %.3g, L_scheme %.3g of %.4g), period %.6g against "

@@ -176,7 +176,7 @@ void ver_foreign_measure(ver_case *c, const ver_table *ld, const ver_table *en, 
     /* delam's own definition; the ledger columns count where the file has them, and
      * the energy at the start is that of the first row less the work done by then */
     const double *e[VER_ENERGY_COLS] = {en->col[0], en->col[1], en->col[2], en->col[3], en->col[5],
-                                        en->col[6], en->col[7], en->col[8], en->col[9], en->col[10]};
+                                        en->col[6], en->col[7], en->col[8], en->col[9], en->col[10], en->col[11]};
     const double E0 = fmax(0.0, en->col[1][0] + en->col[2][0] - en->col[0][0]);
     c->energy_residual = ver_energy_residual(e, m, E0, NULL);
   } else { /* the external work is the area under the load-deflection curve */

@@ -29,7 +29,7 @@ void ver_table_free(ver_table *t);
 
 /* Fills c's measured numbers from a load table (delta, P_grip, P_fixed or NULL), an
  * energy table (W_ext, KE, SE, W_coh, D, then the ledger L_bc, L_flip, L_scheme,
- * W_head, L_contact, L_debris, each NULL if absent; or en NULL) and a particle table (x0, y0, lambda; or pt
+ * W_head, L_contact, L_debris, L_damp, each NULL if absent; or en NULL) and a particle table (x0, y0, lambda; or pt
  * NULL).  c->vs and c->ana (have_ana) must be set.  Without en the external work is the
  * area under the load curve and D, the energy residual are NaN; without pt the band
  * numbers are NaN. */

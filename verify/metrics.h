@@ -82,14 +82,14 @@ int ver_gci(double f1, double f2, double f3, double r, double p_lo, double p_hi,
 
 /* The energy balance W_ext + E0 = KE + SE + W_coh + booked over n rows, E0 the energy
  * at the start (KE + SE) and booked the ledger's terms L_bc + L_flip + L_scheme + W_head
- * + L_contact + L_debris (mpm.h): its largest miss over the larger of max |W_ext| and E0.
- * The columns are e[0..9] = W_ext, KE, SE, W_coh, L_bc, L_flip, L_scheme, W_head,
- * L_contact, L_debris; a
+ * + L_contact + L_debris + L_damp (mpm.h): its largest miss over the larger of max |W_ext|
+ * and E0.  The columns are e[0..10] = W_ext, KE, SE, W_coh, L_bc, L_flip, L_scheme,
+ * W_head, L_contact, L_debris, L_damp; a
  * NULL ledger column counts as 0.  *raw (if not NULL) gets the miss without the booked terms.  0 if there is
  * no energy at all. */
 /* The tolerance on it: verify's check and delam run's warning (over the whole run). */
 #define VER_ENERGY_TOL 0.02
-#define VER_ENERGY_COLS 10
+#define VER_ENERGY_COLS 11
 double ver_energy_residual(const double *const e[VER_ENERGY_COLS], size_t n, double E0, double *raw);
 
 /* The value of a column at an output row: v of the first row with delta >= at (up to a

@@ -124,12 +124,12 @@ static int write_rows(const row *r, long n, const char *dir)
   if (!(f = open_tmp(dir, "energy.csv", tmp, sizeof tmp)))
     return -1;
   /* the ledger's booked terms after the energies (mpm.h mpm_energy, mpm_step.c "Energy") */
-  fprintf(f, "# delam energy.csv schema %d\nt,W_ext,KE,SE,W_coh,D,L_bc,L_flip,L_scheme,W_head,L_contact,L_debris\n",
+  fprintf(f, "# delam energy.csv schema %d\nt,W_ext,KE,SE,W_coh,D,L_bc,L_flip,L_scheme,W_head,L_contact,L_debris,L_damp\n",
           VER_SCHEMA_ENERGY);
   for (long i = 0; i < n; i++)
-    fprintf(f, "%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", r[i].t, r[i].e.W_ext, r[i].e.KE,
+    fprintf(f, "%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", r[i].t, r[i].e.W_ext, r[i].e.KE,
             r[i].e.SE, r[i].e.W_coh, r[i].e.D, r[i].e.L_bc, r[i].e.L_flip, r[i].e.L_scheme, r[i].e.W_head,
-            r[i].e.L_contact, r[i].e.L_debris);
+            r[i].e.L_contact, r[i].e.L_debris, r[i].e.L_damp);
   return commit_file(f, tmp);
 }
 
@@ -309,7 +309,7 @@ static double energy_residual(const row *rows, long n, double E0, double *raw)
   for (long i = 0; i < n; i++) {
     const mpm_energy *q = &rows[i].e;
     const double v[VER_ENERGY_COLS] = {q->W_ext,  q->KE,       q->SE,     q->W_coh,     q->L_bc,
-                                       q->L_flip, q->L_scheme, q->W_head, q->L_contact, q->L_debris};
+                                       q->L_flip, q->L_scheme, q->W_head, q->L_contact, q->L_debris, q->L_damp};
     for (int j = 0; j < VER_ENERGY_COLS; j++)
       buf[(size_t)j * (size_t)(n + 1) + (size_t)i] = v[j];
   }
@@ -367,6 +367,7 @@ static void finish(const run_state *r, ver_summary *u, double w0, double c0)
   u->W_head_final = e.W_head;
   u->L_contact_final = e.L_contact;
   u->L_debris_final = e.L_debris;
+  u->L_damp_final = e.L_damp;
   u->n_debris = s->n_debris;
   const double E0 = r->e0.KE + r->e0.SE;
   u->energy_residual = energy_residual(r->rows, r->nrow, E0, &u->energy_unbooked);

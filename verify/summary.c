@@ -41,6 +41,7 @@ static const struct {
   {"W_head_final", offsetof(ver_summary, W_head_final), F_DBL},
   {"L_contact_final", offsetof(ver_summary, L_contact_final), F_DBL},
   {"L_debris_final", offsetof(ver_summary, L_debris_final), F_DBL},
+  {"L_damp_final", offsetof(ver_summary, L_damp_final), F_DBL},
   {"energy_start", offsetof(ver_summary, energy_start), F_DBL},
   {"energy_kept", offsetof(ver_summary, energy_kept), F_DBL},
   {"period", offsetof(ver_summary, period), F_DBL},

@@ -24,6 +24,7 @@ typedef struct {
                                     the rows: what the energy ledger does not explain */
   double energy_unbooked;        /* the same without the booked terms                */
   double L_bc_final, L_flip_final, L_scheme_final, W_head_final, L_contact_final; /* the ledger (mpm.h) */
+  double L_damp_final;           /* ... and what the local damping took (time.damping)           */
   double L_debris_final;         /* ... and what debris carried off the grid (mpm_step.c)        */
   long n_debris;                 /* separated particles that left the grid as debris     */
   double energy_start;           /* E0 = KE + SE at the start                        */

@@ -1,0 +1,179 @@
+/*
+ * mpm_damping.c - local damping of the nodal accelerations (time.damping = alpha > 0),
+ * for scenes that ask a quasi-static question through a dynamic release: a snapback
+ * (g < 1, eq. 35) under the paper's grip control throws the stored excess
+ * (1 / g - 1) UF area into elastic waves once the band opens, and their reflections at
+ * the held ends fail the ends (docs/bands.md sec. 5c).  alpha = 0 is the paper's
+ * undamped step, bit for bit.
+ *
+ * Each free velocity component of each node gets, after the node update (eq. 4), the
+ * increment
+ *     delta = -alpha |dv| sign(v - vbar),   dv = v^L - v (the step's free increment),
+ * i.e. a force -alpha |f| sign(v - vbar) against the node's motion relative to vbar
+ * (Cundall's local damping, as explicit codes use it to reach a static state).  It is
+ * proportional to the unbalanced force, so a body in equilibrium, or moving rigidly,
+ * feels none of it: the quasi-static loading before the peak and the peak itself are
+ * untouched.  vbar, a low-pass of the node's projected velocity with time constant tau
+ * (time.damping_tau; default 2 L / c, the bar's longest period), is the slow drift the
+ * damping must not resist: without it (sign(v) alone) the part that the grip carries
+ * away after the cut, ringing about the grip's speed, is braked on every swing the same
+ * way, and the grip keeps 5-15 % of the peak load after separation (fig8 and a30, h 4,
+ * 1 ppc).  Held components (grip and fixed end) are not damped: their reactions stay
+ * the constraint's.  On one degree of freedom in free vibration (vbar = 0) it takes the
+ * share 1 - (1 - alpha) / (1 + alpha) of the energy each half period
+ * (tests/test_mpm_damping.c).
+ *
+ * The ledger (mpm_step.c, "Energy").  With delta added to a record's increment d
+ * (lanes f) and to v^L (lanes p), A = sum m v . d gains m v . delta, K = sum m |d|^2
+ * gains m (2 d . delta + delta^2), the share bfac of B = -dt f . v^L gains
+ * -bfac m dv . delta (dv = dt f / m, the increment without the contact's), and the
+ * damper's work over the step, at the end velocity as the update takes it, is
+ * L_damp = -sum m delta . (v^L + delta) (>= 0 where delta opposes v^L).  Under MUSL
+ * the stress power B = -m d . v' is formed later from the lanes (mpm_nodes_musl_velocity,
+ * mpm_fields_musl), with d holding delta: mpm_damping_musl gives back delta . q.
+ * Serial in node order: the same sums whatever the threads.
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "mpm.h"
+#include "mpm_node.h"
+
+struct mpm_damping {
+  double alpha;   /* time.damping                                                   */
+  double w;       /* dt / tau: the low-pass's weight per step                       */
+  double *vbar;   /* the first field's low-pass velocity per node (x, y pairs)       */
+  double *vbar2;  /* the second field's (mpm_fields.c), kept where a node is split   */
+  double *del;    /* this step's delta per node, first field (x, y pairs)            */
+  double *del2;   /* ... second field                                                */
+  uint8_t *held;  /* bit 0: x held, bit 1: y held                                     */
+  size_t nn;
+};
+
+mpm_damping *mpm_damping_alloc(const mpm_sim *s)
+{
+  const mpm_scene *sc = &s->sc;
+  const size_t nn = (size_t)s->g->nnx * (size_t)s->g->nny;
+  mpm_damping *d = calloc(1, sizeof *d);
+  if (!d)
+    return NULL;
+  d->nn = nn;
+  d->vbar = calloc(2 * nn, sizeof(double));
+  d->vbar2 = calloc(2 * nn, sizeof(double));
+  d->del = calloc(2 * nn, sizeof(double));
+  d->del2 = calloc(2 * nn, sizeof(double));
+  d->held = calloc(nn, 1);
+  if (!d->vbar || !d->vbar2 || !d->del || !d->del2 || !d->held) {
+    mpm_damping_free(d);
+    return NULL;
+  }
+  d->alpha = sc->damping;
+  const double c = sqrt(s->mat[MPM_MAT_BAR].E1 / sc->rho);
+  const double tau = sc->damping_tau > 0.0 ? sc->damping_tau : 2.0 * sc->L / c;
+  d->w = fmin(1.0, sc->dt / tau);
+  for (int q = 0; q < s->ngrip; q++)
+    d->held[s->grip[q]] |= 1;
+  for (int q = 0; q < s->nfixx; q++)
+    d->held[s->fixx[q]] |= 1;
+  d->held[s->fixy] |= 2;
+  return d;
+}
+
+void mpm_damping_free(mpm_damping *d)
+{
+  if (!d)
+    return;
+  free(d->vbar);
+  free(d->vbar2);
+  free(d->del);
+  free(d->del2);
+  free(d->held);
+  free(d);
+}
+
+/* The sums one damped record adds to the ledger. */
+typedef struct {
+  double A, K, B, W;
+} damp_sums;
+
+/* One velocity component: lanes p (v^L) and f (d), the contact's part c of d (0 if
+ * none), its low-pass vb; returns delta and books its ledger terms. */
+static inline double damp_component(double *lp, double *lf, double c, double *vb, double alpha, double w,
+                                    double m, double bfac, damp_sums *t)
+{
+  const double d = *lf, v = *lp - d;
+  *vb += w * (v - *vb);
+  const double r = v - *vb;
+  const double del = r > 0.0 ? -alpha * fabs(d) : r < 0.0 ? alpha * fabs(d) : 0.0;
+  if (del == 0.0)
+    return 0.0;
+  t->A += m * v * del;
+  t->K += m * (2.0 * d + del) * del;
+  t->B -= bfac * m * (d - c) * del;
+  *lp += del;
+  *lf += del;
+  t->W -= m * del * *lp;
+  return del;
+}
+
+static void damp_record(mpm_node *n, const double c[2], double *vb, double *del, uint8_t held, double alpha,
+                        double w, double bfac, damp_sums *t)
+{
+  del[0] = del[1] = 0.0;
+  if (!(held & 1))
+    del[0] = damp_component(&n->px, &n->fx, c[0], &vb[0], alpha, w, n->m, bfac, t);
+  if (!(held & 2))
+    del[1] = damp_component(&n->py, &n->fy, c[1], &vb[1], alpha, w, n->m, bfac, t);
+}
+
+/* After mpm_nodes_update and mpm_fields_grid: delta on every free component of both
+ * fields; bfac as theirs. */
+void mpm_damping_apply(mpm_sim *s, double bfac)
+{
+  mpm_damping *d = s->damp;
+  const mpm_grid *g = s->g;
+  const mpm_fields *f = g->fld;
+  const double mmin = MPM_MASS_EPS * s->mat[MPM_MAT_BAR].mp;
+  damp_sums t = {0.0, 0.0, 0.0, 0.0};
+  for (size_t k = 0; k < d->nn; k++) {
+    mpm_node *n = &g->nd[k];
+    const int split = f && f->nsplit && f->split[k];
+    double ca[2] = {0.0, 0.0}, cb[2] = {0.0, 0.0};
+    if (split) { /* the contact's normal velocity change is in d too (mpm_fields_grid) */
+      ca[0] = f->dc[2 * k] * f->nx;
+      ca[1] = f->dc[2 * k] * f->ny;
+      cb[0] = f->dc[2 * k + 1] * f->nx;
+      cb[1] = f->dc[2 * k + 1] * f->ny;
+    }
+    if (n->m > mmin)
+      damp_record(n, ca, &d->vbar[2 * k], &d->del[2 * k], d->held[k], d->alpha, d->w, bfac, &t);
+    else
+      d->del[2 * k] = d->del[2 * k + 1] = 0.0;
+    d->del2[2 * k] = d->del2[2 * k + 1] = 0.0;
+    if (split && f->nd2[k].m > mmin) /* split nodes are never held (mpm_fields.c) */
+      damp_record(&f->nd2[k], cb, &d->vbar2[2 * k], &d->del2[2 * k], 0, d->alpha, d->w, bfac, &t);
+  }
+  mpm_ledger *L = &s->led;
+  L->s_A += t.A;
+  L->s_K += t.K;
+  L->s_B += t.B;
+  L->s_Dmp += t.W;
+}
+
+/* MUSL, after mpm_nodes_musl_velocity and mpm_fields_musl (lanes q still hold
+ * q = m v'): their B = -m d . v' took delta in d; the stress power is -m dv . v'. */
+void mpm_damping_musl(mpm_sim *s)
+{
+  const mpm_damping *d = s->damp;
+  const mpm_grid *g = s->g;
+  const mpm_fields *f = g->fld;
+  double B = 0.0;
+  for (size_t k = 0; k < d->nn; k++) {
+    const mpm_node *n = &g->nd[k];
+    B += d->del[2 * k] * n->qx + d->del[2 * k + 1] * n->qy;
+    if (f && f->nsplit && f->split[k])
+      B += d->del2[2 * k] * f->nd2[k].qx + d->del2[2 * k + 1] * f->nd2[k].qy;
+  }
+  s->led.s_B += B;
+}

@@ -1,0 +1,195 @@
+/*
+ * test_mpm_damping.c - local damping (time.damping, mpm_damping.c) against values that
+ * do not come from the code:
+ *  - free vibration of the elastic bar of vibration.ini (h 8, 1 ppc, MUSL, consistent
+ *    boundaries, first axial mode) with alpha = 0.05 and a low-pass too slow to follow
+ *    the swing (tau = 1e6): each node is then a local damper on a mode whose force and
+ *    velocity swap sign together, so one degree of freedom's law holds: a quarter period
+ *    from a turning point gives back (1 - alpha) of the potential energy as kinetic, the
+ *    next quarter turns it into (1 + alpha)^-1 of that, i.e. the energy falls by
+ *    r = (1 - alpha) / (1 + alpha) each half period.  Over two periods the energy kept
+ *    is the undamped run's times r^4 (0.6703 of it), within 2 % (the held end columns are
+ *    not damped and the lateral breathing is not exactly in phase);
+ *  - the ledger: W_ext + E0 = KE + SE + W_coh + the booked terms including L_damp, to
+ *    1e-9 of E0, and L_damp > 0;
+ *  - a quasi-static pull of the same bar (grip at speed 1e-3, no vibration) feels no
+ *    damping: the grip load at delta 0.2 is E1-free E H delta / L (the bar's elastic
+ *    slope; plane stress, free lateral faces) within 1 % with and without damping, and
+ *    the two loads agree to 0.1 % (the damping is proportional to the unbalanced force,
+ *    which a slowly pulled bar does not have);
+ *  - a damped decohesion run (fig8's bar at h 4, uGIMP, two velocity fields, MUSL, a
+ *    ten times faster grip) through the cut to delta 1 gives the same bits on 1 and 2
+ *    threads.
+ */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "mpm.h"
+#include "test_util.h"
+
+#define PI 3.14159265358979323846
+
+static mpm_scene bar_scene(double h)
+{
+  mpm_scene sc;
+  memset(&sc, 0, sizeof sc);
+  sc.L = 192.0;
+  sc.H = 32.0;
+  sc.E = 1024.0;
+  sc.nu = 0.25;
+  sc.rho = 1.0;
+  sc.model = MPM_DCOH_NONE;
+  sc.snf = sc.stf = sc.U0 = sc.s0 = sc.q = 1.0;
+  sc.sep_threshold = 0.98;
+  sc.imp_factor = 1.0;
+  sc.imp_stf_factor = 1.0;
+  sc.le_factor = 1.0;
+  sc.h = h;
+  sc.ppc = 1;
+  sc.scheme = MPM_SCHEME_MUSL;
+  sc.bc = MPM_BC_CONSISTENT;
+  sc.head = MPM_HEAD_NONE;
+  sc.vib_mode = 1;
+  sc.vib_amp = 0.03;
+  sc.dt = 0.1 * h / 8.0;
+  sc.speed = 1e-12;
+  sc.end_delta = 1e-9;
+  return sc;
+}
+
+static double booked(const mpm_energy *e)
+{
+  return e->L_bc + e->L_flip + e->L_scheme + e->W_head + e->L_contact + e->L_debris + e->L_damp;
+}
+
+/* Energy kept over `periods` of 2 L / c; the ledger's gap over E0 into *gap. */
+static double run_vib(double alpha, double periods, double *gap, double *ldamp)
+{
+  mpm_scene sc = bar_scene(8.0);
+  sc.damping = alpha;
+  sc.damping_tau = 1e6;
+  mpm_sim *s = NULL;
+  char err[256] = "";
+  if (mpm_sim_alloc(&sc, 1, &s, err, sizeof err) != MPM_OK)
+    fail_msg("mpm_sim_alloc: %s", err);
+  mpm_energy e0, e;
+  mpm_sim_energy(s, &e0);
+  const double E0 = e0.KE + e0.SE, T = 2.0 * sc.L / sqrt(sc.E / sc.rho);
+  const long n = lround(periods * T / sc.dt);
+  for (long k = 0; k < n; k++)
+    if (mpm_sim_step(s, err, sizeof err) != MPM_OK)
+      fail_msg("step %ld: %s", k, err);
+  mpm_sim_energy(s, &e);
+  *gap = fabs(e.W_ext + E0 - e.KE - e.SE - e.W_coh - booked(&e)) / E0;
+  *ldamp = e.L_damp / E0;
+  mpm_sim_free(s);
+  return (e.KE + e.SE) / E0;
+}
+
+static void test_damping_decay(void **state)
+{
+  (void)state;
+  const double alpha = 0.05, r = (1.0 - alpha) / (1.0 + alpha);
+  double gap0, gap, ld0, ld;
+  const double k0 = run_vib(0.0, 2.0, &gap0, &ld0), k = run_vib(alpha, 2.0, &gap, &ld);
+  print_message("kept: undamped %.5f, damped %.5f; (kept / undamped) / r^4 = %.4f; L_damp / E0 %.4f\n", k0, k,
+                k / k0 / pow(r, 4.0), ld);
+  assert_rel(k / k0, pow(r, 4.0), 0.02, "damped energy kept / undamped against ((1 - a) / (1 + a))^4");
+  assert_abs(gap0, 0.0, 1e-9, "ledger, undamped");
+  assert_abs(gap, 0.0, 1e-9, "ledger with L_damp");
+  assert_abs(ld0, 0.0, 0.0, "L_damp without damping");
+  assert_true(ld > 0.0);
+}
+
+/* Grip load at delta 0.2 of a slow pull (no vibration). */
+static double pull_load(double alpha)
+{
+  mpm_scene sc = bar_scene(8.0);
+  sc.vib_mode = 0;
+  sc.speed = 1e-3;
+  sc.end_delta = 0.25;
+  sc.damping = alpha;
+  mpm_sim *s = NULL;
+  char err[256] = "";
+  if (mpm_sim_alloc(&sc, 1, &s, err, sizeof err) != MPM_OK)
+    fail_msg("mpm_sim_alloc: %s", err);
+  while (mpm_sim_delta(s) < 0.2)
+    if (mpm_sim_step(s, err, sizeof err) != MPM_OK)
+      fail_msg("%s", err);
+  const double P = s->P_grip / mpm_sim_delta(s);
+  mpm_sim_free(s);
+  return P;
+}
+
+static void test_damping_quasistatic(void **state)
+{
+  (void)state;
+  const double k = 1024.0 * 32.0 / 192.0, k0 = pull_load(0.0), k1 = pull_load(0.05);
+  print_message("P / delta: analytic %.4f, undamped %.4f, damped %.4f\n", k, k0, k1);
+  assert_rel(k0, k, 0.01, "undamped slope against E H / L");
+  assert_rel(k1, k, 0.01, "damped slope against E H / L");
+  assert_rel(k1, k0, 1e-3, "damped slope against undamped");
+}
+
+static void test_damping_threads(void **state)
+{
+  (void)state;
+  mpm_scene sc = bar_scene(4.0);
+  sc.vib_mode = 0;
+  sc.head = MPM_HEAD_RIGID;
+  sc.model = MPM_DCOH_MODEL1;
+  sc.alpha_deg = 60.0;
+  sc.snf = 10.0;
+  sc.stf = 1.0;
+  sc.s0 = 10.0;
+  sc.U0 = 0.375;
+  sc.imp_factor = 0.9;
+  sc.imp_stf_factor = 0.9;
+  sc.imp_x = 96.0;
+  sc.imp_y = 16.0;
+  sc.shape = MPM_SHAPE_GIMP;
+  sc.fields = MPM_FIELDS_TWO;
+  sc.speed = 0.01;
+  sc.end_delta = 1.1;
+  sc.margin = 16.0;
+  sc.damping = 0.05;
+  mpm_sim *a = NULL, *b = NULL;
+  char err[256] = "";
+  if (mpm_sim_alloc(&sc, 1, &a, err, sizeof err) != MPM_OK || mpm_sim_alloc(&sc, 2, &b, err, sizeof err) != MPM_OK)
+    fail_msg("mpm_sim_alloc: %s", err);
+  const long n = lround(1.0 / (sc.speed * sc.dt));
+  for (long k = 0; k < n; k++)
+    if (mpm_sim_step(a, err, sizeof err) != MPM_OK || mpm_sim_step(b, err, sizeof err) != MPM_OK)
+      fail_msg("step %ld: %s", k, err);
+  print_message("cut %d, softened %ld, separated %ld, peak %.4g, L_damp %.4g\n", a->cut, a->n_soften, a->n_separate, a->P_peak, a->led.L_damp);
+  assert_true(a->cut && a->led.L_damp > 0.0);
+  const size_t nb = a->p->n * sizeof(double);
+  if (memcmp(a->p->x, b->p->x, nb) || memcmp(a->p->vx, b->p->vx, nb) || memcmp(a->p->sxx, b->p->sxx, nb) ||
+      memcmp(a->p->lam, b->p->lam, nb))
+    fail_msg("particle state differs between 1 and 2 threads");
+  mpm_energy ea, eb;
+  mpm_sim_energy(a, &ea);
+  mpm_sim_energy(b, &eb);
+  if (memcmp(&ea, &eb, sizeof ea))
+    fail_msg("energies or ledger differ between 1 and 2 threads");
+  mpm_sim_free(a);
+  mpm_sim_free(b);
+}
+
+int main(void)
+{
+  const struct CMUnitTest tests[] = {
+    cmocka_unit_test(test_damping_decay),
+    cmocka_unit_test(test_damping_quasistatic),
+    cmocka_unit_test(test_damping_threads),
+  };
+  return cmocka_run_group_tests(tests, NULL, NULL);
+}
