@@ -49,6 +49,9 @@ static const bench_case cases[] = {
   {"fig7", 2.0, 4, 4000, "gimp-two", "grid.shape=gimp grid.fields=two decohesion.Le=staircase", 1, 0},
   /* the fig7 file's method, timed through the softening, where the rows measure Le */
   {"fig7", 2.0, 4, 4000, "gimp-row", "grid.shape=gimp grid.fields=two decohesion.Le=row", 0, 0},
+  /* fig8's file (uGIMP, two fields, local damping), after the cut: the damping's serial node pass */
+  {"fig8", 2.0, 4, 4000, "damped", "", 1, 0},
+  {"fig8", 2.0, 4, 4000, "undamped", "time.damping=0", 1, 0},
 };
 
 /* A separated band along the failure plane through the bar's centre: in each particle

@@ -64,6 +64,7 @@ typedef struct {
   char scheme[16];      /* "usl" or "musl" (summary.json)                                     */
   char shape[16], fields[16], le[16]; /* "linear"/"gimp", "one"/"two", "cell"/... (summary.json) */
   double sep_threshold; /* the run's separation threshold (summary.json)                     */
+  double damping;       /* the run's time.damping (summary.json; 0 if absent)                 */
   /* measured here against the analytic bar */
   ana_bar bar;          /* the scene's analytic bar                                          */
   int bar_ok;

@@ -58,7 +58,7 @@ int ver_report_find_sweep(const rep_ctx *r, const char *scene, double h, int ppc
 }
 
 /* 1 if the run used its scene file's own method (scheme, shape, fields, Le, separation
- * threshold): only such runs join the sweep, not verify's variants. */
+ * threshold, damping): only such runs join the sweep, not verify's variants. */
 static int same_method(const rep_ctx *r, const ver_summary_doc *sd)
 {
   char path[REP_PATH + 64], err[256];
@@ -73,7 +73,8 @@ static int same_method(const rep_ctx *r, const ver_summary_doc *sd)
   for (int i = 0; i < 4; i++)
     if (m[i].run[0] && strcmp(m[i].run, ver_scene_word(&vs, m[i].sect, m[i].key)))
       return 0;
-  return !isfinite(sd->sep_threshold) || sd->sep_threshold == vs.sc.sep_threshold;
+  const double damping = isfinite(sd->damping) ? sd->damping : 0.0;
+  return (!isfinite(sd->sep_threshold) || sd->sep_threshold == vs.sc.sep_threshold) && damping == vs.sc.damping;
 }
 
 /* --from DIR: every DIR/<case>/summary.json run with the scene's defaults joins the sweep. */
@@ -138,7 +139,7 @@ static int needs_paper_run(const rep_ctx *r, const char *scene)
       return 0;
   return own.shape != vs.sc.shape || own.fields != vs.sc.fields || own.le_mode != vs.sc.le_mode ||
          own.imp_stf_factor != vs.sc.imp_stf_factor || own.scheme != vs.sc.scheme ||
-         own.node_mass != vs.sc.node_mass;
+         own.node_mass != vs.sc.node_mass || own.damping != vs.sc.damping;
 }
 
 /* The grid of a scene file (h 8, 1 ppc if it does not load). */

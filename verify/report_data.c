@@ -37,6 +37,7 @@ int ver_report_read_summary(rep_case *c)
   c->steps = u->steps;
   c->particles = (double)u->particles;
   c->sep_threshold = d.sep_threshold;
+  c->damping = isfinite(d.damping) ? d.damping : 0.0;
   snprintf(c->scheme, sizeof c->scheme, "%s", d.scheme);
   snprintf(c->shape, sizeof c->shape, "%s", d.shape);
   snprintf(c->fields, sizeof c->fields, "%s", d.fields);
@@ -95,7 +96,10 @@ void ver_report_measure(const rep_ctx *r, rep_case *c)
 
 void ver_report_method(const rep_case *c, char *buf, size_t len)
 {
-  snprintf(buf, len, "%s, %s, %s field%s, Le = %s", !strcmp(c->scheme, "musl") ? "MUSL" : "USL",
+  char damp[32] = "";
+  if (c->damping > 0.0)
+    snprintf(damp, sizeof damp, ", damping %g", c->damping);
+  snprintf(buf, len, "%s, %s, %s field%s, Le = %s%s", !strcmp(c->scheme, "musl") ? "MUSL" : "USL",
            !strcmp(c->shape, "gimp") ? "uGIMP" : "bilinear", c->fields[0] ? c->fields : "one",
-           !strcmp(c->fields, "two") ? "s" : "", c->le[0] ? c->le : "cell");
+           !strcmp(c->fields, "two") ? "s" : "", c->le[0] ? c->le : "cell", damp);
 }

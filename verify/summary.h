@@ -62,6 +62,7 @@ typedef struct {
   char scene[64];
   char scene_file[512];
   double h, dt, sep_threshold;
+  double damping;                /* time.damping (NaN if the file predates it: 0)   */
   int ppc;
   char le[16];                   /* "cell" or "particle"                             */
   char scheme[16];               /* "usl", "musl", "usf" or "usavg"                  */
