@@ -37,32 +37,10 @@
 
 #define PI 3.14159265358979323846
 
+/* vibration.ini's bar under MUSL with consistent boundaries (test_util.h). */
 static mpm_scene bar_scene(double h)
 {
-  mpm_scene sc;
-  memset(&sc, 0, sizeof sc);
-  sc.L = 192.0;
-  sc.H = 32.0;
-  sc.E = 1024.0;
-  sc.nu = 0.25;
-  sc.rho = 1.0;
-  sc.model = MPM_DCOH_NONE;
-  sc.snf = sc.stf = sc.U0 = sc.s0 = sc.q = 1.0;
-  sc.sep_threshold = 0.98;
-  sc.imp_factor = 1.0;
-  sc.imp_stf_factor = 1.0;
-  sc.le_factor = 1.0;
-  sc.h = h;
-  sc.ppc = 1;
-  sc.scheme = MPM_SCHEME_MUSL;
-  sc.bc = MPM_BC_CONSISTENT;
-  sc.head = MPM_HEAD_NONE;
-  sc.vib_mode = 1;
-  sc.vib_amp = 0.03;
-  sc.dt = 0.1 * h / 8.0;
-  sc.speed = 1e-12;
-  sc.end_delta = 1e-9;
-  return sc;
+  return tu_vib_scene(h, MPM_SCHEME_MUSL, MPM_BC_CONSISTENT);
 }
 
 static double booked(const mpm_energy *e)

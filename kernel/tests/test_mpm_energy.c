@@ -47,35 +47,6 @@ static const char *scheme_name(int s)
   return n[s];
 }
 
-/* The bar of vibration.ini at spacing h. */
-static mpm_scene vib_scene(double h, int scheme, int bc)
-{
-  mpm_scene sc;
-  memset(&sc, 0, sizeof sc);
-  sc.L = 192.0;
-  sc.H = 32.0;
-  sc.E = 1024.0;
-  sc.nu = 0.25;
-  sc.rho = 1.0;
-  sc.model = MPM_DCOH_NONE;
-  sc.snf = sc.stf = sc.U0 = sc.s0 = sc.q = 1.0;
-  sc.sep_threshold = 0.98;
-  sc.imp_factor = 1.0;
-  sc.imp_stf_factor = 1.0;
-  sc.le_factor = 1.0;
-  sc.h = h;
-  sc.ppc = 1;
-  sc.scheme = scheme;
-  sc.bc = bc;
-  sc.head = MPM_HEAD_NONE;
-  sc.vib_mode = 1;
-  sc.vib_amp = 0.03;
-  sc.dt = 0.1 * h / 8.0;
-  sc.speed = 1e-12;
-  sc.end_delta = 1e-9; /* only sizes the grid: the test counts steps */
-  return sc;
-}
-
 /* T = 2 L / c with Love's factor (see the top). */
 static double exact_period(const mpm_scene *sc)
 {
@@ -90,7 +61,7 @@ typedef struct {
 
 static void run_vib(double h, int scheme, int bc, double periods, vib_result *r)
 {
-  mpm_scene sc = vib_scene(h, scheme, bc);
+  mpm_scene sc = tu_vib_scene(h, scheme, bc);
   mpm_sim *s = NULL;
   char err[256] = "";
   if (mpm_sim_alloc(&sc, 1, &s, err, sizeof err) != MPM_OK)
@@ -214,7 +185,7 @@ static void test_brittle_ledger(void **state)
 {
   (void)state;
   for (int bc = 0; bc < 3; bc += 2) {
-    mpm_scene sc = vib_scene(8.0, MPM_SCHEME_USL, bc);
+    mpm_scene sc = tu_vib_scene(8.0, MPM_SCHEME_USL, bc);
     sc.vib_mode = 0;
     sc.head = MPM_HEAD_RIGID;
     sc.model = MPM_DCOH_MODEL1;
@@ -258,7 +229,7 @@ static void test_new_schemes_threads(void **state)
 {
   (void)state;
   for (int sch = MPM_SCHEME_USF; sch <= MPM_SCHEME_USAVG; sch++) {
-    mpm_scene sc = vib_scene(4.0, sch, MPM_BC_CONSISTENT);
+    mpm_scene sc = tu_vib_scene(4.0, sch, MPM_BC_CONSISTENT);
     sc.vib_mode = 0;
     sc.head = MPM_HEAD_RIGID;
     sc.model = MPM_DCOH_MODEL1;
