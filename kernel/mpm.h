@@ -83,6 +83,13 @@ enum { MPM_FIELDS_ONE = 0, MPM_FIELDS_TWO = 1 };
  * can integrate takes the acceleration with a mass floor in v^L (mpm_step.c, "Nodal
  * mass limit"); the particles' velocity increment keeps the lumped mass. */
 enum { MPM_NODEMASS_LUMPED = 0, MPM_NODEMASS_LIMITED = 1 };
+/* imperfection.size: PARTICLE, the paper's particle nearest (imp_x, imp_y); CELL, every
+ * particle of that particle's cell, so that the flaw is one cell at any ppc (the paper's
+ * flaw at its one particle per cell). */
+enum { MPM_IMP_PARTICLE = 0, MPM_IMP_CELL = 1 };
+/* time.damping_from (mpm_damping.c): the damping acts from the first step (START) or once
+ * the band has cut the bar (CUT). */
+enum { MPM_DAMP_START = 0, MPM_DAMP_CUT = 1 };
 
 /* ---- scene: everything a run needs, as plain numbers (filled by verify/scene.c) ---- */
 typedef struct {
@@ -101,6 +108,7 @@ typedef struct {
   double imp_factor;     /* snf multiplier at the imperfection particle (paper 0.9); 1 = none */
   double imp_stf_factor; /* stf multiplier there (1: the paper's imperfection, snf only)   */
   double imp_x, imp_y;   /* the imperfection sits at the particle nearest this point   */
+  int imp_size;          /* MPM_IMP_PARTICLE (the paper) or MPM_IMP_CELL               */
   double h;              /* grid spacing                                               */
   int ppc;               /* particles per cell, a perfect square (1, 4, 9, ...)        */
   double margin;         /* empty space around the bar (length; the left side adds the grip's travel) */
@@ -124,6 +132,8 @@ typedef struct {
   double damping;        /* local damping of the nodal accelerations, in [0, 1) (0: the
                             paper's undamped step; mpm_damping.c)                      */
   double damping_tau;    /* its low-pass time constant (0: 2 L / c)                    */
+  int damping_from;      /* MPM_DAMP_START (from the first step) or MPM_DAMP_CUT (from the
+                            band's cut on)                                             */
   double end_delta;      /* the run never goes past this end displacement              */
 } mpm_scene;
 

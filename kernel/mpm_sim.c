@@ -66,6 +66,7 @@ mpm_status mpm_scene_check(const mpm_scene *sc, char *err, size_t errlen)
     if (!(sc->sep_threshold > 0.0 && sc->sep_threshold <= 1.0)) BAD("decohesion.separation must be in (0, 1]");
     if (!(sc->imp_factor > 0.0 && sc->imp_factor <= 1.0)) BAD("imperfection.snf_factor must be in (0, 1]");
     if (!(sc->imp_stf_factor > 0.0 && sc->imp_stf_factor <= 1.0)) BAD("imperfection.stf_factor must be in (0, 1]");
+    if (sc->imp_size != MPM_IMP_PARTICLE && sc->imp_size != MPM_IMP_CELL) BAD("imperfection.size must be particle or cell");
   }
   if (!(sc->h > 0.0)) BAD("grid.h must be > 0");
   if (whole_cells(sc->L, sc->h) < 0 || whole_cells(sc->H, sc->h) < 0)
@@ -91,6 +92,7 @@ mpm_status mpm_scene_check(const mpm_scene *sc, char *err, size_t errlen)
     BAD("loading.control must be grip or dissipation");
   if (!(sc->damping >= 0.0 && sc->damping < 1.0)) BAD("time.damping must be in [0, 1)");
   if (!(sc->damping_tau >= 0.0 && isfinite(sc->damping_tau))) BAD("time.damping_tau must be >= 0 (0: 2 L / c)");
+  if (sc->damping_from != MPM_DAMP_CUT && sc->damping_from != MPM_DAMP_START) BAD("time.damping_from must be cut or start");
   if (sc->damping > 0.0 && sc->node_mass == MPM_NODEMASS_LIMITED && sc->shape == MPM_SHAPE_LINEAR &&
       (sc->scheme == MPM_SCHEME_USL || sc->scheme == MPM_SCHEME_USAVG))
     BAD("time.damping needs grid.node_mass = lumped here (the mass limit's v^L is not the node's velocity)");
@@ -254,8 +256,15 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
         imp = k;
       }
     }
-  if (sc->model && (sc->imp_factor < 1.0 || sc->imp_stf_factor < 1.0))
+  if (sc->model && (sc->imp_factor < 1.0 || sc->imp_stf_factor < 1.0)) {
     p->mat[imp] = MPM_MAT_IMP;
+    /* imperfection.size = cell: the whole cell of that particle (the same lattice cell
+     * index, so no rounding decides membership) */
+    const long ci = (long)(p->x0[imp] / h), cj = (long)(p->y0[imp] / h);
+    for (size_t q = 0; sc->imp_size == MPM_IMP_CELL && q < nbar; q++)
+      if ((long)(p->x0[q] / h) == ci && (long)(p->y0[q] / h) == cj)
+        p->mat[q] = MPM_MAT_IMP;
+  }
   /* The head: the same lattice continued MPM_HEAD_CELLS cells beyond x = 0, moving with
    * the grip. */
   for (int j = 0; nhead && j < cy * n1; j++)

@@ -614,6 +614,37 @@ static void test_mpm_bar_scene_check(void **state)
 
 /* (f) a particle thrown out of the grid: MPM_EDOMAIN from the step that finds it, with
  * a message that says so; a non-finite position: MPM_ENOTFINITE. */
+/* imperfection.size: the paper's single particle, or every particle of its cell: at
+ * ppc n the flaw is n particles, all in the h x h cell that holds the particle nearest
+ * (imp_x, imp_y), whose union is that cell (n particles of area h^2 / n). */
+static void test_mpm_bar_imperfection_size(void **state)
+{
+  (void)state;
+  for (int size = MPM_IMP_PARTICLE; size <= MPM_IMP_CELL; size++)
+    for (int ppc = 1; ppc <= 9; ppc += ppc == 1 ? 3 : 5) {
+      mpm_scene sc = fig6_scene();
+      sc.model = MPM_DCOH_MODEL1;
+      sc.imp_factor = 0.9;
+      sc.imp_x = 97.0; /* inside the cell [96, 104] x [16, 24] */
+      sc.imp_y = 17.0;
+      sc.imp_size = size;
+      sc.ppc = ppc;
+      mpm_sim *s = make_sim(&sc, 1);
+      const mpm_particles *p = s->p;
+      int n = 0;
+      double area = 0.0;
+      for (size_t k = 0; k < p->n; k++)
+        if (p->mat[k] == MPM_MAT_IMP) {
+          n++;
+          area += p->V[k];
+          assert_true(p->x0[k] > 96.0 && p->x0[k] < 104.0 && p->y0[k] > 16.0 && p->y0[k] < 24.0);
+        }
+      assert_int_equal(n, size == MPM_IMP_CELL ? ppc : 1);
+      assert_abs(area, size == MPM_IMP_CELL ? 64.0 : 64.0 / ppc, 1e-9, "the flaw's area");
+      mpm_sim_free(s);
+    }
+}
+
 static void test_mpm_bar_leaves_grid(void **state)
 {
   (void)state;
@@ -647,6 +678,7 @@ int main(void)
       cmocka_unit_test(test_mpm_bar_threads_bit_identical),
       cmocka_unit_test(test_mpm_bar_threads_switch),
       cmocka_unit_test(test_mpm_bar_scene_check),
+      cmocka_unit_test(test_mpm_bar_imperfection_size),
       cmocka_unit_test(test_mpm_bar_leaves_grid),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);

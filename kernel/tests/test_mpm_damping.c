@@ -19,7 +19,8 @@
  *    which a slowly pulled bar does not have);
  *  - a damped decohesion run (fig8's bar at h 4, uGIMP, two velocity fields, MUSL, a
  *    ten times faster grip) through the cut to delta 1 gives the same bits on 1 and 2
- *    threads.
+ *    threads, and up to the cut the bits of the same run undamped (time.damping_from =
+ *    cut: nothing acts before the band has cut the bar).
  */
 #include <math.h>
 #include <setjmp.h>
@@ -53,6 +54,7 @@ static double run_vib(double alpha, double periods, double *gap, double *ldamp)
 {
   mpm_scene sc = bar_scene(8.0);
   sc.damping = alpha;
+  sc.damping_from = MPM_DAMP_START; /* no band: from the first step */
   sc.damping_tau = 1e6;
   mpm_sim *s = NULL;
   char err[256] = "";
@@ -95,6 +97,7 @@ static double pull_load(double alpha)
   sc.speed = 1e-3;
   sc.end_delta = 0.25;
   sc.damping = alpha;
+  sc.damping_from = MPM_DAMP_START;
   mpm_sim *s = NULL;
   char err[256] = "";
   if (mpm_sim_alloc(&sc, 1, &s, err, sizeof err) != MPM_OK)
@@ -139,14 +142,33 @@ static void test_damping_threads(void **state)
   sc.end_delta = 1.1;
   sc.margin = 16.0;
   sc.damping = 0.05;
+  sc.damping_from = MPM_DAMP_CUT;
   mpm_sim *a = NULL, *b = NULL;
   char err[256] = "";
   if (mpm_sim_alloc(&sc, 1, &a, err, sizeof err) != MPM_OK || mpm_sim_alloc(&sc, 2, &b, err, sizeof err) != MPM_OK)
     fail_msg("mpm_sim_alloc: %s", err);
+  /* c: the same scene undamped, which up to the cut must be the damped run bit for bit
+   * (time.damping_from = cut) */
+  mpm_scene su = sc;
+  su.damping = 0.0;
+  mpm_sim *c = NULL;
+  if (mpm_sim_alloc(&su, 1, &c, err, sizeof err) != MPM_OK)
+    fail_msg("mpm_sim_alloc: %s", err);
   const long n = lround(1.0 / (sc.speed * sc.dt));
-  for (long k = 0; k < n; k++)
+  long precut = 0;
+  for (long k = 0; k < n; k++) {
     if (mpm_sim_step(a, err, sizeof err) != MPM_OK || mpm_sim_step(b, err, sizeof err) != MPM_OK)
       fail_msg("step %ld: %s", k, err);
+    if (!a->cut) {
+      if (mpm_sim_step(c, err, sizeof err) != MPM_OK)
+        fail_msg("undamped step %ld: %s", k, err);
+      if (memcmp(a->p->x, c->p->x, a->p->n * sizeof(double)) || memcmp(a->p->vx, c->p->vx, a->p->n * sizeof(double)))
+        fail_msg("step %ld, before the cut: the damped run differs from the undamped one", k);
+      precut++;
+    }
+  }
+  mpm_sim_free(c);
+  assert_true(precut > 100);
   print_message("cut %d, softened %ld, separated %ld, peak %.4g, L_damp %.4g\n", a->cut, a->n_soften, a->n_separate, a->P_peak, a->led.L_damp);
   assert_true(a->cut && a->led.L_damp > 0.0);
   const size_t nb = a->p->n * sizeof(double);
