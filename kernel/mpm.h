@@ -129,8 +129,9 @@ typedef struct {
   double dt;             /* time step                                                  */
   double speed;          /* grip speed (pulls the left end in -x)                      */
   int control;           /* MPM_CONTROL_GRIP (the paper) or MPM_CONTROL_DISSIPATION       */
-  double damping;        /* local damping of the nodal accelerations, in [0, 1) (0: the
-                            paper's undamped step; mpm_damping.c)                      */
+  double damping;        /* c: each node's velocity relaxes toward its slow drift at the
+                            rate c, 0 <= c dt < 1 (0: the paper's undamped step;
+                            mpm_damping.c)                                             */
   double damping_tau;    /* its low-pass time constant (0: 2 L / c)                    */
   int damping_from;      /* MPM_DAMP_START (from the first step) or MPM_DAMP_CUT (from the
                             band's cut on)                                             */

@@ -90,7 +90,8 @@ mpm_status mpm_scene_check(const mpm_scene *sc, char *err, size_t errlen)
   if (!(sc->speed > 0.0)) BAD("loading.speed must be > 0");
   if (sc->control != MPM_CONTROL_GRIP && sc->control != MPM_CONTROL_DISSIPATION)
     BAD("loading.control must be grip or dissipation");
-  if (!(sc->damping >= 0.0 && sc->damping < 1.0)) BAD("time.damping must be in [0, 1)");
+  if (!(sc->damping >= 0.0 && sc->damping * sc->dt < 1.0))
+    BAD("time.damping must be >= 0 and below 1 / time.dt = %g", 1.0 / sc->dt);
   if (!(sc->damping_tau >= 0.0 && isfinite(sc->damping_tau))) BAD("time.damping_tau must be >= 0 (0: 2 L / c)");
   if (sc->damping_from != MPM_DAMP_CUT && sc->damping_from != MPM_DAMP_START) BAD("time.damping_from must be cut or start");
   if (sc->damping > 0.0 && sc->node_mass == MPM_NODEMASS_LIMITED && sc->shape == MPM_SHAPE_LINEAR &&

@@ -52,7 +52,7 @@ const keydef ver_scene_keys[] = {
   {"grid", "ppc", K_INT, OFF(ppc), 1, 1, 1024, LO_CLOSED | HI_CLOSED, 0, "a perfect square: 1, 4, 9, ..."},
   {"grid", "margin", K_DBL, OFF(margin), 0, 0, 0, LO_CLOSED, 0, ">= 0: empty space around the bar, a length (one cell is always added)"},
   {"time", "dt", K_DBL, OFF(dt), 1, 0, 0, LO_OPEN, 0, "> 0 and below the CFL bound h / (c sqrt 2)"},
-  {"time", "damping", K_DBL, OFF(damping), 0, 0, 1, LO_CLOSED | HI_OPEN, 0, "in [0, 1): local damping of the nodal accelerations (0: none, the paper)"},
+  {"time", "damping", K_DBL, OFF(damping), 0, 0, 0, LO_CLOSED, 0, ">= 0 and below 1 / dt: a rate, the damping of each node's velocity about its slow drift (0: none, the paper)"},
   {"time", "damping_from", K_DAMPFROM, OFF(damping_from), 0, 0, 0, 0, MPM_DAMP_START, "start (from the first step) or cut (once the band has cut the bar)"},
   {"time", "damping_tau", K_DBL, OFF(damping_tau), 0, 0, 0, LO_CLOSED, 0, ">= 0: the damping's low-pass time (0: 2 L / c)"},
   {"time", "scheme", K_SCHEME, OFF(scheme), 0, 0, 0, 0, MPM_SCHEME_USL, "usl (the paper), musl, usf or usavg"},
