@@ -184,6 +184,21 @@ int ver_scene_validate(ver_scene *vs, char *err, size_t errlen)
   }
   if (check_steps(vs, err, errlen))
     return 2;
+  /* time.damping takes the share c dt of v - vbar out a step (mpm_damping.c): below 1, or
+   * it would overshoot; and the nodal mass limit's v^L is not the node's velocity. */
+  if (!(sc->damping * sc->dt < 1.0)) {
+    snprintf(err, errlen, "%s: time.damping: %g with time.dt = %g takes %g of the velocity about its drift a step "
+             "(allowed: below 1 / dt = %g)", ver_scene_key_at(vs, ver_scene_key_idx("time", "damping"), at, sizeof at),
+             sc->damping, sc->dt, sc->damping * sc->dt, 1.0 / sc->dt);
+    return 2;
+  }
+  if (sc->damping > 0.0 && sc->node_mass == MPM_NODEMASS_LIMITED && sc->shape == MPM_SHAPE_LINEAR &&
+      (sc->scheme == MPM_SCHEME_USL || sc->scheme == MPM_SCHEME_USAVG)) {
+    snprintf(err, errlen, "%s: time.damping: %g needs grid.node_mass = lumped with usl or usavg on linear shapes "
+             "(allowed: 0 here, or another node_mass, scheme or shape)",
+             ver_scene_key_at(vs, ver_scene_key_idx("time", "damping"), at, sizeof at), sc->damping);
+    return 2;
+  }
   /* Quasi-static: the grip must be slow against the wave speed (ver_scene_rate_ratio). */
   const double rr = ver_scene_rate_ratio(sc);
   if (!(rr <= VER_RATE_REFUSE)) {
