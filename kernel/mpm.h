@@ -138,6 +138,13 @@ typedef struct {
   double end_delta;      /* the run never goes past this end displacement              */
 } mpm_scene;
 
+/* The loading's steady velocity field, which the particles start with (no wave from the
+ * grip): -speed (L - x) / L on the bar, the grip's -speed left of it, 0 right of it. */
+static inline double mpm_scene_start_vx(const mpm_scene *sc, double x)
+{
+  return x <= 0.0 ? -sc->speed : x >= sc->L ? 0.0 : -sc->speed * (sc->L - x) / sc->L;
+}
+
 /* Checks a scene for physical sense; MPM_EINVAL and a message naming the key. */
 mpm_status mpm_scene_check(const mpm_scene *sc, char *err, size_t errlen);
 /* Critical time step h / (c sqrt 2), c = sqrt(E1 / rho) (measured; see mpm_sim.c). */

@@ -53,6 +53,7 @@ struct mpm_damping {
   double *del2;   /* ... second field                                                */
   uint8_t *held;  /* bit 0: x held, bit 1: y held                                     */
   size_t nn;
+  int on;         /* 1 if this step's delta may be nonzero (time.damping_from)      */
 };
 
 mpm_damping *mpm_damping_alloc(const mpm_sim *s)
@@ -77,10 +78,10 @@ mpm_damping *mpm_damping_alloc(const mpm_sim *s)
   const double tau = sc->damping_tau > 0.0 ? sc->damping_tau : 2.0 * sc->L / c;
   d->w = fmin(1.0, sc->dt / tau);
   /* the low-pass starts from the loading's own steady field, the one the particles start
-   * with (mpm_sim_alloc): -speed (L - x) / L on the bar, -speed left of it, 0 right of it */
+   * with (mpm_scene_start_vx) */
   const mpm_grid *g = s->g;
   for (int i = 0; i < g->nnx; i++) {
-    const double x = g->ox + i * g->hx, vx = -sc->speed * fmin(1.0, fmax(0.0, (sc->L - x) / sc->L));
+    const double vx = mpm_scene_start_vx(sc, g->ox + i * g->hx);
     for (int j = 0; j < g->nny; j++)
       d->vbar[2 * mpm_grid_node(g, i, j)] = d->vbar2[2 * mpm_grid_node(g, i, j)] = vx;
   }
@@ -149,6 +150,7 @@ void mpm_damping_apply(mpm_sim *s, double bfac)
   const mpm_fields *f = g->fld;
   const double mmin = MPM_MASS_EPS * s->mat[MPM_MAT_BAR].mp;
   const double alpha = s->sc.damping_from == MPM_DAMP_CUT && !s->cut ? 0.0 : d->alpha;
+  d->on = alpha != 0.0;
   damp_sums t = {0.0, 0.0, 0.0, 0.0};
   for (size_t k = 0; k < d->nn; k++) {
     mpm_node *n = &g->nd[k];
@@ -180,6 +182,8 @@ void mpm_damping_apply(mpm_sim *s, double bfac)
 void mpm_damping_musl(mpm_sim *s)
 {
   const mpm_damping *d = s->damp;
+  if (!d->on)
+    return; /* every delta of this step is 0 */
   const mpm_grid *g = s->g;
   const mpm_fields *f = g->fld;
   double B = 0.0;

@@ -245,7 +245,7 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
     for (int i = 0; i < cx * n1; i++, k++) {
       p->x[k] = p->x0[k] = (i + 0.5) * d;
       p->y[k] = p->y0[k] = (j + 0.5) * d;
-      p->vx[k] = -sc->speed * (sc->L - p->x[k]) / sc->L;
+      p->vx[k] = mpm_scene_start_vx(sc, p->x[k]);
       if (sc->vib_mode > 0) /* free vibration: mode m of the bar held at both ends */
         p->vx[k] += sc->vib_amp * sin(sc->vib_mode * 3.14159265358979323846 * p->x[k] / sc->L);
       p->m[k] = mp;
@@ -272,7 +272,7 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
     for (int i = -MPM_HEAD_CELLS * n1; i < 0; i++, k++) {
       p->x[k] = p->x0[k] = (i + 0.5) * d;
       p->y[k] = p->y0[k] = (j + 0.5) * d;
-      p->vx[k] = -sc->speed;
+      p->vx[k] = mpm_scene_start_vx(sc, p->x[k]); /* the head: the grip's speed */
       p->m[k] = mp;
       p->V[k] = d * d;
       p->mat[k] = MPM_MAT_HEAD;

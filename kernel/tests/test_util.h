@@ -8,7 +8,6 @@
 
 #include <math.h>
 #include <stdint.h>
-#include <string.h>
 
 /* |got - want| <= tol |want| (or <= tol when want == 0). */
 static inline void assert_rel(double got, double want, double tol, const char *what)
@@ -39,32 +38,12 @@ static inline double urand(uint64_t *s)
  * head, first axial mode), for the kernel tests that need it (include mpm.h first). */
 static inline mpm_scene tu_vib_scene(double h, int scheme, int bc)
 {
-  mpm_scene sc;
-  memset(&sc, 0, sizeof sc);
-  sc.L = 192.0;
-  sc.H = 32.0;
-  sc.E = 1024.0;
+  mpm_scene sc = mpm_mms_scene(h, scheme, bc); /* the same bar, grid and dt (mpm_mms.c) */
   sc.nu = 0.25;
-  sc.rho = 1.0;
-  sc.model = MPM_DCOH_NONE;
-  sc.snf = sc.stf = sc.U0 = sc.s0 = sc.q = 1.0;
-  sc.sep_threshold = 0.98;
-  sc.imp_factor = 1.0;
-  sc.imp_stf_factor = 1.0;
-  sc.le_factor = 1.0;
-  sc.h = h;
-  sc.ppc = 1;
-  sc.scheme = scheme;
-  sc.bc = bc;
-  sc.head = MPM_HEAD_NONE;
-  sc.vib_mode = 1;
   sc.vib_amp = 0.03;
-  sc.dt = 0.1 * h / 8.0;
-  sc.speed = 1e-12;
-  sc.end_delta = 1e-9; /* only sizes the grid: the test counts steps */
+  sc.body_amp = sc.body_omega = 0.0; /* free: no manufactured body force */
   return sc;
 }
-
 #endif
 
 #endif
