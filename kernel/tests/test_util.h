@@ -8,6 +8,7 @@
 
 #include <math.h>
 #include <stdint.h>
+#include <string.h>
 
 /* |got - want| <= tol |want| (or <= tol when want == 0). */
 static inline void assert_rel(double got, double want, double tol, const char *what)
@@ -36,6 +37,21 @@ static inline double urand(uint64_t *s)
 #ifdef DELAM_MPM_H
 /* The bar of data/scenes/vibration.ini at spacing h (elastic, held in x at both ends, no
  * head, first axial mode), for the kernel tests that need it (include mpm.h first). */
+/* Fails unless runs a and b (one thread and two) hold the same bits: particle positions,
+ * velocities, stresses and lambda, and every energy and ledger term. */
+static inline void tu_assert_same_bits(const mpm_sim *a, const mpm_sim *b, const char *what)
+{
+  const size_t nb = a->p->n * sizeof(double);
+  if (memcmp(a->p->x, b->p->x, nb) || memcmp(a->p->vx, b->p->vx, nb) || memcmp(a->p->sxx, b->p->sxx, nb) ||
+      memcmp(a->p->lam, b->p->lam, nb))
+    fail_msg("%s: particle state differs between 1 and 2 threads", what);
+  mpm_energy ea, eb;
+  mpm_sim_energy(a, &ea);
+  mpm_sim_energy(b, &eb);
+  if (memcmp(&ea, &eb, sizeof ea))
+    fail_msg("%s: energies or ledger differ between 1 and 2 threads", what);
+}
+
 static inline mpm_scene tu_vib_scene(double h, int scheme, int bc)
 {
   mpm_scene sc = mpm_mms_scene(h, scheme, bc); /* the same bar, grid and dt (mpm_mms.c) */
