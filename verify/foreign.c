@@ -191,7 +191,7 @@ void ver_foreign_measure(ver_case *c, const ver_table *ld, const ver_table *en, 
     const size_t m = (size_t)pt->n;
     c->band_width = ver_band_width(pt->col[0], pt->col[1], pt->col[2], m, VER_BAND_LAMBDA, sc->alpha_deg, sc->h,
                                    sc->ppc, sc->H, &c->band_extent, &c->band_count);
-    c->angle = ver_crack_angle(pt->col[0], pt->col[1], pt->col[2], m, VER_BAND_LAMBDA);
+    c->angle = ver_crack_angle(pt->col[0], pt->col[1], pt->col[2], m, sc->sep_threshold);
     if (c->have_ana && c->ana.D_sep > 0.0 && isfinite(c->D_final))
       c->D_diffuse = ver_diffuse_share(pt->col[2], m, VER_BAND_LAMBDA) * c->D_final / c->ana.D_sep;
   }

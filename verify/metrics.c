@@ -152,7 +152,7 @@ double ver_crack_angle(const double *x0, const double *y0, const double *lam, si
   double mx = 0, my = 0;
   size_t c = 0;
   for (size_t i = 0; i < n; i++)
-    if (lam[i] > thr) {
+    if (lam[i] >= thr) {
       mx += x0[i];
       my += y0[i];
       c++;
@@ -163,7 +163,7 @@ double ver_crack_angle(const double *x0, const double *y0, const double *lam, si
   my /= (double)c;
   double sxx = 0, syy = 0, sxy = 0;
   for (size_t i = 0; i < n; i++)
-    if (lam[i] > thr) {
+    if (lam[i] >= thr) {
       const double dx = x0[i] - mx, dy = y0[i] - my;
       sxx += dx * dx;
       syy += dy * dy;

@@ -49,7 +49,7 @@ double ver_band_width(const double *x0, const double *y0, const double *lam, siz
                       double alpha_deg, double h, int ppc, double H, double *extent, size_t *count);
 
 /* Angle in [0, 180) deg from the x-axis of the principal axis (total least squares
- * line) through the points with lambda > thr.  NaN if fewer than 2 points or if the
+ * line) through the points with lambda >= thr.  NaN if fewer than 2 points or if the
  * points have no preferred direction. */
 double ver_crack_angle(const double *x0, const double *y0, const double *lam, size_t n, double thr);
 

@@ -194,7 +194,8 @@ void ver_report_verdicts(report *R)
   verdict_all(R, cases);
 }
 
-/* The crack angle and band width (lambda > 0.5) of a case's final state. */
+/* The crack angle (the separated particles, lambda >= the run's separation threshold)
+ * and band width (lambda > 0.5) of a case's final state. */
 static void final_band(const rep_case *c, double *angle, double *band)
 {
   *angle = *band = NAN;
@@ -206,7 +207,7 @@ static void final_band(const rep_case *c, double *angle, double *band)
   double *v[3];
   const long n = ver_csv_read(p, cols, 3, v);
   if (n > 0) {
-    *angle = ver_crack_angle(v[0], v[1], v[2], (size_t)n, VER_BAND_LAMBDA);
+    *angle = ver_crack_angle(v[0], v[1], v[2], (size_t)n, c->sep_threshold);
     *band = ver_band_width(v[0], v[1], v[2], (size_t)n, VER_BAND_LAMBDA, c->bar.p.alpha_deg, c->h, c->ppc,
                            c->bar.p.H, NULL, NULL);
   }

@@ -278,7 +278,7 @@ void ver_case_read(const ver_verify_opts *o, ver_case *c)
     const double thr = VER_BAND_LAMBDA;
     c->band_width = ver_band_width(fc[0], fc[1], fc[2], (size_t)nf, thr, sc->alpha_deg, sc->h, sc->ppc, sc->H,
                                    &c->band_extent, &c->band_count);
-    c->angle = ver_crack_angle(fc[0], fc[1], fc[2], (size_t)nf, thr);
+    c->angle = ver_crack_angle(fc[0], fc[1], fc[2], (size_t)nf, sc->sep_threshold);
     if (c->have_ana && c->ana.D_sep > 0.0)
       c->D_diffuse = ver_diffuse_share(fc[2], (size_t)nf, thr) * c->D_final / c->ana.D_sep;
   }

@@ -110,12 +110,26 @@ static void test_ver_policy_inclined_known_limit(void **state)
   assert_int_equal(c.verdict, VER_KNOWN);
   /* D at +400 % is past the bound: fail */
   assert_int_equal(d_verdict(&c, 5.0), VER_FAIL);
-  /* an angle off by 12 deg fails (10 deg tolerance, no known-limit) with 8 cells
-   * across the bar; with 4 (h 8) it is known-limit (up to 30 deg), 32 off fails */
+  /* an angle off by 7 deg fails (5 deg tolerance, no known-limit at 1 ppc) with 8
+   * cells across the bar; so does 12 off; with 4 (h 8) it is known-limit (up to
+   * 30 deg), 32 off fails */
   c.D_final = c.ana.D_sep;
-  c.angle = 48;
   const double h0 = c.vs.sc.h;
   c.vs.sc.h = c.vs.sc.H / 8.0;
+  c.angle = 67;
+  ver_policy_case(&c);
+  assert_int_equal(chk(&c, "crack_angle")->verdict, VER_FAIL);
+  /* with several particles per cell 12 off is known-limit (the band turns toward the
+   * cell columns, up to 20 deg), 22 off fails */
+  c.vs.sc.ppc = 4;
+  c.angle = 72;
+  ver_policy_case(&c);
+  assert_int_equal(chk(&c, "crack_angle")->verdict, VER_KNOWN);
+  c.angle = 82;
+  ver_policy_case(&c);
+  assert_int_equal(chk(&c, "crack_angle")->verdict, VER_FAIL);
+  c.vs.sc.ppc = 1;
+  c.angle = 48;
   ver_policy_case(&c);
   assert_int_equal(chk(&c, "crack_angle")->verdict, VER_FAIL);
   c.vs.sc.h = c.vs.sc.H / 4.0;
