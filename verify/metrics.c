@@ -147,6 +147,24 @@ double ver_diffuse_share(const double *lam, size_t n, double thr)
   return all > 0.0 ? out / all : 0.0;
 }
 
+double ver_load_after(const double *delta, const double *P, size_t n, double from, double peak)
+{
+  if (!isfinite(from) || !isfinite(peak) || !(peak > 0.0) || n == 0)
+    return NAN;
+  double m = -1.0;
+  for (size_t i = 0; i < n; i++)
+    if (delta[i] >= from && isfinite(P[i]))
+      m = fmax(m, fabs(P[i]));
+  if (m < 0.0)
+    m = fabs(P[n - 1]);
+  return m / peak;
+}
+
+double ver_load_after_from(double delta_sep, double stop_margin)
+{
+  return delta_sep + (stop_margin > 0.0 ? stop_margin : 0.1);
+}
+
 double ver_crack_angle(const double *x0, const double *y0, const double *lam, size_t n, double thr)
 {
   double mx = 0, my = 0;

@@ -34,6 +34,16 @@ double ver_elastic_slope(const double *delta, const double *P, size_t n, double 
  * lo_frac * peak.  NaN if fewer than 3 rows qualify. */
 double ver_softening_slope(const double *delta, const double *P, size_t n, double hi_frac, double lo_frac);
 
+/* The load the grip still carries once the bar has separated: the largest |P| over the
+ * rows with delta >= from, over peak; if no row reaches from, the last row's |P| (what
+ * the run ended with).  NaN if from or peak is not finite and positive, or n is 0. */
+double ver_load_after(const double *delta, const double *P, size_t n, double from, double peak);
+
+/* Where ver_load_after starts: the detected separation plus the scene's stop margin
+ * (the margin past separation the scene gives its run to answer its question), or plus
+ * 0.1 of delta when the scene has none. */
+double ver_load_after_from(double delta_sep, double stop_margin);
+
 /* Width in delta of the load drop: from the first row after the (first) largest P
  * below 0.9 of it to the first row below 0.1 of it.  NaN if the load never falls
  * below 0.1 of its peak. */

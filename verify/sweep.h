@@ -19,7 +19,7 @@
 #include "verify.h"
 
 #define VER_MAXSET 4
-#define VER_NCHECK 12
+#define VER_NCHECK 16
 #define VER_MAXCROSS 64
 
 /* A variant of a scene: a suffix for the case id and the override it stands for. */
@@ -57,6 +57,7 @@ typedef struct {
   double energy_unbooked;      /* the balance without the booked losses (summary.json) */
   double k_soft, curve_l2, band_width, band_extent, angle;
   double D_diffuse;  /* dissipation outside the band, over U0 x area (ver_diffuse_share) */
+  double P_after;    /* largest |P| past separation, over the peak (ver_load_after)       */
   size_t band_count;
   ver_check chk[VER_NCHECK];
   int nchk;

@@ -217,7 +217,7 @@ void ver_case_read(const ver_verify_opts *o, ver_case *c)
   ver_case_dir(o, c, dir, sizeof dir);
   c->peak_P = c->delta_peak = c->delta_sep = c->k_elastic = NAN;
   c->D_final = c->W_ext_final = c->energy_residual = c->energy_unbooked = c->delta_end = NAN;
-  c->k_soft = c->curve_l2 = c->band_width = c->band_extent = c->angle = c->D_diffuse = NAN;
+  c->k_soft = c->curve_l2 = c->band_width = c->band_extent = c->angle = c->D_diffuse = c->P_after = NAN;
   ver_summary_doc sd;
   if (ver_summary_read(dir, &sd) == 0) {
     const ver_summary *u = &sd.u;
@@ -267,6 +267,9 @@ void ver_case_read(const ver_verify_opts *o, ver_case *c)
     c->k_soft = ver_softening_slope(lc[0], lc[1], (size_t)nl, VER_SOFT_HI, VER_SOFT_LO);
     c->curve_l2 = ver_curve_err_bar(&c->ana, lc[0], lc[1], (size_t)nl, ver_curve_end(&c->ana, c->vs.sc.sep_threshold), NULL);
   }
+  if (nl > 0)
+    c->P_after = ver_load_after(lc[0], lc[1], (size_t)nl, ver_load_after_from(c->delta_sep, c->vs.stop_margin),
+                                c->peak_P);
   for (int k = 0; k < 2; k++)
     free(lc[k]);
   static const char *const fcols[] = {"x0", "y0", "lambda"};

@@ -159,7 +159,7 @@ int ver_sweep_write_csv(const ver_verify_opts *o, const ver_case *cs, int n)
                           "# delam verify.csv schema %d\n"
                           "case,scene,variant,h,ppc,verdict,complete,exit_status,wall_s,peak_P,peak_err,"
                           "k_elastic_err,k_soft,k_soft_err,delta_sep,delta_sep_err,D_final,D_err,D_diffuse,W_ext_final,"
-                          "W_err,energy_residual,band_width,band_extent,crack_angle,curve_l2,n_fail,n_known,error\n",
+                          "W_err,energy_residual,band_width,band_extent,crack_angle,curve_l2,load_after_sep,n_fail,n_known,error\n",
                           VER_SCHEMA_VERIFY);
   for (int i = 0; i < n; i++) {
     const ver_case *c = &cs[i];
@@ -175,13 +175,13 @@ int ver_sweep_write_csv(const ver_verify_opts *o, const ver_case *cs, int n)
         *p = ' ';
     len += (size_t)snprintf(buf + len, cap - len,
                             "%s,%s,%s,%g,%d,%s,%d,%d,%.4g,%.9g,%.6g,%.6g,%.9g,%.6g,%.6g,%.6g,%.9g,%.6g,%.4g,%.9g,%.6g,"
-                            "%.6g,%.4g,%.4g,%.4g,%.6g,%d,%d,%s\n",
+                            "%.6g,%.4g,%.4g,%.4g,%.6g,%.4g,%d,%d,%s\n",
                             c->id, c->scene, c->var.suffix, c->vs.sc.h, c->vs.sc.ppc, ver_verdict_name(c->verdict),
                             c->complete, c->exit_code, c->wall_s, c->peak_P, chk_err(c, "peak_P"),
                             chk_err(c, "k_elastic"), c->k_soft, chk_err(c, "k_soft"), c->delta_sep,
                             chk_err(c, "delta_sep"), c->D_final, chk_err(c, "D_final"), c->D_diffuse, c->W_ext_final,
                             chk_err(c, "W_ext_final"), c->energy_residual, c->band_width, c->band_extent, c->angle,
-                            c->curve_l2, nf, nk, err);
+                            c->curve_l2, c->P_after, nf, nk, err);
     if (len >= cap - 1)
       break;
   }

@@ -437,6 +437,29 @@ static void test_ver_metrics_value_at_row(void **state)
   assert_true(isnan(ver_value_at(d, D, N, NAN)));
 }
 
+/* The load after separation: a ringing 0.4 P0 cos(w t) exp(-t / tau) past delta 1 is
+ * largest, from delta 1.5 on, at the first row there: its |P| / peak is known in closed
+ * form; from past the last row, the last row's; a zero peak, NaN. */
+static void test_ver_metrics_load_after(void **state)
+{
+  (void)state;
+  enum { N = 2001 };
+  double d[N], P[N];
+  const double P0 = 80.0, tau = 0.2;
+  for (int i = 0; i < N; i++) {
+    d[i] = 2.0 * i / (N - 1);
+    P[i] = d[i] <= 1.0 ? P0 * d[i] : 0.4 * P0 * cos(2.0 * PI * 40.0 * (d[i] - 1.0)) * exp(-(d[i] - 1.0) / tau);
+  }
+  /* delta 1.5 is row 1500, a whole number of periods past 1: cos = 1 there */
+  assert_rel(ver_load_after(d, P, N, 1.5, P0), 0.4 * exp(-0.5 / tau), 1e-9, "first row past 1.5");
+  assert_true(fabs(ver_load_after(d, P, N, 0.0, P0) - 1.0) < 1e-12);
+  assert_rel(ver_load_after(d, P, N, 2.5, P0), 0.4 * exp(-1.0 / tau), 1e-9, "the last row");
+  assert_true(isnan(ver_load_after(d, P, N, 1.5, 0.0)));
+  assert_true(isnan(ver_load_after(d, P, N, NAN, P0)));
+  assert_rel(ver_load_after_from(1.0, 0.2), 1.2, 1e-12, "the stop margin");
+  assert_rel(ver_load_after_from(1.0, 0.0), 1.1, 1e-12, "0.1 without a margin");
+}
+
 int main(void)
 {
   const struct CMUnitTest tests[] = {
@@ -459,6 +482,7 @@ int main(void)
     cmocka_unit_test(test_ver_metrics_energy_residual),
     cmocka_unit_test(test_ver_metrics_gci),
     cmocka_unit_test(test_ver_metrics_value_at_row),
+    cmocka_unit_test(test_ver_metrics_load_after),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

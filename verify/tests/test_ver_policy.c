@@ -73,7 +73,7 @@ static void test_ver_policy_fig6_pass_and_fail(void **state)
   fig6_case(&c, 4);
   ver_policy_case(&c);
   assert_int_equal(c.verdict, VER_PASS);
-  assert_int_equal(c.nchk, 11);
+  assert_int_equal(c.nchk, 12);
   /* peak 0.9 % low at 4 ppc: inside 1 %; 1.1 %: fails (pass-class, no known-limit) */
   c.peak_P = 0.991 * c.ana.Pmax;
   ver_policy_case(&c);
@@ -144,6 +144,51 @@ static void test_ver_policy_inclined_known_limit(void **state)
   c.angle = 179.5;
   ver_policy_case(&c);
   assert_true(fabs(chk(&c, "crack_angle")->error + 0.5) < 1e-12);
+}
+
+/* Once separated the grip carries under 2 % of the peak: pass-class at 90 deg and with
+ * two fields; an inclined band on one field is known-limit to 60 %; no separation, no
+ * check. */
+static void test_ver_policy_load_after_sep(void **state)
+{
+  (void)state;
+  ver_case c;
+  fig6_case(&c, 1);
+  c.P_after = 0.015;
+  ver_policy_case(&c);
+  assert_int_equal(chk(&c, "load_after_sep")->verdict, VER_PASS);
+  c.P_after = 0.03;
+  ver_policy_case(&c);
+  assert_int_equal(chk(&c, "load_after_sep")->verdict, VER_FAIL);
+  c.vs.sc.alpha_deg = 60;
+  c.vs.sc.fields = MPM_FIELDS_ONE;
+  c.P_after = 0.35; /* the paper's method: a plateau near a third of the peak */
+  ver_policy_case(&c);
+  assert_int_equal(chk(&c, "load_after_sep")->verdict, VER_KNOWN);
+  c.P_after = 0.7;
+  ver_policy_case(&c);
+  assert_int_equal(chk(&c, "load_after_sep")->verdict, VER_FAIL);
+  c.vs.sc.fields = MPM_FIELDS_TWO;
+  c.P_after = 0.4; /* the separated part ringing at +-40 % */
+  ver_policy_case(&c);
+  assert_int_equal(chk(&c, "load_after_sep")->verdict, VER_FAIL);
+  c.P_after = 0.01;
+  ver_policy_case(&c);
+  assert_int_equal(chk(&c, "load_after_sep")->verdict, VER_PASS);
+  /* a separation threshold of 0.8 drops 20 % of the strength at once: known-limit to
+   * 0.2, past it a fail */
+  c.vs.sc.sep_threshold = 0.8;
+  c.P_after = 0.16;
+  ver_policy_case(&c);
+  assert_int_equal(chk(&c, "load_after_sep")->verdict, VER_KNOWN);
+  c.P_after = 0.25;
+  ver_policy_case(&c);
+  assert_int_equal(chk(&c, "load_after_sep")->verdict, VER_FAIL);
+  /* nothing separated: the separation check fails, this one is not made */
+  c.delta_sep = NAN;
+  ver_policy_case(&c);
+  for (int i = 0; i < c.nchk; i++)
+    assert_string_not_equal(c.chk[i].name, "load_after_sep");
 }
 
 /* The band method (two fields, Le = staircase) on an inclined scene: D must be U0 x
@@ -256,6 +301,7 @@ int main(void)
   const struct CMUnitTest tests[] = {
     cmocka_unit_test(test_ver_policy_fig6_pass_and_fail),
     cmocka_unit_test(test_ver_policy_inclined_known_limit),
+    cmocka_unit_test(test_ver_policy_load_after_sep),
     cmocka_unit_test(test_ver_policy_band_method),
     cmocka_unit_test(test_ver_policy_snapback_softening),
     cmocka_unit_test(test_ver_policy_cross),
