@@ -160,11 +160,6 @@ double ver_load_after(const double *delta, const double *P, size_t n, double fro
   return m / peak;
 }
 
-double ver_load_after_from(double delta_sep, double stop_margin)
-{
-  return delta_sep + (stop_margin > 0.0 ? stop_margin : 0.1);
-}
-
 double ver_crack_angle(const double *x0, const double *y0, const double *lam, size_t n, double thr)
 {
   double mx = 0, my = 0;

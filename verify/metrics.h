@@ -39,10 +39,11 @@ double ver_softening_slope(const double *delta, const double *P, size_t n, doubl
  * the run ended with).  NaN if from or peak is not finite and positive, or n is 0. */
 double ver_load_after(const double *delta, const double *P, size_t n, double from, double peak);
 
-/* Where ver_load_after starts: the detected separation plus the scene's stop margin
- * (the margin past separation the scene gives its run to answer its question), or plus
- * 0.1 of delta when the scene has none. */
-double ver_load_after_from(double delta_sep, double stop_margin);
+/* Where ver_load_after starts, past the detected separation: 0.1 of delta, the scene
+ * files' stop margin (100 time units at their grip speed 0.001, eight transits of the
+ * bar's wave, 2 L / c = 12): time for the release after the cut to pass.
+ * `delam verify` runs its cases 0.2 past separation so that the window holds rows. */
+#define VER_LOAD_SETTLE 0.1
 
 /* Width in delta of the load drop: from the first row after the (first) largest P
  * below 0.9 of it to the first row below 0.1 of it.  NaN if the load never falls

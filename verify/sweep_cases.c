@@ -97,6 +97,10 @@ int ver_case_init(ver_case *c, const char *path, const char *scene, double h, in
    * reader, and snapshots later than separation would keep the run going */
   snprintf(c->sets[c->nset++], sizeof c->sets[0], "output.snapshots=0");
   snprintf(c->sets[c->nset++], sizeof c->sets[0], "run.end_delta=%.6g", c->end_delta);
+  /* twice the load check's settling past separation, so that load_after_sep reads
+   * rows from VER_LOAD_SETTLE to 2 VER_LOAD_SETTLE (policy.c) */
+  if (c->vs.stop_margin > 0.0 && c->vs.stop_margin < 2.0 * VER_LOAD_SETTLE)
+    snprintf(c->sets[c->nset++], sizeof c->sets[0], "run.stop_margin=%.6g", 2.0 * VER_LOAD_SETTLE);
   if (v.set)
     snprintf(c->sets[c->nset++], sizeof c->sets[0], "%s", v.set);
   if (build_scene(path, h, ppc, c->sets, c->nset, &c->vs, err, len))
@@ -268,7 +272,7 @@ void ver_case_read(const ver_verify_opts *o, ver_case *c)
     c->curve_l2 = ver_curve_err_bar(&c->ana, lc[0], lc[1], (size_t)nl, ver_curve_end(&c->ana, c->vs.sc.sep_threshold), NULL);
   }
   if (nl > 0)
-    c->P_after = ver_load_after(lc[0], lc[1], (size_t)nl, ver_load_after_from(c->delta_sep, c->vs.stop_margin),
+    c->P_after = ver_load_after(lc[0], lc[1], (size_t)nl, c->delta_sep + VER_LOAD_SETTLE,
                                 c->peak_P);
   for (int k = 0; k < 2; k++)
     free(lc[k]);

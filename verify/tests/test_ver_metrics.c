@@ -456,8 +456,6 @@ static void test_ver_metrics_load_after(void **state)
   assert_rel(ver_load_after(d, P, N, 2.5, P0), 0.4 * exp(-1.0 / tau), 1e-9, "the last row");
   assert_true(isnan(ver_load_after(d, P, N, 1.5, 0.0)));
   assert_true(isnan(ver_load_after(d, P, N, NAN, P0)));
-  assert_rel(ver_load_after_from(1.0, 0.2), 1.2, 1e-12, "the stop margin");
-  assert_rel(ver_load_after_from(1.0, 0.0), 1.1, 1e-12, "0.1 without a margin");
 }
 
 int main(void)

@@ -176,9 +176,16 @@ static void test_ver_policy_load_after_sep(void **state)
   ver_policy_case(&c);
   assert_int_equal(chk(&c, "load_after_sep")->verdict, VER_PASS);
   /* a separation threshold of 0.8 drops 20 % of the strength at once: known-limit to
-   * 0.2, past it a fail */
+   * 0.02 + 0.2, past it a fail; at 0.98, to 0.04 */
+  c.vs.sc.sep_threshold = 0.98;
+  c.P_after = 0.03;
+  ver_policy_case(&c);
+  assert_int_equal(chk(&c, "load_after_sep")->verdict, VER_KNOWN);
+  c.P_after = 0.05;
+  ver_policy_case(&c);
+  assert_int_equal(chk(&c, "load_after_sep")->verdict, VER_FAIL);
   c.vs.sc.sep_threshold = 0.8;
-  c.P_after = 0.16;
+  c.P_after = 0.21;
   ver_policy_case(&c);
   assert_int_equal(chk(&c, "load_after_sep")->verdict, VER_KNOWN);
   c.P_after = 0.25;
