@@ -63,6 +63,7 @@ typedef struct {
   char error[256];      /* summary.json "error", if any                                       */
   char scheme[16];      /* "usl" or "musl" (summary.json)                                     */
   char shape[16], fields[16], le[16]; /* "linear"/"gimp", "one"/"two", "cell"/... (summary.json) */
+  char damping_from[16];                /* "start" or "cut" (summary.json; "" if absent)        */
   double sep_threshold; /* the run's separation threshold (summary.json)                     */
   double damping;       /* the run's time.damping (summary.json; 0 if absent)                 */
   /* measured here against the analytic bar */

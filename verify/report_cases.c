@@ -68,9 +68,9 @@ static int same_method(const rep_ctx *r, const ver_summary_doc *sd)
     return 0;
   const struct {
     const char *run, *sect, *key;
-  } m[4] = {{sd->scheme, "time", "scheme"}, {sd->shape, "grid", "shape"}, {sd->fields, "grid", "fields"},
-            {sd->le, "decohesion", "Le"}};
-  for (int i = 0; i < 4; i++)
+  } m[5] = {{sd->scheme, "time", "scheme"}, {sd->shape, "grid", "shape"}, {sd->fields, "grid", "fields"},
+            {sd->le, "decohesion", "Le"}, {sd->damping_from, "time", "damping_from"}};
+  for (int i = 0; i < 5; i++)
     if (m[i].run[0] && strcmp(m[i].run, ver_scene_word(&vs, m[i].sect, m[i].key)))
       return 0;
   const double damping = isfinite(sd->damping) ? sd->damping : 0.0;

@@ -80,6 +80,7 @@ int ver_summary_write(const char *dir, const ver_scene *vs, const ver_summary *u
   cJSON_AddStringToObject(o, "shape", ver_scene_word(vs, "grid", "shape"));
   cJSON_AddNumberToObject(o, "separation_threshold", vs->sc.sep_threshold);
   cJSON_AddNumberToObject(o, "damping", vs->sc.damping);
+  cJSON_AddStringToObject(o, "damping_from", ver_scene_word(vs, "time", "damping_from"));
   cJSON_AddBoolToObject(o, "complete", u->complete);
   if (errmsg && errmsg[0])
     cJSON_AddStringToObject(o, "error", errmsg);
@@ -168,6 +169,7 @@ int ver_summary_read(const char *dir, ver_summary_doc *d)
   jstr(o, "scheme", d->scheme, sizeof d->scheme);
   jstr(o, "shape", d->shape, sizeof d->shape);
   jstr(o, "fields", d->fields, sizeof d->fields);
+  jstr(o, "damping_from", d->damping_from, sizeof d->damping_from);
   jstr(o, "error", d->error, sizeof d->error);
   d->h = jnum(o, "h");
   d->dt = jnum(o, "dt");

@@ -68,6 +68,7 @@ typedef struct {
   char scheme[16];               /* "usl", "musl", "usf" or "usavg"                  */
   char shape[16];                /* "linear" or "gimp"                               */
   char fields[16];               /* "one" or "two" velocity fields                   */
+  char damping_from[16];         /* "start" or "cut" ("" if the file predates it)   */
   char error[512];               /* "" if none                                       */
   ver_summary u;                 /* numbers missing from the file read as NaN        */
 } ver_summary_doc;
