@@ -73,7 +73,7 @@ static void known(ver_check *k, double lo, double hi)
  *    30 deg with four cells or fewer across the bar, and to 20 deg with several
  *    particles per cell, where the band turns toward the cell columns (fig7 h 4, 4 ppc:
  *    70.5 deg against 60).
- *  - peak load, elastic slope, energy balance and crack angle are pass-class everywhere.
+ *  - peak load, elastic slope and energy balance are pass-class everywhere.
  */
 
 /* What decides a case's classes (see above). */
@@ -280,8 +280,7 @@ static void check_band(ver_case *c, const case_class *q)
   /* once separated the grip carries under 2 % of the peak (issue 13), at every load
    * row from VER_LOAD_SETTLE past separation on (the release's ringing has that long
    * to pass): the mean is not enough, a separated part ringing at +-40 % averages to
-   * nothing.  One velocity field on an
-   * inclined band couples the parts after the cut (the paper's method: a plateau near
+   * nothing.  One velocity field on an inclined band couples the parts after the cut (the paper's method: a plateau near
    * a third of the peak at fig8 h 8, docs/bands.md): known-limit to 60 %.  A
    * separation threshold below 1 drops the traction still left, 1 - threshold of the
    * strength, at once: the bar rings with up to that share of the peak (fig6 h 8, 4 ppc,

@@ -18,7 +18,7 @@
 #include "scene.h"
 #include "verify.h"
 
-#define VER_MAXSET 4
+#define VER_MAXSET 6
 #define VER_NCHECK 16
 #define VER_MAXCROSS 64
 
