@@ -33,7 +33,7 @@ const char *mpm_strerror(mpm_status s);
  * h max(|sin a|, |cos a|), exact for a band one cell wide per row; PARTICLE, the same
  * for the particle's square; STAIRCASE, h (|sin a| + |cos a|), the width of the
  * narrowest band of cells that can open along an inclined line (mpm_sim.c). */
-enum { MPM_LE_CELL = 0, MPM_LE_PARTICLE = 1, MPM_LE_STAIRCASE = 2, MPM_LE_ROW = 3 };
+enum { MPM_LE_CELL = 0, MPM_LE_PARTICLE = 1, MPM_LE_STAIRCASE = 2, MPM_LE_ROW = 3, MPM_LE_ZONE = 4 };
 enum { MPM_DCOH_NONE = 0, MPM_DCOH_MODEL1 = 1, MPM_DCOH_MODEL2 = 2 };
 /* USL: strain from v^L (the paper, eq. 7).  MUSL: strain from the nodal velocity
  * re-projected from the updated particle velocities, which keeps nearly empty nodes
@@ -295,9 +295,13 @@ typedef struct {
                               the largest min(lambda, 1) reached                        */
   double *lam;             /* each row's crack state: the largest min(lambda, 1) in it   */
   double *sum;             /* each row's softening so far, the sum of its particles' dlambda */
+  double *xl;              /* each row's lead: the x0 of its particle with the largest lambda */
+  double reach;            /* Le = zone: only the particles within this x0 distance of the
+                              row's lead count in sum (2 h + dx: their supports touch the
+                              lead's); 0 for Le = row, every particle of the row counts  */
 } mpm_band;
 
-mpm_band *mpm_band_alloc(int nrow, int nstrip, double dy, double wlen, double le0);
+mpm_band *mpm_band_alloc(int nrow, int nstrip, double dy, double wlen, double le0, double reach);
 void mpm_band_free(mpm_band *b);
 void mpm_band_step(mpm_band *b);
 static inline int mpm_band_row(const mpm_band *b, double y0)

@@ -14,9 +14,19 @@
  * lam_r the row's largest lambda, so a particle that softens a little beside the band
  * counts a little (mpm_band_step has what that charges).
  *
- * Threads: each strip sums its particles' dlambda per row in particle order; the rows'
- * sums are reduced in strip order after the gather, so any thread count gives the
- * same bits.
+ * Le = zone counts in S only the particles near the row's lead (the particle with the
+ * row's largest lambda, as of the last step): those within 2 h + dx of it in x0, whose
+ * uGIMP supports (half-width h + dx / 2) touch the lead's.  Before the band localizes
+ * the whole bar is near its strength and particles far along the row soften by
+ * 0.001-0.03 and stop; with `row` they count in S and the band's own particles are
+ * charged less (the low bias, docs/bands.md sec. 3 and 5g); a particle that cannot
+ * share a node with the lead cannot be part of the lead's zone.  No constant: h, dx and
+ * the shape's support.
+ *
+ * Threads: each strip sums its particles' dlambda per row in particle order and keeps
+ * its row's largest lambda with the first particle (in list order) that reached it;
+ * the rows are reduced in strip order after the gather, a later strip's lead taking
+ * over only with a strictly larger lambda, so any thread count gives the same bits.
  */
 #include <math.h>
 #include <stdlib.h>
@@ -24,7 +34,7 @@
 
 #include "mpm.h"
 
-mpm_band *mpm_band_alloc(int nrow, int nstrip, double dy, double wlen, double le0)
+mpm_band *mpm_band_alloc(int nrow, int nstrip, double dy, double wlen, double le0, double reach)
 {
   mpm_band *b = calloc(1, sizeof *b);
   if (!b)
@@ -34,10 +44,12 @@ mpm_band *mpm_band_alloc(int nrow, int nstrip, double dy, double wlen, double le
   b->idy = 1.0 / dy;
   b->wlen = wlen;
   b->le0 = le0;
-  b->acc = calloc((size_t)nrow * (size_t)nstrip * 2, sizeof *b->acc);
+  b->acc = calloc((size_t)nrow * (size_t)nstrip * 3, sizeof *b->acc);
+  b->xl = calloc((size_t)nrow, sizeof *b->xl);
+  b->reach = reach;
   b->lam = calloc((size_t)nrow, sizeof *b->lam);
   b->sum = calloc((size_t)nrow, sizeof *b->sum);
-  if (!b->acc || !b->lam || !b->sum) {
+  if (!b->acc || !b->lam || !b->sum || !b->xl) {
     mpm_band_free(b);
     return NULL;
   }
@@ -51,10 +63,12 @@ void mpm_band_free(mpm_band *b)
   free(b->acc);
   free(b->lam);
   free(b->sum);
+  free(b->xl);
   free(b);
 }
 
-/* After the step's gather (strips reduced in order): the row's crack state lam_r is the
+/* After the step's gather (strips reduced in order): the row's lead moves to the particle
+ * that passed the row's largest lambda so far; the row's crack state lam_r is the
  * largest min(lambda, 1) of its particles (1 once one has separated), S the sum of
  * every dlambda its particles have softened, and the next step's Le (mpm_band_le) is
  * k wlen with k = S / lam_r, the number of particles the zone holds, each counted by its share of
@@ -66,14 +80,19 @@ void mpm_band_step(mpm_band *b)
 {
   const size_t nr = (size_t)b->nrow;
   for (size_t j = 0; j < nr; j++) {
-    double sum = 0.0, mx = 0.0;
+    double sum = 0.0, mx = 0.0, xm = 0.0;
     for (int q = 0; q < b->nstrip; q++) {
-      const double *a = b->acc + 2 * ((size_t)q * nr + j);
+      const double *a = b->acc + 3 * ((size_t)q * nr + j);
       sum += a[0];
-      mx = fmax(mx, a[1]);
+      if (a[1] > mx) {
+        mx = a[1];
+        xm = a[2];
+      }
     }
+    if (mx > b->lam[j])
+      b->xl[j] = xm;
     b->lam[j] = fmax(b->lam[j], mx);
     b->sum[j] += sum;
   }
-  memset(b->acc, 0, 2 * nr * (size_t)b->nstrip * sizeof *b->acc);
+  memset(b->acc, 0, 3 * nr * (size_t)b->nstrip * sizeof *b->acc);
 }

@@ -55,7 +55,7 @@ mpm_status mpm_scene_check(const mpm_scene *sc, char *err, size_t errlen)
   if (!(sc->nu > -1.0 && sc->nu < 0.5)) BAD("material.nu must be in (-1, 0.5)");
   if (!(sc->rho > 0.0)) BAD("material.rho must be > 0");
   if (sc->model < 0 || sc->model > 2) BAD("decohesion.model must be 0, 1 or 2");
-  if (sc->le_mode < MPM_LE_CELL || sc->le_mode > MPM_LE_ROW) BAD("decohesion.Le must be cell, particle, staircase or row");
+  if (sc->le_mode < MPM_LE_CELL || sc->le_mode > MPM_LE_ZONE) BAD("decohesion.Le must be cell, particle, staircase, row or zone");
   if (!(sc->le_factor > 0.0 && sc->le_factor <= 100.0)) BAD("decohesion.Le_factor must be in (0, 100]");
   if (sc->model) {
     if (!(sc->alpha_deg >= 0.0 && sc->alpha_deg < 180.0)) BAD("decohesion.alpha must be in [0, 180)");
@@ -204,12 +204,14 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
    * step's corner has to strain with the band for it to open (a node there belongs to
    * both sides), so the narrowest band that can separate is 1 + |cot a| cells wide per
    * row: the band's volume per unit crack length is h (|sin a| + |cos a|). */
-  const int stair = sc->le_mode == MPM_LE_STAIRCASE || sc->le_mode == MPM_LE_ROW;
+  const int rows = sc->le_mode == MPM_LE_ROW || sc->le_mode == MPM_LE_ZONE;
+  const int stair = sc->le_mode == MPM_LE_STAIRCASE || rows;
   const double Le = sc->le_factor * (stair ? h * (fabs(sin(a)) + fabs(cos(a))) : side * fmax(fabs(sin(a)), fabs(cos(a))));
   /* ROW: each row starts from the staircase length and then measures its own
-   * (mpm_band.c); a row is dy = h / n high and its particles dx = h / n wide. */
-  if (sc->le_mode == MPM_LE_ROW &&
-      !(s->band = mpm_band_alloc(s->nrow, s->nstrip, h / n1, sc->le_factor * (h / n1) * fabs(sin(a)), Le))) {
+   * (mpm_band.c); a row is dy = h / n high and its particles dx = h / n wide.  ZONE: the
+   * same, counting only the particles within 2 h + dx of the row's lead. */
+  if (rows && !(s->band = mpm_band_alloc(s->nrow, s->nstrip, h / n1, sc->le_factor * (h / n1) * fabs(sin(a)), Le,
+                                         sc->le_mode == MPM_LE_ZONE ? 2.0 * h + h / n1 : 0.0))) {
     mpm_sim_free(s);
     snprintf(err, errlen, "out of memory for the rows' Le");
     return MPM_ENOMEM;

@@ -162,10 +162,15 @@ static __attribute__((noinline)) double constitutive_flush(const mpm_sim *s, int
       /* Le = row: a particle's dissipation ends where it separates, the rest of its
        * 1 - lambda charged at the row's Le then */
       dd = m->U0 * (info.path == MPM_DPATH_SEPARATE ? 1.0 - fmin(in.lam, 1.0) : dl) * p->V[k] / m->Le;
-      double *a = b->acc + 2 * ((size_t)q * (size_t)b->nrow + (size_t)j);
-      if (info.path == MPM_DPATH_SOFTEN)
+      double *a = b->acc + 3 * ((size_t)q * (size_t)b->nrow + (size_t)j);
+      if (info.path == MPM_DPATH_SOFTEN &&
+          (b->reach <= 0.0 || !(b->lam[j] > 0.0) || fabs(p->x0[k] - b->xl[j]) <= b->reach))
         a[0] += dl;
-      a[1] = fmax(a[1], o.sep ? 1.0 : fmin(o.lam, 1.0)); /* a separated particle: the row's crack is through */
+      const double lv = o.sep ? 1.0 : fmin(o.lam, 1.0); /* a separated particle: the row's crack is through */
+      if (lv > a[1]) {
+        a[1] = lv;
+        a[2] = p->x0[k];
+      }
     }
     p->dis[k] += dd;
     s->led_part[q][MPM_LED_D] += dd;

@@ -83,7 +83,7 @@ typedef struct {
   int lep;      /* Le = particle with several particles per cell    */
   int ppc1;     /* one particle per cell                            */
   double nside; /* sqrt(ppc)                                        */
-  int band;     /* inclined, with two fields and Le = staircase or row */
+  int band;     /* inclined, with two fields and Le = staircase, row or zone */
   int row;      /* ... Le = row: the zone measured, at every ppc      */
 } case_class;
 
@@ -333,8 +333,9 @@ void ver_policy_case(ver_case *c)
   const case_class q = {a90, c->ana.snapback, sc->le_mode == MPM_LE_PARTICLE && sc->ppc > 1, sc->ppc == 1,
                         sqrt((double)sc->ppc),
                         !a90 && sc->fields == MPM_FIELDS_TWO &&
-                            (sc->le_mode == MPM_LE_STAIRCASE || sc->le_mode == MPM_LE_ROW),
-                        sc->le_mode == MPM_LE_ROW};
+                            (sc->le_mode == MPM_LE_STAIRCASE || sc->le_mode == MPM_LE_ROW ||
+                             sc->le_mode == MPM_LE_ZONE),
+                        sc->le_mode == MPM_LE_ROW || sc->le_mode == MPM_LE_ZONE};
   c->nchk = 0;
   check_run(c);
   check_peak_elastic(c, &q);

@@ -41,7 +41,7 @@ const keydef ver_scene_keys[] = {
   {"decohesion", "q", K_DBL, OFF(q), 2, 0, 0, LO_OPEN, 0, "> 0"},
   {"decohesion", "separation", K_DBL, OFF(sep_threshold), 0, 0, 1, LO_OPEN | HI_CLOSED, 0.98, "in (0, 1]"},
   {"decohesion", "eta", K_DBL, OFF(eta), 0, 0, 1e6, LO_CLOSED | HI_CLOSED, 0, "in [0, 1e6]: viscosity, a time (0: the paper's rate-independent law)"},
-  {"decohesion", "Le", K_LE, OFF(le_mode), 0, 0, 0, 0, MPM_LE_CELL, "cell, particle, staircase or row"},
+  {"decohesion", "Le", K_LE, OFF(le_mode), 0, 0, 0, 0, MPM_LE_CELL, "cell, particle, staircase, row or zone"},
   {"decohesion", "Le_factor", K_DBL, OFF(le_factor), 0, 0, 100, LO_OPEN | HI_CLOSED, 1.0, "in (0, 100]: Le times this"},
   {"imperfection", "snf_factor", K_DBL, OFF(imp_factor), 0, 0, 1, LO_OPEN | HI_CLOSED, 1.0, "in (0, 1]"},
   {"imperfection", "stf_factor", K_DBL, OFF(imp_stf_factor), 0, 0, 1, LO_OPEN | HI_CLOSED, 1.0, "in (0, 1]"},
@@ -83,7 +83,7 @@ static const struct {
   const char *word;
   int value;
 } ENUMS[] = {
-  {K_LE, "cell", MPM_LE_CELL}, {K_LE, "particle", MPM_LE_PARTICLE}, {K_LE, "staircase", MPM_LE_STAIRCASE}, {K_LE, "row", MPM_LE_ROW},
+  {K_LE, "cell", MPM_LE_CELL}, {K_LE, "particle", MPM_LE_PARTICLE}, {K_LE, "staircase", MPM_LE_STAIRCASE}, {K_LE, "row", MPM_LE_ROW}, {K_LE, "zone", MPM_LE_ZONE},
   {K_SCHEME, "usl", MPM_SCHEME_USL}, {K_SCHEME, "musl", MPM_SCHEME_MUSL}, {K_SCHEME, "usf", MPM_SCHEME_USF},
   {K_SCHEME, "usavg", MPM_SCHEME_USAVG},
   {K_BC, "lagrangian", MPM_BC_LAGRANGIAN}, {K_BC, "both", MPM_BC_BOTH}, {K_BC, "consistent", MPM_BC_CONSISTENT},
