@@ -58,7 +58,8 @@ int ver_report_find_sweep(const rep_ctx *r, const char *scene, double h, int ppc
 }
 
 /* 1 if the run used its scene file's own method (scheme, shape, fields, Le, separation
- * threshold, damping): only such runs join the sweep, not verify's variants. */
+ * threshold, damping, grip speed): only such runs join the sweep, not verify's variants
+ * (the rate study's slower grip would join the work-precision line otherwise). */
 static int same_method(const rep_ctx *r, const ver_summary_doc *sd)
 {
   char path[REP_PATH + 64], err[256];
@@ -74,7 +75,8 @@ static int same_method(const rep_ctx *r, const ver_summary_doc *sd)
     if (m[i].run[0] && strcmp(m[i].run, ver_scene_word(&vs, m[i].sect, m[i].key)))
       return 0;
   const double damping = isfinite(sd->damping) ? sd->damping : 0.0;
-  return (!isfinite(sd->sep_threshold) || sd->sep_threshold == vs.sc.sep_threshold) && damping == vs.sc.damping;
+  return (!isfinite(sd->sep_threshold) || sd->sep_threshold == vs.sc.sep_threshold) && damping == vs.sc.damping &&
+         (!isfinite(sd->speed) || sd->speed == vs.sc.speed);
 }
 
 /* --from DIR: every DIR/<case>/summary.json run with the scene's defaults joins the sweep. */
