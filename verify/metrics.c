@@ -147,10 +147,11 @@ double ver_diffuse_share(const double *lam, size_t n, double thr)
   return all > 0.0 ? out / all : 0.0;
 }
 
-double ver_load_after(const double *delta, const double *P, size_t n, double from, double peak)
+double ver_load_after(const double *delta, const double *P, size_t n, double delta_sep, double peak)
 {
-  if (!isfinite(from) || !isfinite(peak) || !(peak > 0.0) || n == 0)
+  if (!isfinite(delta_sep) || !isfinite(peak) || !(peak > 0.0) || n == 0)
     return NAN;
+  const double from = delta_sep + VER_LOAD_SETTLE;
   double m = -1.0;
   for (size_t i = 0; i < n; i++)
     if (delta[i] >= from && isfinite(P[i]))

@@ -34,16 +34,17 @@ double ver_elastic_slope(const double *delta, const double *P, size_t n, double 
  * lo_frac * peak.  NaN if fewer than 3 rows qualify. */
 double ver_softening_slope(const double *delta, const double *P, size_t n, double hi_frac, double lo_frac);
 
-/* The load the grip still carries once the bar has separated: the largest |P| over the
- * rows with delta >= from, over peak; if no row reaches from, the last row's |P| (what
- * the run ended with).  NaN if from or peak is not finite and positive, or n is 0. */
-double ver_load_after(const double *delta, const double *P, size_t n, double from, double peak);
-
-/* Where ver_load_after starts, past the detected separation: 0.1 of delta, the scene
+/* How far past the detected separation ver_load_after starts: 0.1 of delta, the scene
  * files' stop margin (100 time units at their grip speed 0.001, eight transits of the
  * bar's wave, 2 L / c = 12): time for the release after the cut to pass.
  * `delam verify` runs its cases 0.2 past separation so that the window holds rows. */
 #define VER_LOAD_SETTLE 0.1
+
+/* The load the grip still carries once the bar has separated at delta_sep: the largest
+ * |P| over the rows with delta >= delta_sep + VER_LOAD_SETTLE, over peak; if no row
+ * reaches it, the last row's |P| (what the run ended with).  NaN if delta_sep or peak is
+ * not finite and positive, or n is 0. */
+double ver_load_after(const double *delta, const double *P, size_t n, double delta_sep, double peak);
 
 /* Width in delta of the load drop: from the first row after the (first) largest P
  * below 0.9 of it to the first row below 0.1 of it.  NaN if the load never falls

@@ -280,8 +280,9 @@ static void check_band(ver_case *c, const case_class *q)
   /* once separated the grip carries under 2 % of the peak (issue 13), at every load
    * row from VER_LOAD_SETTLE past separation on (the release's ringing has that long
    * to pass): the mean is not enough, a separated part ringing at +-40 % averages to
-   * nothing.  One velocity field on an inclined band couples the parts after the cut (the paper's method: a plateau near
-   * a third of the peak at fig8 h 8, docs/bands.md): known-limit to 60 %.  A
+   * nothing.  One velocity field on an inclined band couples the parts after the cut
+   * (the paper's method: a plateau near a third of the peak at fig8 h 8,
+   * docs/bands.md): known-limit to 60 %.  A
    * separation threshold below 1 drops the traction still left, 1 - threshold of the
    * strength, at once: the bar rings with up to that share of the peak (fig6 h 8, 4 ppc,
    * threshold 0.8: 19 %; at the paper's 0.98, fig6 h 2, 4 ppc: 1.97 %): known-limit to

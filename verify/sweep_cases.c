@@ -272,8 +272,7 @@ void ver_case_read(const ver_verify_opts *o, ver_case *c)
     c->curve_l2 = ver_curve_err_bar(&c->ana, lc[0], lc[1], (size_t)nl, ver_curve_end(&c->ana, c->vs.sc.sep_threshold), NULL);
   }
   if (nl > 0)
-    c->P_after = ver_load_after(lc[0], lc[1], (size_t)nl, c->delta_sep + VER_LOAD_SETTLE,
-                                c->peak_P);
+    c->P_after = ver_load_after(lc[0], lc[1], (size_t)nl, c->delta_sep, c->peak_P);
   for (int k = 0; k < 2; k++)
     free(lc[k]);
   static const char *const fcols[] = {"x0", "y0", "lambda"};

@@ -35,8 +35,6 @@ static inline double urand(uint64_t *s)
 }
 
 #ifdef DELAM_MPM_H
-/* The bar of data/scenes/vibration.ini at spacing h (elastic, held in x at both ends, no
- * head, first axial mode), for the kernel tests that need it (include mpm.h first). */
 /* Fails unless runs a and b (one thread and two) hold the same bits: particle positions,
  * velocities, stresses and lambda, and every energy and ledger term. */
 static inline void tu_assert_same_bits(const mpm_sim *a, const mpm_sim *b, const char *what)
@@ -52,6 +50,8 @@ static inline void tu_assert_same_bits(const mpm_sim *a, const mpm_sim *b, const
     fail_msg("%s: energies or ledger differ between 1 and 2 threads", what);
 }
 
+/* The bar of data/scenes/vibration.ini at spacing h (elastic, held in x at both ends, no
+ * head, first axial mode), for the kernel tests that need it (include mpm.h first). */
 static inline mpm_scene tu_vib_scene(double h, int scheme, int bc)
 {
   mpm_scene sc = mpm_mms_scene(h, scheme, bc); /* the same bar, grid and dt (mpm_mms.c) */

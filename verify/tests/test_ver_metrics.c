@@ -451,10 +451,12 @@ static void test_ver_metrics_load_after(void **state)
     P[i] = d[i] <= 1.0 ? P0 * d[i] : 0.4 * P0 * cos(2.0 * PI * 40.0 * (d[i] - 1.0)) * exp(-(d[i] - 1.0) / tau);
   }
   /* delta 1.5 is row 1500, a whole number of periods past 1: cos = 1 there */
-  assert_rel(ver_load_after(d, P, N, 1.5, P0), 0.4 * exp(-0.5 / tau), 1e-9, "first row past 1.5");
-  assert_true(fabs(ver_load_after(d, P, N, 0.0, P0) - 1.0) < 1e-12);
-  assert_rel(ver_load_after(d, P, N, 2.5, P0), 0.4 * exp(-1.0 / tau), 1e-9, "the last row");
-  assert_true(isnan(ver_load_after(d, P, N, 1.5, 0.0)));
+  /* separation at 1.5 - VER_LOAD_SETTLE: the window opens at 1.5 */
+  const double s = VER_LOAD_SETTLE;
+  assert_rel(ver_load_after(d, P, N, 1.5 - s, P0), 0.4 * exp(-0.5 / tau), 1e-9, "first row past 1.5");
+  assert_true(fabs(ver_load_after(d, P, N, 0.0 - s, P0) - 1.0) < 1e-12);
+  assert_rel(ver_load_after(d, P, N, 2.5 - s, P0), 0.4 * exp(-1.0 / tau), 1e-9, "the last row");
+  assert_true(isnan(ver_load_after(d, P, N, 1.5 - s, 0.0)));
   assert_true(isnan(ver_load_after(d, P, N, NAN, P0)));
 }
 
