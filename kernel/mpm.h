@@ -90,6 +90,13 @@ enum { MPM_IMP_PARTICLE = 0, MPM_IMP_CELL = 1 };
 /* time.damping_from (mpm_damping.c): the damping acts from the first step (START) or once
  * the band has cut the bar (CUT). */
 enum { MPM_DAMP_START = 0, MPM_DAMP_CUT = 1 };
+/* decohesion.path: where the bar may soften.  FREE (the paper): every particle.  LINE:
+ * only the particles whose reference centre lies within h (|sin a| + |cos a|) / 2 +
+ * path_reach h of the failure line through the imperfection (the cells that line
+ * crosses, widened by path_reach cells); the others are elastic (MPM_MAT_ELASTIC).  A
+ * laminate delaminates along its ply interface: the crack's path is the plane at alpha
+ * through where it starts (docs/bands.md sec. 3c). */
+enum { MPM_PATH_FREE = 0, MPM_PATH_LINE = 1 };
 
 /* ---- scene: everything a run needs, as plain numbers (filled by verify/scene.c) ---- */
 typedef struct {
@@ -109,6 +116,8 @@ typedef struct {
   double imp_stf_factor; /* stf multiplier there (1: the paper's imperfection, snf only)   */
   double imp_x, imp_y;   /* the imperfection sits at the particle nearest this point   */
   int imp_size;          /* MPM_IMP_PARTICLE (the paper) or MPM_IMP_CELL               */
+  int path;              /* MPM_PATH_FREE (the paper) or MPM_PATH_LINE                 */
+  double path_reach;     /* LINE: the band's half-width beyond the crossed cells, in cells */
   double h;              /* grid spacing                                               */
   int ppc;               /* particles per cell, a perfect square (1, 4, 9, ...)        */
   double margin;         /* empty space around the bar (length; the left side adds the grip's travel) */
@@ -394,8 +403,8 @@ typedef struct {
 
 typedef struct {
   mpm_scene sc;            /* copy of the scene                                        */
-  mpm_material mat[4];     /* MPM_MAT_BAR, MPM_MAT_IMP (the imperfection), MPM_MAT_HEAD,
-                              MPM_MAT_DEBRIS */
+  mpm_material mat[5];     /* MPM_MAT_BAR, MPM_MAT_IMP (the imperfection), MPM_MAT_HEAD,
+                              MPM_MAT_DEBRIS, MPM_MAT_ELASTIC */
   size_t nhead;            /* particles of the rigid head (p->n - nhead are the bar's)  */
   uint32_t *head;          /* their indices, ascending (rebuilt by each sort)          */
   double head_dy;          /* the head's vertical displacement (it moves as one body)   */
@@ -461,7 +470,9 @@ enum { MPM_T_SORT = 0, MPM_T_P2G, MPM_T_GRID, MPM_T_G2P, MPM_T_CONST };
  * separation).  Head particles are left out of the energies and the snapshots. */
 /* MPM_MAT_DEBRIS: a separated particle that left the grid (mpm_step.c, "Debris"): no
  * mass, no stiffness, no strength; it keeps its lambda, dis and wcoh. */
-enum { MPM_MAT_BAR = 0, MPM_MAT_IMP = 1, MPM_MAT_HEAD = 2, MPM_MAT_DEBRIS = 3 };
+/* MPM_MAT_ELASTIC: the bar off the crack's path (decohesion.path = line): the bar's
+ * stiffness and mass, no strength test. */
+enum { MPM_MAT_BAR = 0, MPM_MAT_IMP = 1, MPM_MAT_HEAD = 2, MPM_MAT_DEBRIS = 3, MPM_MAT_ELASTIC = 4 };
 #define MPM_HEAD_CELLS 2
 #define MPM_STRIP 4        /* columns of cells per strip (>= 3: see mpm_sort.c)           */
 #define MPM_SORT_EVERY 64  /* steps between sorts (quasi-static: particles move ~1e-5 h a

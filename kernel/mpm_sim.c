@@ -230,6 +230,9 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
   s->mat[MPM_MAT_DEBRIS].model = MPM_DCOH_NONE; /* as the head: derive sets fn = ft = 0 */
   s->mat[MPM_MAT_DEBRIS].E1 = s->mat[MPM_MAT_DEBRIS].E2 = s->mat[MPM_MAT_DEBRIS].G = 0.0;
   mpm_material_derive(&s->mat[MPM_MAT_DEBRIS]);
+  s->mat[MPM_MAT_ELASTIC] = s->mat[MPM_MAT_BAR];
+  s->mat[MPM_MAT_ELASTIC].model = MPM_DCOH_NONE; /* fn = ft = 0: the elastic trial always holds */
+  mpm_material_derive(&s->mat[MPM_MAT_ELASTIC]);
   s->nhead = nhead;
 
   /* Particles at the centres of an n x n subdivision of each cell.  The velocity starts
@@ -239,6 +242,7 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
   const double d = h / n1, mp = sc->rho * d * d;
   for (int i = 0; i < 3; i++)
     s->mat[i].mp = mp; /* the head has the bar's density */
+  s->mat[MPM_MAT_ELASTIC].mp = mp;
   s->mat[MPM_MAT_DEBRIS].mp = 0.0;
   size_t k = 0;
   double best = INFINITY;
@@ -267,6 +271,15 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
     for (size_t q = 0; sc->imp_size == MPM_IMP_CELL && q < nbar; q++)
       if ((long)(p->x0[q] / h) == ci && (long)(p->y0[q] / h) == cj)
         p->mat[q] = MPM_MAT_IMP;
+  }
+  /* decohesion.path = line: the bar softens only within h (|sin a| + |cos a|) / 2 +
+   * path_reach h of the line at alpha through the imperfection's particle (n . (X - X_imp),
+   * n the failure plane's normal); at 1 ppc and path_reach 0, the cells the line crosses. */
+  if (sc->model && sc->path == MPM_PATH_LINE) {
+    const double sa = sin(a), ca = cos(a), w = 0.5 * h * (fabs(sa) + fabs(ca)) + sc->path_reach * h;
+    for (size_t q = 0; q < nbar; q++)
+      if (p->mat[q] == MPM_MAT_BAR && fabs(sa * (p->x0[q] - p->x0[imp]) - ca * (p->y0[q] - p->y0[imp])) > w)
+        p->mat[q] = MPM_MAT_ELASTIC;
   }
   /* The head: the same lattice continued MPM_HEAD_CELLS cells beyond x = 0, moving with
    * the grip. */

@@ -69,12 +69,14 @@ static int same_method(const rep_ctx *r, const ver_summary_doc *sd)
     return 0;
   const struct {
     const char *run, *sect, *key;
-  } m[5] = {{sd->scheme, "time", "scheme"}, {sd->shape, "grid", "shape"}, {sd->fields, "grid", "fields"},
-            {sd->le, "decohesion", "Le"}, {sd->damping_from, "time", "damping_from"}};
-  for (int i = 0; i < 5; i++)
+  } m[6] = {{sd->scheme, "time", "scheme"}, {sd->shape, "grid", "shape"}, {sd->fields, "grid", "fields"},
+            {sd->le, "decohesion", "Le"}, {sd->damping_from, "time", "damping_from"}, {sd->path, "decohesion", "path"}};
+  for (int i = 0; i < 6; i++)
     if (m[i].run[0] && strcmp(m[i].run, ver_scene_word(&vs, m[i].sect, m[i].key)))
       return 0;
   const double damping = isfinite(sd->damping) ? sd->damping : 0.0;
+  if (isfinite(sd->path_reach) && !strcmp(sd->path, "line") && sd->path_reach != vs.sc.path_reach)
+    return 0;
   return (!isfinite(sd->sep_threshold) || sd->sep_threshold == vs.sc.sep_threshold) && damping == vs.sc.damping &&
          (!isfinite(sd->speed) || sd->speed == vs.sc.speed);
 }
@@ -141,7 +143,8 @@ static int needs_paper_run(const rep_ctx *r, const char *scene)
       return 0;
   return own.shape != vs.sc.shape || own.fields != vs.sc.fields || own.le_mode != vs.sc.le_mode ||
          own.imp_stf_factor != vs.sc.imp_stf_factor || own.scheme != vs.sc.scheme ||
-         own.node_mass != vs.sc.node_mass || own.damping != vs.sc.damping || own.imp_size != vs.sc.imp_size;
+         own.node_mass != vs.sc.node_mass || own.damping != vs.sc.damping || own.imp_size != vs.sc.imp_size ||
+         own.path != vs.sc.path;
 }
 
 /* The grid of a scene file (h 8, 1 ppc if it does not load). */

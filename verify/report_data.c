@@ -42,6 +42,8 @@ int ver_report_read_summary(rep_case *c)
   snprintf(c->shape, sizeof c->shape, "%s", d.shape);
   snprintf(c->fields, sizeof c->fields, "%s", d.fields);
   snprintf(c->damping_from, sizeof c->damping_from, "%s", d.damping_from);
+  snprintf(c->path, sizeof c->path, "%s", d.path);
+  c->path_reach = d.path_reach;
   snprintf(c->le, sizeof c->le, "%s", d.le);
   snprintf(c->error, sizeof c->error, "%.255s", d.error);
   return 0;
@@ -100,7 +102,10 @@ void ver_report_method(const rep_case *c, char *buf, size_t len)
   char damp[64] = "";
   if (c->damping > 0.0)
     snprintf(damp, sizeof damp, ", damping %g%s", c->damping, !strcmp(c->damping_from, "cut") ? " from the cut" : "");
-  snprintf(buf, len, "%s, %s, %s field%s, Le = %s%s", !strcmp(c->scheme, "musl") ? "MUSL" : "USL",
+  char path[64] = "";
+  if (!strcmp(c->path, "line"))
+    snprintf(path, sizeof path, ", path on the line (+%g cells)", c->path_reach);
+  snprintf(buf, len, "%s, %s, %s field%s, Le = %s%s%s", !strcmp(c->scheme, "musl") ? "MUSL" : "USL",
            !strcmp(c->shape, "gimp") ? "uGIMP" : "bilinear", c->fields[0] ? c->fields : "one",
-           !strcmp(c->fields, "two") ? "s" : "", c->le[0] ? c->le : "cell", damp);
+           !strcmp(c->fields, "two") ? "s" : "", c->le[0] ? c->le : "cell", path, damp);
 }

@@ -433,6 +433,71 @@ static void test_mpm_bar_inclined_zone_energy(void **state)
   mpm_sim_free(s);
 }
 
+/* (b3) decohesion.path = line (the a45 geometry, h 4, 4 ppc, Le = zone, damped from the
+ * cut, one cell of reach): (i) no particle farther than h (|sin a| + |cos a|) / 2 + h
+ * from the line at alpha through the imperfection softens at all, and particles nearer
+ * it are the bar's own material; (ii) D within 10 % of U0 H / sin a; (iii) the
+ * separated particles' principal axis lies within 5 deg of alpha (issue 13's test). */
+static void test_mpm_bar_path_line(void **state)
+{
+  (void)state;
+  mpm_scene sc = band_scene();
+  sc.alpha_deg = 45.0;
+  sc.h = 4.0;
+  sc.dt = 0.05;
+  sc.ppc = 4;
+  sc.le_mode = MPM_LE_ZONE;
+  sc.damping = 0.1;
+  sc.damping_from = MPM_DAMP_CUT;
+  sc.path = MPM_PATH_LINE;
+  sc.path_reach = 1.0;
+  sc.end_delta = 0.55;
+  mpm_sim *s = make_sim(&sc, 1);
+  run_steps(s, lround(sc.end_delta / (sc.speed * sc.dt)));
+  assert_true(s->cut);
+  const mpm_particles *p = s->p;
+  const double a = sc.alpha_deg * (3.14159265358979323846 / 180.0);
+  const double w = 0.5 * sc.h * (fabs(sin(a)) + fabs(cos(a))) + sc.path_reach * sc.h;
+  size_t imp = p->n;
+  for (size_t k = 0; k < p->n; k++)
+    if (p->mat[k] == MPM_MAT_IMP)
+      imp = k;
+  assert_true(imp < p->n);
+  double sx = 0, sy = 0, sxx = 0, syy = 0, sxy = 0, ns = 0;
+  long outside = 0, inside_bar = 0;
+  for (size_t k = 0; k < p->n; k++) {
+    if (p->mat[k] == MPM_MAT_HEAD)
+      continue;
+    const double dist = fabs(sin(a) * (p->x0[k] - p->x0[imp]) - cos(a) * (p->y0[k] - p->y0[imp]));
+    if (dist > w) {
+      outside++;
+      if (p->lam[k] != 0.0 || p->mat[k] != MPM_MAT_ELASTIC)
+        fail_msg("particle %zu at %g from the line (band %g): lambda %g, material %d", k, dist, w, p->lam[k],
+                 (int)p->mat[k]);
+    } else {
+      inside_bar += p->mat[k] == MPM_MAT_BAR;
+    }
+    if (p->lam[k] >= 0.98) {
+      ns++;
+      sx += p->x0[k];
+      sy += p->y0[k];
+      sxx += p->x0[k] * p->x0[k];
+      syy += p->y0[k] * p->y0[k];
+      sxy += p->x0[k] * p->y0[k];
+    }
+  }
+  assert_true(outside > 0 && inside_bar > 0);
+  assert_true(ns > 2);
+  const double cxx = sxx / ns - (sx / ns) * (sx / ns), cyy = syy / ns - (sy / ns) * (sy / ns);
+  const double cxy = sxy / ns - (sx / ns) * (sy / ns);
+  const double ang = fmod(0.5 * atan2(2.0 * cxy, cxx - cyy) * (180.0 / 3.14159265358979323846) + 180.0, 180.0);
+  assert_abs(ang, sc.alpha_deg, 5.0, "45 deg, path = line: angle of the separated particles");
+  mpm_energy e;
+  mpm_sim_energy(s, &e);
+  assert_rel(e.D, sc.U0 * sc.H / sin(a), 0.10, "45 deg, h 4, 4 ppc, path = line: dissipation vs U0 H / sin a");
+  mpm_sim_free(s);
+}
+
 /* (b'') The paper's Fig. 8 bar (Mode II by strengths: snf 10, stf 1, 60 deg; g = 0.446,
  * eq. 35: the analytic curve snaps back from delta 0.427 at the peak to 0.19 at
  * separation, where the bar has taken UF x area = 6.93 of work) under
@@ -702,6 +767,7 @@ int main(void)
       cmocka_unit_test(test_mpm_bar_node_mass_limit),
       cmocka_unit_test(test_mpm_bar_inclined_row_energy),
       cmocka_unit_test(test_mpm_bar_inclined_zone_energy),
+      cmocka_unit_test(test_mpm_bar_path_line),
       cmocka_unit_test(test_mpm_bar_snapback_control),
       cmocka_unit_test(test_mpm_bar_threads_bit_identical),
       cmocka_unit_test(test_mpm_bar_threads_switch),
