@@ -104,7 +104,7 @@ void ver_report_method(const rep_case *c, char *buf, size_t len)
     snprintf(damp, sizeof damp, ", damping %g%s", c->damping, !strcmp(c->damping_from, "cut") ? " from the cut" : "");
   char path[64] = "";
   if (!strcmp(c->path, "line"))
-    snprintf(path, sizeof path, ", path on the line (+%g cells)", c->path_reach);
+    snprintf(path, sizeof path, ", held to its line (reach %g h)", c->path_reach);
   snprintf(buf, len, "%s, %s, %s field%s, Le = %s%s%s", !strcmp(c->scheme, "musl") ? "MUSL" : "USL",
            !strcmp(c->shape, "gimp") ? "uGIMP" : "bilinear", c->fields[0] ? c->fields : "one",
            !strcmp(c->fields, "two") ? "s" : "", c->le[0] ? c->le : "cell", path, damp);
