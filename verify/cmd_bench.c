@@ -48,7 +48,10 @@ static const bench_case cases[] = {
   {"fig7", 2.0, 4, 4000, "gimp", "grid.shape=gimp grid.fields=one decohesion.Le=cell", 0, 0},
   {"fig7", 2.0, 4, 4000, "gimp-two", "grid.shape=gimp grid.fields=two decohesion.Le=staircase", 1, 0},
   /* the fig7 file's method, timed through the softening, where the rows measure Le */
-  {"fig7", 2.0, 4, 4000, "gimp-row", "grid.shape=gimp grid.fields=two decohesion.Le=row", 0, 0},
+  {"fig7", 2.0, 4, 4000, "gimp-row", "grid.shape=gimp grid.fields=two decohesion.Le=row decohesion.path=free", 0, 0},
+  /* fig7.ini's method since sessions 8 and 9: the lead's zone, the band held to its line */
+  {"fig7", 2.0, 4, 4000, "gimp-zone-line", "grid.shape=gimp grid.fields=two decohesion.Le=zone decohesion.path=line", 0,
+   0},
   /* fig8's file (uGIMP, two fields, local damping), after the cut: the damping's serial node pass */
   {"fig8", 2.0, 4, 4000, "damped", "", 1, 0},
   {"fig8", 2.0, 4, 4000, "undamped", "time.damping=0", 1, 0},
@@ -131,8 +134,9 @@ static void usage(FILE *f)
     "active, with 1 and 2 threads, or with N: Fig. 6 at h = 2 and 1 and Fig. 7 at h = 2 with\n"
     "the paper's bilinear shapes and step; Fig. 6 at h = 2 with the nodal mass limit\n"
     "(fig6.ini's); Fig. 6 and Fig. 7 at h = 2 with uGIMP; Fig. 7 at h = 2 with\n"
-    "uGIMP and two velocity fields, from a band already cut, and with Le measured per row\n"
-    "through the softening; Fig. 8 at h = 2 as its file runs it (uGIMP, two fields, local\n"
+    "uGIMP and two velocity fields, from a band already cut, and through the softening\n"
+    "with Le measured per row and as its file runs it (Le over the lead's zone, the band\n"
+    "held to its line); Fig. 8 at h = 2 as its file runs it (uGIMP, two fields, local\n"
     "damping) from a band already cut, with and without the damping (the case id ends in\n"
     "the method).\n"
     "Each case runs --repeat times from the same start and the fastest run is reported\n"
@@ -223,7 +227,7 @@ int ver_cmd_bench(int argc, char **argv)
   const int tlist[2] = {threads ? threads : 1, 2};
   const int ntl = threads ? 1 : 2;
   if (!json)
-    printf("%-22s %3s %8s %6s %7s %7s %9s  %5s %5s %5s %5s %5s  %4s\n", "case", "thr", "particles", "steps",
+    printf("%-28s %3s %8s %6s %7s %7s %9s  %5s %5s %5s %5s %5s  %4s\n", "case", "thr", "particles", "steps",
            "wall_s", "cpu_s", "Mupd/s", "sort%", "p2g%", "grid%", "g2p%", "cons%", "B/p");
   for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++)
     for (int ti = 0; ti < ntl; ti++) {
@@ -290,7 +294,7 @@ int ver_cmd_bench(int argc, char **argv)
         free(txt);
         cJSON_Delete(o);
       } else {
-        printf("%-22s %3d %8zu %6ld %7.2f %7.2f %9.1f  %5.1f %5.1f %5.1f %5.1f %5.1f  %4zu\n", id, tlist[ti],
+        printf("%-28s %3d %8zu %6ld %7.2f %7.2f %9.1f  %5.1f %5.1f %5.1f %5.1f %5.1f  %4zu\n", id, tlist[ti],
                s->p->n, steps, wall, cpu, ups / 1e6, 100 * s->time_split[0] / split,
                100 * s->time_split[1] / split, 100 * s->time_split[2] / split, 100 * s->time_split[3] / split,
                100 * s->time_split[4] / split, bpp);
