@@ -57,7 +57,7 @@ int ver_report_find_sweep(const rep_ctx *r, const char *scene, double h, int ppc
   return -1;
 }
 
-/* 1 if the run used its scene file's own method (scheme, shape, fields, Le, separation
+/* 1 if the run used its scene file's own method (scheme, shape, fields, Le, path, separation
  * threshold, damping, grip speed): only such runs join the sweep, not verify's variants
  * (the rate study's slower grip would join the work-precision line otherwise). */
 static int same_method(const rep_ctx *r, const ver_summary_doc *sd)

@@ -406,6 +406,21 @@ static void test_mpm_bar_inclined_row_energy(void **state)
   mpm_sim_free(s);
 }
 
+/* The a45 file's method at h 4 with ppc particles per cell: uGIMP, two fields, MUSL,
+ * Le = zone, the release damped from the cut. */
+static mpm_scene a45_scene(int ppc)
+{
+  mpm_scene sc = band_scene();
+  sc.alpha_deg = 45.0;
+  sc.h = 4.0;
+  sc.dt = 0.05;
+  sc.ppc = ppc;
+  sc.le_mode = MPM_LE_ZONE;
+  sc.damping = 0.1;
+  sc.damping_from = MPM_DAMP_CUT;
+  return sc;
+}
+
 /* (b'') The 45 deg bar (Model 1, snf 1, stf 10, U0 0.375) at h 4 with 9 ppc, the a45 file's
  * method (uGIMP, two fields, MUSL, the release damped from the cut) with Le = zone: the
  * dissipation is U0 H / sin a within 10 %.  Le = row charges this band 0.84 of that:
@@ -415,14 +430,7 @@ static void test_mpm_bar_inclined_row_energy(void **state)
 static void test_mpm_bar_inclined_zone_energy(void **state)
 {
   (void)state;
-  mpm_scene sc = band_scene();
-  sc.alpha_deg = 45.0;
-  sc.h = 4.0;
-  sc.dt = 0.05;
-  sc.ppc = 9;
-  sc.le_mode = MPM_LE_ZONE;
-  sc.damping = 0.1;
-  sc.damping_from = MPM_DAMP_CUT;
+  mpm_scene sc = a45_scene(9);
   sc.end_delta = 0.5;
   mpm_sim *s = make_sim(&sc, 1);
   run_steps(s, lround(sc.end_delta / (sc.speed * sc.dt)));
@@ -441,14 +449,7 @@ static void test_mpm_bar_inclined_zone_energy(void **state)
 static void test_mpm_bar_path_line(void **state)
 {
   (void)state;
-  mpm_scene sc = band_scene();
-  sc.alpha_deg = 45.0;
-  sc.h = 4.0;
-  sc.dt = 0.05;
-  sc.ppc = 4;
-  sc.le_mode = MPM_LE_ZONE;
-  sc.damping = 0.1;
-  sc.damping_from = MPM_DAMP_CUT;
+  mpm_scene sc = a45_scene(4);
   sc.path = MPM_PATH_LINE;
   sc.path_reach = 1.0;
   sc.end_delta = 0.55;
