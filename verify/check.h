@@ -24,7 +24,7 @@ typedef struct {
   double lim_lo, lim_hi; /* known-limit class: error in [lim_lo, lim_hi] is known-limit  */
   int cls;               /* VER_CLASS_*                                                  */
   int verdict;           /* VER_PASS, VER_FAIL, VER_KNOWN                                */
-  char note[200];        /* what is compared and why this class                          */
+  char note[256];        /* what is compared and why this class                          */
 } ver_check;
 
 /* Fills error from measured/reference and sets the verdict; a non-finite error fails. */

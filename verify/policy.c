@@ -264,11 +264,19 @@ static void check_band(ver_case *c, const case_class *q)
     known(k, -30.0, 30.0);
   else if (turns)
     known(k, -20.0, 20.0);
-  snprintf(k->note, sizeof k->note, "principal axis of the separated particles' x0, y0 (lambda >= %g) vs alpha (deg)%s",
+  /* decohesion.path = line holds the band within w of the line at alpha: the check then
+   * measures the band's tilt inside that strip, not where the crack chose to run */
+  char strip[96] = "";
+  if (sc->path == MPM_PATH_LINE) {
+    const double ar = sc->alpha_deg * (3.14159265358979323846 / 180.0);
+    snprintf(strip, sizeof strip, "; path = line: held within %.3g of the line, its tilt inside",
+             0.5 * sc->h * (fabs(sin(ar)) + fabs(cos(ar))) + sc->path_reach * sc->h);
+  }
+  snprintf(k->note, sizeof k->note, "principal axis of the separated particles' x0, y0 (lambda >= %g) vs alpha (deg)%s%s",
            sc->sep_threshold,
            coarse ? "; <= 4 cells across the bar: known-limit to 30 deg"
                   : turns ? "; several particles per cell: the band turns toward the cell columns, known-limit to 20 deg"
-                          : "");
+                          : "", strip);
 
   k = add_check(c, "curve_l2", c->curve_l2, 0.0, 0);
   k->tol = ppc1 ? 0.04 : 0.03;
