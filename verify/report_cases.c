@@ -57,9 +57,10 @@ int ver_report_find_sweep(const rep_ctx *r, const char *scene, double h, int ppc
   return -1;
 }
 
-/* 1 if the run used its scene file's own method (scheme, shape, fields, Le, path, separation
- * threshold, damping, grip speed): only such runs join the sweep, not verify's variants
- * (the rate study's slower grip would join the work-precision line otherwise). */
+/* 1 if the run used its scene file's own method (scheme, shape, fields, Le, path, grid
+ * motion, separation threshold, damping, grip speed): only such runs join the sweep, not
+ * verify's variants (the rate study's slower grip would join the work-precision line
+ * otherwise). */
 static int same_method(const rep_ctx *r, const ver_summary_doc *sd)
 {
   char path[REP_PATH + 64], err[256];
@@ -69,9 +70,11 @@ static int same_method(const rep_ctx *r, const ver_summary_doc *sd)
     return 0;
   const struct {
     const char *run, *sect, *key;
-  } m[6] = {{sd->scheme, "time", "scheme"}, {sd->shape, "grid", "shape"}, {sd->fields, "grid", "fields"},
-            {sd->le, "decohesion", "Le"}, {sd->damping_from, "time", "damping_from"}, {sd->path, "decohesion", "path"}};
-  for (int i = 0; i < 6; i++)
+  } m[7] = {{sd->scheme, "time", "scheme"},   {sd->shape, "grid", "shape"},
+            {sd->fields, "grid", "fields"},   {sd->le, "decohesion", "Le"},
+            {sd->damping_from, "time", "damping_from"}, {sd->path, "decohesion", "path"},
+            {sd->motion, "grid", "motion"}};
+  for (int i = 0; i < 7; i++)
     if (m[i].run[0] && strcmp(m[i].run, ver_scene_word(&vs, m[i].sect, m[i].key)))
       return 0;
   const double damping = isfinite(sd->damping) ? sd->damping : 0.0;

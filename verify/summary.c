@@ -83,6 +83,7 @@ int ver_summary_write(const char *dir, const ver_scene *vs, const ver_summary *u
   cJSON_AddNumberToObject(o, "speed", vs->sc.speed);
   cJSON_AddStringToObject(o, "damping_from", ver_scene_word(vs, "time", "damping_from"));
   cJSON_AddStringToObject(o, "path", ver_scene_word(vs, "decohesion", "path"));
+  cJSON_AddStringToObject(o, "motion", ver_scene_word(vs, "grid", "motion"));
   cJSON_AddNumberToObject(o, "path_reach", vs->sc.path_reach);
   cJSON_AddBoolToObject(o, "complete", u->complete);
   if (errmsg && errmsg[0])
@@ -174,6 +175,7 @@ int ver_summary_read(const char *dir, ver_summary_doc *d)
   jstr(o, "fields", d->fields, sizeof d->fields);
   jstr(o, "damping_from", d->damping_from, sizeof d->damping_from);
   jstr(o, "path", d->path, sizeof d->path);
+  jstr(o, "motion", d->motion, sizeof d->motion);
   d->path_reach = jnum(o, "path_reach");
   jstr(o, "error", d->error, sizeof d->error);
   d->h = jnum(o, "h");
