@@ -154,6 +154,10 @@ static inline double mpm_scene_start_vx(const mpm_scene *sc, double x)
   return x <= 0.0 ? -sc->speed : x >= sc->L ? 0.0 : -sc->speed * (sc->L - x) / sc->L;
 }
 
+/* decohesion.path = line: the half-width w of the strip that may soften, h (|sin a| +
+ * |cos a|) / 2 (the cells the line at alpha crosses) + path_reach h. */
+double mpm_scene_path_halfwidth(const mpm_scene *sc);
+
 /* Checks a scene for physical sense; MPM_EINVAL and a message naming the key. */
 mpm_status mpm_scene_check(const mpm_scene *sc, char *err, size_t errlen);
 /* Critical time step h / (c sqrt 2), c = sqrt(E1 / rho) (measured; see mpm_sim.c). */

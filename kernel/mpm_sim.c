@@ -276,7 +276,7 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
    * path_reach h of the line at alpha through the imperfection's particle (n . (X - X_imp),
    * n the failure plane's normal); at 1 ppc and path_reach 0, the cells the line crosses. */
   if (sc->model && sc->path == MPM_PATH_LINE) {
-    const double sa = sin(a), ca = cos(a), w = 0.5 * h * (fabs(sa) + fabs(ca)) + sc->path_reach * h;
+    const double sa = sin(a), ca = cos(a), w = mpm_scene_path_halfwidth(sc);
     for (size_t q = 0; q < nbar; q++)
       if (p->mat[q] == MPM_MAT_BAR && fabs(sa * (p->x0[q] - p->x0[imp]) - ca * (p->y0[q] - p->y0[imp])) > w)
         p->mat[q] = MPM_MAT_ELASTIC;
@@ -317,6 +317,12 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
   mpm_sim_sort(s);
   *out = s;
   return MPM_OK;
+}
+
+double mpm_scene_path_halfwidth(const mpm_scene *sc)
+{
+  const double a = sc->alpha_deg * (3.14159265358979323846 / 180.0);
+  return 0.5 * sc->h * (fabs(sin(a)) + fabs(cos(a))) + sc->path_reach * sc->h;
 }
 
 /* The band has cut the bar once every particle row of the reference lattice holds a

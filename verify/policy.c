@@ -267,11 +267,9 @@ static void check_band(ver_case *c, const case_class *q)
   /* decohesion.path = line holds the band within w of the line at alpha: the check then
    * measures the band's tilt inside that strip, not where the crack chose to run */
   char strip[96] = "";
-  if (sc->path == MPM_PATH_LINE) {
-    const double ar = sc->alpha_deg * (3.14159265358979323846 / 180.0);
+  if (sc->path == MPM_PATH_LINE)
     snprintf(strip, sizeof strip, "; path = line: held within %.3g of the line, its tilt inside",
-             0.5 * sc->h * (fabs(sin(ar)) + fabs(cos(ar))) + sc->path_reach * sc->h);
-  }
+             mpm_scene_path_halfwidth(sc));
   snprintf(k->note, sizeof k->note, "principal axis of the separated particles' x0, y0 (lambda >= %g) vs alpha (deg)%s%s",
            sc->sep_threshold,
            coarse ? "; <= 4 cells across the bar: known-limit to 30 deg"
