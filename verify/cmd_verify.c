@@ -15,7 +15,7 @@
 static void usage(FILE *f)
 {
   fprintf(f,
-    "usage: delam verify [--quick | --full] [options]\n"
+    "usage: delam verify [--quick | --full | --angles] [options]\n"
     "Runs the scenes over grid spacings and particles per cell and checks every run\n"
     "against the closed-form bar (peak load, slopes, separation, energies, band width\n"
     "and angle, load-deflection error), then energy invariance and the order of\n"
@@ -26,16 +26,19 @@ static void usage(FILE *f)
     "                 h 2 (ppc 4), its Le=particle and separation=0.8 variants at h 8 ppc 4,\n"
     "                 and fig7 at h 4 ppc 4 [default]\n"
     "  --full         every scene of the scene folder at h = 8, 4, 2, 1 and ppc = 1, 4, 9\n"
+    "  --angles       every inclined scene file (alpha not 90) with its alpha replaced by\n"
+    "                 30, 45, 60 and 75 deg (its own left out), at h = 4, 2 and ppc = 1, 4:\n"
+    "                 the files' method on bands they were not written for\n"
     "  --jobs N       cases run in parallel (default: the number of cores)\n"
     "  --out DIR      per-case folders DIR/<case-id>/, DIR/verify.json, DIR/verify.csv\n"
-    "                 (default out/verify-quick or out/verify-full)\n"
+    "                 (default out/verify-quick, out/verify-full or out/verify-angles)\n"
     "  --scenes DIR   scene folder (default: $DELAM_SCENES, ./data/scenes, or the\n"
     "                 installed or source tree's scenes)\n"
     "  --list         print one `delam run ...` line per case and stop (for GNU parallel\n"
     "                 or a cluster array; then `delam verify --merge DIR`)\n"
-    "  --merge DIR    run nothing: check the case folders already in DIR (with --quick or\n"
-    "                 --full: every case of that list, a missing one fails; alone: the\n"
-    "                 cases of either list that DIR holds)\n"
+    "  --merge DIR    run nothing: check the case folders already in DIR (with --quick,\n"
+    "                 --full or --angles: every case of that list, a missing one fails;\n"
+    "                 alone: the cases of any list that DIR holds)\n"
     "  --help         this text\n"
     "exit status: 0 no check failed, 1 a pass-class check failed (or a case crashed),\n"
     "2 bad usage or input\n");
@@ -44,7 +47,7 @@ static void usage(FILE *f)
 int ver_cmd_verify(int argc, char **argv)
 {
   const char *scenes = ver_scene_dir();
-  ver_verify_opts o = {0, 0, NULL, scenes ? scenes : "data/scenes", "delam", 0, 0, 0};
+  ver_verify_opts o = {0, 0, 0, NULL, scenes ? scenes : "data/scenes", "delam", 0, 0, 0};
   int quick = 0;
   for (int i = 1; i < argc; i++) {
     const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
@@ -55,6 +58,8 @@ int ver_cmd_verify(int argc, char **argv)
       quick = 1;
     else if (!strcmp(a, "--full"))
       o.full = 1;
+    else if (!strcmp(a, "--angles"))
+      o.angles = 1;
     else if (!strcmp(a, "--list"))
       o.list = 1;
     else if (!strcmp(a, "--jobs")) {
@@ -88,8 +93,8 @@ int ver_cmd_verify(int argc, char **argv)
       return 2;
     }
   }
-  if (quick && o.full) {
-    fprintf(stderr, "delam verify: --quick and --full exclude each other\n");
+  if (quick + o.full + o.angles > 1) {
+    fprintf(stderr, "delam verify: --quick, --full and --angles exclude each other\n");
     return 2;
   }
   if (o.list && o.merge) {
@@ -97,8 +102,8 @@ int ver_cmd_verify(int argc, char **argv)
     return 2;
   }
   if (!o.outdir)
-    o.outdir = o.full ? "out/verify-full" : "out/verify-quick";
-  o.merge_found = o.merge && !quick && !o.full;
+    o.outdir = o.full ? "out/verify-full" : o.angles ? "out/verify-angles" : "out/verify-quick";
+  o.merge_found = o.merge && !quick && !o.full && !o.angles;
   if (o.jobs == 0) {
     const long n = sysconf(_SC_NPROCESSORS_ONLN);
     o.jobs = n > 0 ? (int)n : 1;

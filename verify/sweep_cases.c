@@ -26,6 +26,16 @@ static const ver_variant V_WHOLE = {"whole", "run.stop_margin=0", 1, 0};
  * (v = 0.001 h / 8) and the rate study at fixed h (policy.c policy_rate) */
 static const ver_variant V_V2 = {"v0.0005", "loading.speed=0.0005", 0, 1};
 static const ver_variant V_V4 = {"v0.00025", "loading.speed=0.00025", 0, 2};
+/* --angles: an inclined file with only its laminate angle changed (issue 13: the
+ * method must hold for bands the files were not written for); a file's own angle is
+ * --full's case and is left out */
+static const double V_ANGLE_DEG[4] = {30, 45, 60, 75};
+static const ver_variant V_ANGLES[4] = {
+  {"a30", "decohesion.alpha=30", 0, 0},
+  {"a45", "decohesion.alpha=45", 0, 0},
+  {"a60", "decohesion.alpha=60", 0, 0},
+  {"a75", "decohesion.alpha=75", 0, 0},
+};
 
 /* The scene file with the same overrides `delam run --h H --ppc N --set ...` applies
  * (cmd_run.c: dt scaled with h to keep the file's Courant number). */
@@ -118,13 +128,35 @@ static int cmp_str(const void *a, const void *b)
   return strcmp(*(char *const *)a, *(char *const *)b);
 }
 
-/* The case list: the quick subset, or every scene of the folder x h x ppc. */
+/* The *.ini files of folder dir, sorted, into names (at most room, each malloc'd);
+ * their number, or -1 with a message on stderr. */
+static int scene_files(const char *dir, char **names, int room)
+{
+  DIR *d = opendir(dir);
+  if (!d) {
+    fprintf(stderr, "delam verify: %s: cannot open the scene folder: %s\n", dir, strerror(errno));
+    return -1;
+  }
+  int nn = 0;
+  struct dirent *e;
+  while ((e = readdir(d)) && nn < room) {
+    const size_t l = strlen(e->d_name);
+    if (l > 4 && !strcmp(e->d_name + l - 4, ".ini") && e->d_name[0] != '.')
+      names[nn++] = strdup(e->d_name);
+  }
+  closedir(d);
+  qsort(names, (size_t)nn, sizeof names[0], cmp_str);
+  return nn;
+}
+
+/* The case list: the quick subset, every scene of the folder x h x ppc, or the
+ * inclined scenes at other angles. */
 int ver_sweep_cases(const ver_verify_opts *o, ver_case **out, int *nout)
 {
   char err[1024];
   ver_case *cs = NULL;
   int n = 0;
-  if (!o->full) {
+  if (!o->full && !o->angles) {
     static const struct {
       const char *scene;
       double h;
@@ -155,42 +187,41 @@ int ver_sweep_cases(const ver_verify_opts *o, ver_case **out, int *nout)
       n++;
     }
   } else {
-    DIR *d = opendir(o->scenes);
-    if (!d) {
-      fprintf(stderr, "delam verify: %s: cannot open the scene folder: %s\n", o->scenes, strerror(errno));
-      return 2;
-    }
     char *names[256];
-    int nn = 0;
-    struct dirent *e;
-    while ((e = readdir(d)) && nn < 256) {
-      const size_t l = strlen(e->d_name);
-      if (l > 4 && !strcmp(e->d_name + l - 4, ".ini") && e->d_name[0] != '.')
-        names[nn++] = strdup(e->d_name);
-    }
-    closedir(d);
-    qsort(names, (size_t)nn, sizeof names[0], cmp_str);
-    static const double hs[] = {8, 4, 2, 1};
-    static const int ps[] = {1, 4, 9};
-    cs = calloc((size_t)(nn * 12 + 1), sizeof *cs);
+    int nn = scene_files(o->scenes, names, 256);
+    if (nn < 0)
+      return 2;
+    static const double hs[] = {8, 4, 2, 1}, hs_angles[] = {4, 2};
+    static const int ps[] = {1, 4, 9}, ps_angles[] = {1, 4};
+    const double *hv = o->angles ? hs_angles : hs;
+    const int *pv = o->angles ? ps_angles : ps;
+    const int nh = o->angles ? 2 : 4, np = o->angles ? 2 : 3, na = o->angles ? 4 : 1;
+    cs = calloc((size_t)(nn * nh * np * na + 1), sizeof *cs);
     int rc = cs ? 0 : 2;
     for (int i = 0; i < nn && !rc; i++) {
       char path[600], scene[64];
       snprintf(path, sizeof path, "%s/%s", o->scenes, names[i]);
       snprintf(scene, sizeof scene, "%.*s", (int)strlen(names[i]) - 4, names[i]);
       /* a free-vibration scene (vibration.mode > 0) is not a bar pulled to separation:
-       * the analytic bar's checks do not apply to it (its own: kernel tests) */
-      ver_scene vib;
-      if (ver_scene_parse(path, &vib, err, sizeof err) == 0 && vib.sc.vib_mode > 0)
+       * the analytic bar's checks do not apply to it (its own: kernel tests); --angles
+       * takes the inclined files only (alpha 90 is the grid's own direction) */
+      ver_scene sf;
+      if (ver_scene_parse(path, &sf, err, sizeof err) == 0 &&
+          (sf.sc.vib_mode > 0 || (o->angles && (sf.sc.model == 0 || fabs(sf.sc.alpha_deg - 90.0) < 1e-9))))
         continue;
-      for (int a = 0; a < 4 && !rc; a++)
-        for (int b = 0; b < 3 && !rc; b++) {
-          if (ver_case_init(&cs[n], path, scene, hs[a], ps[b], V_BASE, err, sizeof err)) {
-            fprintf(stderr, "delam verify: %s\n", err);
-            rc = 2;
-          } else
-            n++;
-        }
+      for (int k = 0; k < na && !rc; k++) {
+        const ver_variant *v = o->angles ? &V_ANGLES[k] : &V_BASE;
+        if (o->angles && fabs(sf.sc.alpha_deg - V_ANGLE_DEG[k]) < 1e-9)
+          continue; /* the file's own angle: --full's case */
+        for (int a = 0; a < nh && !rc; a++)
+          for (int b = 0; b < np && !rc; b++) {
+            if (ver_case_init(&cs[n], path, scene, hv[a], pv[b], *v, err, sizeof err)) {
+              fprintf(stderr, "delam verify: %s\n", err);
+              rc = 2;
+            } else
+              n++;
+          }
+      }
     }
     for (int i = 0; i < nn; i++)
       free(names[i]);
@@ -199,7 +230,8 @@ int ver_sweep_cases(const ver_verify_opts *o, ver_case **out, int *nout)
       return rc;
     }
     if (n == 0) {
-      fprintf(stderr, "delam verify: %s: no scene files (*.ini)\n", o->scenes);
+      if (!o->merge_found) /* merging what a folder holds: no angles list is no error */
+        fprintf(stderr, "delam verify: %s: no %sscene files (*.ini)\n", o->scenes, o->angles ? "inclined " : "");
       free(cs);
       return 2;
     }
@@ -307,37 +339,44 @@ static int keep_found(const ver_verify_opts *o, ver_case *cs, int n)
 }
 
 
-/* With o->merge_found: the cases of both lists (full, then the quick variants) whose
+/* With o->merge_found: the cases of every list (quick, then full, then angles) whose
  * folders DIR holds.  Frees *out on failure. */
 int ver_sweep_found(const ver_verify_opts *o, ver_case **out, int *nout)
 {
-  ver_case *cs = *out, *cq;
-  int n = *nout, nq;
-  ver_verify_opts q = *o;
-  q.full = !o->full;
-  const int mk = ver_sweep_cases(&q, &cq, &nq);
-  if (mk) {
-    free(cs);
-    return mk;
-  }
-  ver_case *all = realloc(cs, (size_t)(n + nq) * sizeof *cs);
-  if (!all) {
-    free(cs);
+  ver_case *cs = *out;
+  int n = *nout;
+  for (int list = 0; list < 2; list++) {
+    ver_case *cq;
+    int nq;
+    ver_verify_opts q = *o;
+    q.full = list == 0;
+    q.angles = list == 1;
+    const int mk = ver_sweep_cases(&q, &cq, &nq);
+    if (mk && list == 1) /* a folder without inclined scenes has no angles list */
+      continue;
+    if (mk) {
+      free(cs);
+      return mk;
+    }
+    ver_case *all = realloc(cs, (size_t)(n + nq) * sizeof *cs);
+    if (!all) {
+      free(cs);
+      free(cq);
+      return 2;
+    }
+    cs = all;
+    for (int i = 0; i < nq; i++) {
+      int dup = 0;
+      for (int j = 0; j < n && !dup; j++)
+        dup = !strcmp(cs[j].id, cq[i].id);
+      if (!dup)
+        cs[n++] = cq[i];
+    }
     free(cq);
-    return 2;
   }
-  cs = all;
-  for (int i = 0; i < nq; i++) {
-    int dup = 0;
-    for (int j = 0; j < n && !dup; j++)
-      dup = !strcmp(cs[j].id, cq[i].id);
-    if (!dup)
-      cs[n++] = cq[i];
-  }
-  free(cq);
   n = keep_found(o, cs, n);
   if (n == 0) {
-    fprintf(stderr, "delam verify: %s holds no case folder of the full or the quick list\n", o->outdir);
+    fprintf(stderr, "delam verify: %s holds no case folder of the quick, full or angles list\n", o->outdir);
     free(cs);
     return 2;
   }

@@ -52,7 +52,7 @@ int ver_sweep_write_json(const ver_verify_opts *o, const ver_case *cs, int n, co
 {
   cJSON *root = cJSON_CreateObject();
   cJSON_AddNumberToObject(root, "schema", VER_SCHEMA_VERIFY);
-  cJSON_AddStringToObject(root, "mode", o->merge_found ? "found" : o->full ? "full" : "quick");
+  cJSON_AddStringToObject(root, "mode", o->merge_found ? "found" : o->full ? "full" : o->angles ? "angles" : "quick");
   cJSON_AddStringToObject(root, "dir", o->outdir);
   cJSON_AddBoolToObject(root, "merged", o->merge);
   cJSON_AddNumberToObject(root, "jobs", o->jobs);

@@ -19,6 +19,7 @@
 /* ---- the sweep (verify.c) ---- */
 typedef struct {
   int full;              /* 0: the --quick subset, 1: every scene x h x ppc               */
+  int angles;            /* 1: the inclined scene files at other angles (--angles)        */
   int jobs;              /* parallel cases                                                */
   const char *outdir;    /* DIR: DIR/<case-id>/, DIR/verify.json, DIR/verify.csv         */
   const char *scenes;    /* folder of the scene files (data/scenes)                      */
