@@ -54,7 +54,7 @@ const keydef ver_scene_keys[] = {
   {"grid", "ppc", K_INT, OFF(ppc), 1, 1, 1024, LO_CLOSED | HI_CLOSED, 0, "a perfect square: 1, 4, 9, ..."},
   {"grid", "margin", K_DBL, OFF(margin), 0, 0, 0, LO_CLOSED, 0, ">= 0: empty space around the bar, a length (one cell is always added)"},
   {"time", "dt", K_DBL, OFF(dt), 1, 0, 0, LO_OPEN, 0, "> 0 and below the CFL bound h / (c sqrt 2)"},
-  {"time", "damping", K_DBL, OFF(damping), 0, 0, 0, LO_CLOSED, 0, ">= 0 and below 1 / dt: a rate, the damping of each node's velocity about its slow drift (0: none, the paper)"},
+  {"time", "damping", K_DBL, OFF(damping), 0, 0, 0, LO_CLOSED, 0, ">= 0 and below 1 / dt: a rate, the damping of each node's velocity about its slow drift (0: none, the paper), or critical: 2 pi sqrt(E / rho) / L, twice the bar's first axial frequency"},
   {"time", "damping_from", K_DAMPFROM, OFF(damping_from), 0, 0, 0, 0, MPM_DAMP_START, "start (from the first step) or cut (once the band has cut the bar)"},
   {"time", "damping_tau", K_DBL, OFF(damping_tau), 0, 0, 0, LO_CLOSED, 0, ">= 0: the damping's low-pass time (0: 2 L / c)"},
   {"time", "scheme", K_SCHEME, OFF(scheme), 0, 0, 0, 0, MPM_SCHEME_USL, "usl (the paper), musl, usf or usavg"},
@@ -282,6 +282,8 @@ static int set_key(ver_scene *vs, int ki, const char *value, char *msg, size_t l
     }
     memcpy(vs->snap, v, sizeof(double) * (size_t)n);
     vs->nsnap = n;
+  } else if (k->off == OFF(damping) && !strcmp(k->section, "time") && !strcmp(value, "critical")) {
+    vs->damping_critical = 1; /* the rate is the bar's: resolve_damping */
   } else {
     double v;
     const int r = ver_scene_key_num(value, &v);
@@ -300,6 +302,8 @@ static int set_key(ver_scene *vs, int ki, const char *value, char *msg, size_t l
                k->allowed);
       return 2;
     }
+    if (k->off == OFF(damping) && !strcmp(k->section, "time"))
+      vs->damping_critical = 0;
     if (!strcmp(k->section, "output"))
       vs->interval = v;
     else if (k->type == K_INT)
@@ -450,6 +454,17 @@ static void scene_defaults(ver_scene *vs, const char *path)
   vs->interval = -1;
 }
 
+/* time.damping = critical: twice the first axial angular frequency of the bar held at
+ * both ends, omega_1 = pi c / L with c = sqrt(E / rho), the rate that damps that mode
+ * critically (x'' + 2 omega_1 x' + omega_1^2 x = 0), the slowest ring of the release
+ * (docs/bands.md sec. 5h).  Set after the file and after every override, so that a
+ * changed bar changes it wherever the scene is read. */
+static void resolve_damping(ver_scene *vs)
+{
+  if (vs->damping_critical && vs->sc.L > 0.0 && vs->sc.rho > 0.0 && vs->sc.E > 0.0)
+    vs->sc.damping = 2.0 * 3.14159265358979323846 * sqrt(vs->sc.E / vs->sc.rho) / vs->sc.L;
+}
+
 int ver_scene_parse_string(const char *text, const char *name, ver_scene *vs, char *err, size_t errlen)
 {
   scene_defaults(vs, name);
@@ -473,6 +488,7 @@ int ver_scene_parse_string(const char *text, const char *name, ver_scene *vs, ch
     return 2;
   }
   vs->nlines = c.line;
+  resolve_damping(vs);
   vs->file_h = vs->sc.h;
   vs->file_dt = vs->sc.dt;
   return 0;
@@ -557,6 +573,7 @@ int ver_scene_set(ver_scene *vs, const char *assignment, char *err, size_t errle
   }
   vs->seen[ki] = 1;
   vs->line[ki] = -1;
+  resolve_damping(vs);
   if (vs->nover == VER_MAX_OVER) {
     snprintf(err, errlen, "%s: command line: %s: more than %d overrides", vs->path, shown(assignment, sv, sizeof sv),
              VER_MAX_OVER);

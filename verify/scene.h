@@ -29,6 +29,8 @@ typedef struct {
   double stop_margin;         /* run: stop this far in delta past detected separation (0: never early) */
   double sep_load_frac;       /* run: separation detected when |P| < this fraction of the peak */
   int allow_unstable;         /* accept dt above the CFL bound                           */
+  int damping_critical;       /* time.damping = critical: the rate is set from the bar, to
+                                 2 pi sqrt(E / rho) / L, after the file and each override */
   int line[VER_NKEYS];        /* line each key was set on (0: default, -1: command line) */
   int seen[VER_NKEYS];
   int sect_line[VER_NSECT];   /* line of each section's first [header] (0: absent)       */

@@ -78,6 +78,26 @@ static void test_ver_scene_ini_round_trip(void **state)
   free(round_trip(&a));
 }
 
+/* time.damping = critical is the bar's rate, 2 pi sqrt(E / rho) / L, set after every
+ * override (so a changed bar changes it), and a number given later replaces it. */
+static void test_ver_scene_damping_critical(void **state)
+{
+  (void)state;
+  const double pi = 3.14159265358979323846;
+  ver_scene a;
+  const char *crit[] = {"time.damping=critical", NULL};
+  load("fig8", crit, &a);
+  assert_true(fabs(a.sc.damping - 2.0 * pi * 32.0 / 192.0) < 1e-14); /* E 1024, rho 1, L 192 */
+  const char *softer[] = {"time.damping=critical", "material.E=256", "bar.L=128", NULL};
+  load("fig8", softer, &a);
+  assert_true(fabs(a.sc.damping - 2.0 * pi * 16.0 / 128.0) < 1e-14); /* c 16, L 128: 3 / 4 of the rate */
+  const char *later[] = {"time.damping=critical", "time.damping=0.2", NULL};
+  load("fig8", later, &a);
+  assert_true(a.sc.damping == 0.2);
+  load("fig8", crit, &a);
+  free(round_trip(&a)); /* the effective INI holds the number, and reads back to it */
+}
+
 static void test_ver_scene_case_ids(void **state)
 {
   (void)state;
@@ -136,6 +156,7 @@ int main(int argc, char **argv)
     src = argv[1];
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_ver_scene_ini_round_trip),
+      cmocka_unit_test(test_ver_scene_damping_critical),
       cmocka_unit_test(test_ver_scene_case_ids),
       cmocka_unit_test(test_ver_scene_keys_doc),
   };
