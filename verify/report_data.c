@@ -42,6 +42,7 @@ int ver_report_read_summary(rep_case *c)
   snprintf(c->shape, sizeof c->shape, "%s", d.shape);
   snprintf(c->fields, sizeof c->fields, "%s", d.fields);
   snprintf(c->damping_from, sizeof c->damping_from, "%s", d.damping_from);
+  snprintf(c->damping_rule, sizeof c->damping_rule, "%s", d.damping_rule);
   snprintf(c->path, sizeof c->path, "%s", d.path);
   c->path_reach = d.path_reach;
   snprintf(c->le, sizeof c->le, "%s", d.le);
@@ -101,7 +102,9 @@ void ver_report_method(const rep_case *c, char *buf, size_t len)
 {
   char damp[64] = "";
   if (c->damping > 0.0)
-    snprintf(damp, sizeof damp, ", damping %g%s", c->damping, !strcmp(c->damping_from, "cut") ? " from the cut" : "");
+    snprintf(damp, sizeof damp, ", damping %s%.4g%s%s", !strcmp(c->damping_rule, "critical") ? "critical (" : "",
+             c->damping, !strcmp(c->damping_rule, "critical") ? ")" : "",
+             !strcmp(c->damping_from, "cut") ? " from the cut" : "");
   char path[64] = "";
   if (!strcmp(c->path, "line"))
     snprintf(path, sizeof path, ", held to its line (reach %g h)", c->path_reach);

@@ -82,6 +82,8 @@ int ver_summary_write(const char *dir, const ver_scene *vs, const ver_summary *u
   cJSON_AddNumberToObject(o, "damping", vs->sc.damping);
   cJSON_AddNumberToObject(o, "speed", vs->sc.speed);
   cJSON_AddStringToObject(o, "damping_from", ver_scene_word(vs, "time", "damping_from"));
+  /* how the rate was given: "critical" (set from the bar, 2 pi sqrt(E / rho) / L) or "rate" */
+  cJSON_AddStringToObject(o, "damping_rule", vs->damping_critical ? "critical" : "rate");
   cJSON_AddStringToObject(o, "path", ver_scene_word(vs, "decohesion", "path"));
   cJSON_AddStringToObject(o, "motion", ver_scene_word(vs, "grid", "motion"));
   cJSON_AddNumberToObject(o, "path_reach", vs->sc.path_reach);
@@ -174,6 +176,7 @@ int ver_summary_read(const char *dir, ver_summary_doc *d)
   jstr(o, "shape", d->shape, sizeof d->shape);
   jstr(o, "fields", d->fields, sizeof d->fields);
   jstr(o, "damping_from", d->damping_from, sizeof d->damping_from);
+  jstr(o, "damping_rule", d->damping_rule, sizeof d->damping_rule);
   jstr(o, "path", d->path, sizeof d->path);
   jstr(o, "motion", d->motion, sizeof d->motion);
   d->path_reach = jnum(o, "path_reach");
