@@ -142,6 +142,9 @@ typedef struct {
                             rate c, 0 <= c dt < 1 (0: the paper's undamped step;
                             mpm_damping.c)                                             */
   double damping_tau;    /* its low-pass time constant (0: 2 L / c)                    */
+  double damping_beta;   /* beta, a time: a viscous stress beta C : grad v on every bar
+                            particle not separated (stiffness-proportional damping, which
+                            takes the fast modes; 0: none), from damping_from on     */
   int damping_from;      /* MPM_DAMP_START (from the first step) or MPM_DAMP_CUT (from the
                             band's cut on)                                             */
   double end_delta;      /* the run never goes past this end displacement              */
@@ -245,6 +248,8 @@ typedef struct {
                               or a branch per particle                                 */
   uint8_t *mat;            /* index into the material table                            */
   uint8_t *sep;            /* 1 once separated                                         */
+  double *vxx, *vyy, *vxy; /* time.damping_beta > 0: the viscous stress beta C : grad v of
+                              the last strain pass, scattered with sigma (NULL otherwise) */
 } mpm_particles;
 
 mpm_particles *mpm_particles_alloc(size_t n);
@@ -392,7 +397,7 @@ typedef struct {
  * count).  Node terms: A = sum m v . d, K = sum m |d|^2, B = -dt sum f . u;
  * particle terms: KP = sum m |dv_p|^2, QS = sum m sigma_new : deps (mpm_step.c,
  * ledger_step); and D, the step's dissipation (sim.D_run, for mpm_control.c). */
-enum { MPM_LED_A = 0, MPM_LED_K, MPM_LED_B, MPM_LED_KP, MPM_LED_QS, MPM_LED_D, MPM_LED_N };
+enum { MPM_LED_A = 0, MPM_LED_K, MPM_LED_B, MPM_LED_KP, MPM_LED_QS, MPM_LED_D, MPM_LED_BV, MPM_LED_N };
 
 /* ---- the simulation ---- */
 /* Particles whose elastic trial left the elastic domain, waiting for the full

@@ -54,6 +54,7 @@ int mpm_gimp_p2g_range(const mpm_grid *gg, const mpm_particles *p, size_t a, siz
   const double *restrict x0 = p->x0, *restrict y0 = p->y0;
   const double *restrict pm = p->m, *restrict V = p->V;
   const double *restrict sxx = p->sxx, *restrict syy = p->syy, *restrict sxy = p->sxy;
+  const int vis = p->vxx != NULL;
   const mpm_fields *fld = g->fld;
   mpm_v8 c[9];
   stencil_clear(c);
@@ -69,8 +70,11 @@ int mpm_gimp_p2g_range(const mpm_grid *gg, const mpm_particles *p, size_t a, siz
     mpm_gimp_1d((y[k] - oy) * ihy, lcy, &sy);
     const size_t n0 = (size_t)sx.i0 * nny + (size_t)sy.i0;
     const double mm = pm[k], Vx = V[k] * ihx, Vy = V[k] * ihy;
-    const mpm_v8 FX = {0.0, 0.0, 0.0, Vx * sxx[k], Vx * sxy[k], 0.0, 0.0, 0.0};
-    const mpm_v8 FY = {0.0, 0.0, 0.0, Vy * sxy[k], Vy * syy[k], 0.0, 0.0, 0.0};
+    /* time.damping_beta: the viscous stress rides with sigma */
+    const double txx = vis ? sxx[k] + p->vxx[k] : sxx[k], tyy = vis ? syy[k] + p->vyy[k] : syy[k];
+    const double txy = vis ? sxy[k] + p->vxy[k] : sxy[k];
+    const mpm_v8 FX = {0.0, 0.0, 0.0, Vx * txx, Vx * txy, 0.0, 0.0, 0.0};
+    const mpm_v8 FY = {0.0, 0.0, 0.0, Vy * txy, Vy * tyy, 0.0, 0.0, 0.0};
     if (mpm_fields_any(fld, n0, nny)) { /* near a separated band: the field per node */
       /* lane 7: the displacement along the failure normal, for the contact's gap (only
        * split nodes read it, and only particles of this path reach them) */

@@ -41,6 +41,9 @@ void mpm_particles_free(mpm_particles *p)
     free(dbl[k]);
   free(p->mat);
   free(p->sep);
+  free(p->vxx);
+  free(p->vyy);
+  free(p->vxy);
   free(p);
 }
 

@@ -87,6 +87,7 @@ static inline __attribute__((always_inline)) int p2g_range_impl(const mpm_grid *
   const double *restrict x = p->x, *restrict y = p->y, *restrict vx = p->vx, *restrict vy = p->vy;
   const double *restrict pm = p->m, *restrict V = p->V;
   const double *restrict sxx = p->sxx, *restrict syy = p->syy, *restrict sxy = p->sxy;
+  const int vis = p->vxx != NULL;
   const mpm_fields *fld = g->fld;
   cell_sums cs = {.cur = SIZE_MAX};
   cell_vols cv = {0.0, 0.0, 0.0};
@@ -98,8 +99,11 @@ static inline __attribute__((always_inline)) int p2g_range_impl(const mpm_grid *
       continue;
     }
     const double mm = pm[k], Vx = V[k] * ihx, Vy = V[k] * ihy;
-    const mpm_v8 FX = {0.0, 0.0, 0.0, Vx * sxx[k], Vx * sxy[k], 0.0, 0.0, 0.0};
-    const mpm_v8 FY = {0.0, 0.0, 0.0, Vy * sxy[k], Vy * syy[k], 0.0, 0.0, 0.0};
+    /* time.damping_beta: the viscous stress rides with sigma */
+    const double txx = vis ? sxx[k] + p->vxx[k] : sxx[k], tyy = vis ? syy[k] + p->vyy[k] : syy[k];
+    const double txy = vis ? sxy[k] + p->vxy[k] : sxy[k];
+    const mpm_v8 FX = {0.0, 0.0, 0.0, Vx * txx, Vx * txy, 0.0, 0.0, 0.0};
+    const mpm_v8 FY = {0.0, 0.0, 0.0, Vy * txy, Vy * tyy, 0.0, 0.0, 0.0};
     if (two && mpm_fields_any4(fld, sh.n00, nny)) { /* near a separated band: the field per node */
       /* lane 7: the displacement along the failure normal, for the contact's gap (only
        * split nodes read it, and only particles of this path reach them) */

@@ -93,6 +93,9 @@ mpm_status mpm_scene_check(const mpm_scene *sc, char *err, size_t errlen)
   if (!(sc->damping >= 0.0 && sc->damping * sc->dt < 1.0))
     BAD("time.damping must be >= 0 and below 1 / time.dt = %g", 1.0 / sc->dt);
   if (!(sc->damping_tau >= 0.0 && isfinite(sc->damping_tau))) BAD("time.damping_tau must be >= 0 (0: 2 L / c)");
+  if (!(sc->damping_beta >= 0.0 && isfinite(sc->damping_beta))) BAD("time.damping_beta must be >= 0");
+  if (sc->damping_beta > 0.0 && sc->scheme != MPM_SCHEME_USL && sc->scheme != MPM_SCHEME_MUSL)
+    BAD("time.damping_beta needs time.scheme = usl or musl (one strain pass a step)");
   if (sc->damping_from != MPM_DAMP_CUT && sc->damping_from != MPM_DAMP_START) BAD("time.damping_from must be cut or start");
   if (sc->damping > 0.0 && sc->node_mass == MPM_NODEMASS_LIMITED && sc->shape == MPM_SHAPE_LINEAR &&
       (sc->scheme == MPM_SCHEME_USL || sc->scheme == MPM_SCHEME_USAVG))
@@ -159,6 +162,15 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
   mpm_threads_init(&s->thr, nthreads, np);
   s->nthreads = s->thr.use;
   s->p = mpm_particles_alloc(np);
+  if (s->p && sc->damping_beta > 0.0) {
+    s->p->vxx = calloc(np, sizeof(double));
+    s->p->vyy = calloc(np, sizeof(double));
+    s->p->vxy = calloc(np, sizeof(double));
+    if (!s->p->vxx || !s->p->vyy || !s->p->vxy) {
+      mpm_particles_free(s->p);
+      s->p = NULL;
+    }
+  }
   s->dws = calloc((size_t)s->thr.nmax, sizeof *s->dws);
   s->defer = calloc((size_t)s->thr.nmax, sizeof *s->defer);
   s->head = malloc((nhead ? nhead : 1) * sizeof *s->head);

@@ -75,6 +75,11 @@ void mpm_sim_sort(mpm_sim *s)
     permute_d(dbl[f], &s->scratch, s->perm, n);
   permute_u8(&p->mat, &s->scratch8, s->perm, n);
   permute_u8(&p->sep, &s->scratch8, s->perm, n);
+  if (p->vxx) { /* time.damping_beta */
+    permute_d(&p->vxx, &s->scratch, s->perm, n);
+    permute_d(&p->vyy, &s->scratch, s->perm, n);
+    permute_d(&p->vxy, &s->scratch, s->perm, n);
+  }
   size_t nh = 0;
   for (size_t k = 0; k < n; k++)
     if (p->mat[k] == MPM_MAT_HEAD)

@@ -227,6 +227,11 @@ static inline __attribute__((always_inline)) void g2p_strip_impl(mpm_sim *s, int
    * particle's mass taken from its material (mpm_material.mp), already in cache for the
    * elastic trial: reading p->m here cost 3 % of the USL step (h 2, 4 ppc) */
   double qs = 0.0;
+  /* time.damping_beta: the viscous stress's rate factor beta / (frac dt) while it acts,
+   * and the ledger's sum m sigma_v : deps of the viscous stress scattered this step */
+  const double bvis = (p->vxx && (s->sc.damping_from == MPM_DAMP_START || s->cut))
+                          ? s->sc.damping_beta / (frac * dt) : 0.0;
+  double bv = 0.0;
   mpm_v4 kv = {0.0, 0.0, 0.0, 0.0};
   /* the strip's leftmost and rightmost new positions: a particle left the safe columns
    * iff one of those did (the column is monotone in x, rounding included); NaN ignored */
@@ -308,6 +313,15 @@ static inline __attribute__((always_inline)) void g2p_strip_impl(mpm_sim *s, int
          * finiteness check of the state costs nothing here.  (A non-finite velocity
          * or position shows up one step later, in the strain or in the scatter.) */
         const mpm_material *m = &mat[pmat[k]];
+        if (p->vxx) {
+          /* stiffness-proportional damping: sigma_v = beta C : grad v, none on a separated
+           * particle (its failure plane carries no traction) */
+          bv += m->mp * (p->vxx[k] * de0 + p->vyy[k] * de1 + p->vxy[k] * g2);
+          const double r = p->sep[k] ? 0.0 : bvis;
+          p->vxx[k] = r * (m->E1 * de0 + m->E2 * de1);
+          p->vyy[k] = r * (m->E2 * de0 + m->E1 * de1);
+          p->vxy[k] = r * 2.0 * m->G * de2;
+        }
         const double txx = sxx[k] + m->E1 * de0 + m->E2 * de1;
         const double tyy = syy[k] + m->E2 * de0 + m->E1 * de1;
         const double txy = sxy[k] + 2.0 * m->G * de2;
@@ -340,6 +354,7 @@ static inline __attribute__((always_inline)) void g2p_strip_impl(mpm_sim *s, int
   }
   s->led_part[q][MPM_LED_KP] += kv[GFX] + kv[GFY];
   s->led_part[q][MPM_LED_QS] += qs;
+  s->led_part[q][MPM_LED_BV] += bv;
 }
 
 /* One copy of the loop per pass kind and shape, so that each reads only the lanes it
@@ -437,12 +452,15 @@ static void ledger_step(mpm_sim *s)
    * u_i, the force in the stress), formed on the nodes.  V = m / rho, one rho for all
    * materials (mpm_sim_alloc). */
   assert(s->mat[MPM_MAT_IMP].irho == s->mat[MPM_MAT_BAR].irho && s->mat[MPM_MAT_HEAD].irho == s->mat[MPM_MAT_BAR].irho);
-  const double Q = 0.5 * (s->mat[MPM_MAT_BAR].irho * t[MPM_LED_QS] - B);
+  /* B holds the viscous stress's share (time.damping_beta), Bv: work it took, booked in
+   * L_damp; the stored energy's change is the rest */
+  const double Bv = s->mat[MPM_MAT_BAR].irho * t[MPM_LED_BV];
+  const double Q = 0.5 * (s->mat[MPM_MAT_BAR].irho * t[MPM_LED_QS] - (B - Bv));
   L->L_flip += K - Kp;
   L->L_bc += -L->s_H + (L->s_Wbook - L->s_Wtrue);
   L->L_scheme += L->s_Wtrue - A - K - B - Q + L->s_H - L->s_C - L->s_Dmp;
   L->L_contact += L->s_C;
-  L->L_damp += L->s_Dmp;
+  L->L_damp += L->s_Dmp + Bv;
   s->D_run += t[MPM_LED_D];
 }
 

@@ -69,6 +69,7 @@ typedef struct {
   double path_reach;                    /* decohesion.path_reach                               */
   double sep_threshold; /* the run's separation threshold (summary.json)                     */
   double damping;       /* the run's time.damping (summary.json; 0 if absent)                 */
+  double damping_beta;  /* the run's time.damping_beta (summary.json; 0 if absent)            */
   /* measured here against the analytic bar */
   ana_bar bar;          /* the scene's analytic bar                                          */
   int bar_ok;

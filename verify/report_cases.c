@@ -147,6 +147,7 @@ static int needs_paper_run(const rep_ctx *r, const char *scene)
   return own.shape != vs.sc.shape || own.fields != vs.sc.fields || own.le_mode != vs.sc.le_mode ||
          own.imp_stf_factor != vs.sc.imp_stf_factor || own.scheme != vs.sc.scheme ||
          own.node_mass != vs.sc.node_mass || own.damping != vs.sc.damping || own.imp_size != vs.sc.imp_size ||
+         own.damping_beta != vs.sc.damping_beta ||
          own.path != vs.sc.path || own.grid_motion != vs.sc.grid_motion;
 }
 

@@ -38,6 +38,7 @@ int ver_report_read_summary(rep_case *c)
   c->particles = (double)u->particles;
   c->sep_threshold = d.sep_threshold;
   c->damping = isfinite(d.damping) ? d.damping : 0.0;
+  c->damping_beta = isfinite(d.damping_beta) ? d.damping_beta : 0.0;
   snprintf(c->scheme, sizeof c->scheme, "%s", d.scheme);
   snprintf(c->shape, sizeof c->shape, "%s", d.shape);
   snprintf(c->fields, sizeof c->fields, "%s", d.fields);
@@ -100,10 +101,12 @@ void ver_report_measure(const rep_ctx *r, rep_case *c)
 
 void ver_report_method(const rep_case *c, char *buf, size_t len)
 {
-  char damp[64] = "";
-  if (c->damping > 0.0)
-    snprintf(damp, sizeof damp, ", damping %s%.4g%s%s", !strcmp(c->damping_rule, "critical") ? "critical (" : "",
-             c->damping, !strcmp(c->damping_rule, "critical") ? ")" : "",
+  char damp[96] = "", beta[32] = "";
+  if (c->damping_beta > 0.0)
+    snprintf(beta, sizeof beta, " and beta %.3g", c->damping_beta);
+  if (c->damping > 0.0 || c->damping_beta > 0.0)
+    snprintf(damp, sizeof damp, ", damping %s%.4g%s%s%s", !strcmp(c->damping_rule, "critical") ? "critical (" : "",
+             c->damping, !strcmp(c->damping_rule, "critical") ? ")" : "", beta,
              !strcmp(c->damping_from, "cut") ? " from the cut" : "");
   char path[64] = "";
   if (!strcmp(c->path, "line"))

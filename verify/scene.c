@@ -56,6 +56,7 @@ const keydef ver_scene_keys[] = {
   {"time", "dt", K_DBL, OFF(dt), 1, 0, 0, LO_OPEN, 0, "> 0 and below the CFL bound h / (c sqrt 2)"},
   {"time", "damping", K_DBL, OFF(damping), 0, 0, 0, LO_CLOSED, 0, ">= 0 and below 1 / dt: a rate, the damping of each node's velocity about its slow drift (0: none, the paper), or critical: 2 pi sqrt(E / rho) / L, twice the bar's first axial frequency"},
   {"time", "damping_from", K_DAMPFROM, OFF(damping_from), 0, 0, 0, 0, MPM_DAMP_START, "start (from the first step) or cut (once the band has cut the bar)"},
+  {"time", "damping_beta", K_DBL, OFF(damping_beta), 0, 0, 0, LO_CLOSED, 0, ">= 0, a time: a viscous stress beta C : grad v on the particles not separated, from damping_from on (0: none), or cell: h / sqrt(E / rho), critical for the grid's fastest axial mode; usl or musl"},
   {"time", "damping_tau", K_DBL, OFF(damping_tau), 0, 0, 0, LO_CLOSED, 0, ">= 0: the damping's low-pass time (0: 2 L / c)"},
   {"time", "scheme", K_SCHEME, OFF(scheme), 0, 0, 0, 0, MPM_SCHEME_USL, "usl (the paper), musl, usf or usavg"},
   {"grid", "motion", K_MOTION, OFF(grid_motion), 0, 0, 0, 0, MPM_GRID_FIXED, "fixed (the paper) or stretch (follows the bar's mean stretch)"},
@@ -284,6 +285,8 @@ static int set_key(ver_scene *vs, int ki, const char *value, char *msg, size_t l
     vs->nsnap = n;
   } else if (k->off == OFF(damping) && !strcmp(k->section, "time") && !strcmp(value, "critical")) {
     vs->damping_critical = 1; /* the rate is the bar's: resolve_damping */
+  } else if (k->off == OFF(damping_beta) && !strcmp(k->section, "time") && !strcmp(value, "cell")) {
+    vs->damping_beta_cell = 1; /* the grid's: resolve_damping */
   } else {
     double v;
     const int r = ver_scene_key_num(value, &v);
@@ -304,6 +307,8 @@ static int set_key(ver_scene *vs, int ki, const char *value, char *msg, size_t l
     }
     if (k->off == OFF(damping) && !strcmp(k->section, "time"))
       vs->damping_critical = 0;
+    if (k->off == OFF(damping_beta) && !strcmp(k->section, "time"))
+      vs->damping_beta_cell = 0;
     if (!strcmp(k->section, "output"))
       vs->interval = v;
     else if (k->type == K_INT)
@@ -463,6 +468,10 @@ static void resolve_damping(ver_scene *vs)
 {
   if (vs->damping_critical && vs->sc.L > 0.0 && vs->sc.rho > 0.0 && vs->sc.E > 0.0)
     vs->sc.damping = 2.0 * 3.14159265358979323846 * sqrt(vs->sc.E / vs->sc.rho) / vs->sc.L;
+  /* time.damping_beta = cell: h / c, the beta that damps the grid's fastest axial mode,
+   * omega = 2 c / h on a lumped 1-D lattice, critically (beta omega / 2 = 1) */
+  if (vs->damping_beta_cell && vs->sc.h > 0.0 && vs->sc.rho > 0.0 && vs->sc.E > 0.0)
+    vs->sc.damping_beta = vs->sc.h / sqrt(vs->sc.E / vs->sc.rho);
 }
 
 int ver_scene_parse_string(const char *text, const char *name, ver_scene *vs, char *err, size_t errlen)

@@ -29,6 +29,7 @@ typedef struct {
   double stop_margin;         /* run: stop this far in delta past detected separation (0: never early) */
   double sep_load_frac;       /* run: separation detected when |P| < this fraction of the peak */
   int allow_unstable;         /* accept dt above the CFL bound                           */
+  int damping_beta_cell;      /* time.damping_beta = cell: h / sqrt(E / rho), likewise      */
   int damping_critical;       /* time.damping = critical: the rate is set from the bar, to
                                  2 pi sqrt(E / rho) / L, after the file and each override */
   int line[VER_NKEYS];        /* line each key was set on (0: default, -1: command line) */
@@ -42,7 +43,7 @@ typedef struct {
 
 /* The overrides ("section.key=value") that turn any scene file's method into the
  * paper's (scene_bar.c). */
-#define VER_PAPER_NSETS 10
+#define VER_PAPER_NSETS 11
 extern const char *const ver_paper_sets[VER_PAPER_NSETS];
 
 /* Reads and validates a scene file.  Returns 0, or 2 with one line in err. */

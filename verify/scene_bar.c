@@ -32,5 +32,5 @@ int ver_scene_bar(const mpm_scene *sc, ana_bar *bar, char *err, size_t len)
  * runs at h 8-2, 1 and 4 ppc; docs/bands.md sec. 4). */
 const char *const ver_paper_sets[VER_PAPER_NSETS] = {
     "grid.shape=linear",         "grid.fields=one", "decohesion.Le=cell",
-    "imperfection.stf_factor=1", "time.scheme=usl", "grid.node_mass=limited", "time.damping=0",
+    "imperfection.stf_factor=1", "time.scheme=usl", "grid.node_mass=limited", "time.damping=0", "time.damping_beta=0",
     "imperfection.size=particle", "decohesion.path=free", "grid.motion=fixed"};

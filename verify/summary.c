@@ -80,6 +80,7 @@ int ver_summary_write(const char *dir, const ver_scene *vs, const ver_summary *u
   cJSON_AddStringToObject(o, "shape", ver_scene_word(vs, "grid", "shape"));
   cJSON_AddNumberToObject(o, "separation_threshold", vs->sc.sep_threshold);
   cJSON_AddNumberToObject(o, "damping", vs->sc.damping);
+  cJSON_AddNumberToObject(o, "damping_beta", vs->sc.damping_beta);
   cJSON_AddNumberToObject(o, "speed", vs->sc.speed);
   cJSON_AddStringToObject(o, "damping_from", ver_scene_word(vs, "time", "damping_from"));
   /* how the rate was given: "critical" (set from the bar, 2 pi sqrt(E / rho) / L) or "rate" */
@@ -185,6 +186,7 @@ int ver_summary_read(const char *dir, ver_summary_doc *d)
   d->dt = jnum(o, "dt");
   d->sep_threshold = jnum(o, "separation_threshold");
   d->damping = jnum(o, "damping"); /* NaN from a run before time.damping: none */
+  d->damping_beta = jnum(o, "damping_beta"); /* NaN before time.damping_beta: none */
   d->speed = jnum(o, "speed");     /* NaN from a run before it was written */
   const double ppc = jnum(o, "ppc");
   d->ppc = isfinite(ppc) ? (int)ppc : 0;

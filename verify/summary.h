@@ -63,6 +63,7 @@ typedef struct {
   char scene_file[512];
   double h, dt, sep_threshold;
   double damping;                /* time.damping (NaN if the file predates it: 0)   */
+  double damping_beta;           /* time.damping_beta (NaN if the file predates it: 0) */
   double speed;                  /* loading.speed (NaN if the file predates it)      */
   int ppc;
   char le[16];                   /* "cell" or "particle"                             */
