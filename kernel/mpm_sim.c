@@ -94,8 +94,9 @@ mpm_status mpm_scene_check(const mpm_scene *sc, char *err, size_t errlen)
     BAD("time.damping must be >= 0 and below 1 / time.dt = %g", 1.0 / sc->dt);
   if (!(sc->damping_tau >= 0.0 && isfinite(sc->damping_tau))) BAD("time.damping_tau must be >= 0 (0: 2 L / c)");
   if (!(sc->damping_beta >= 0.0 && isfinite(sc->damping_beta))) BAD("time.damping_beta must be >= 0");
-  if (sc->damping_beta > 0.0 && sc->scheme != MPM_SCHEME_USL && sc->scheme != MPM_SCHEME_MUSL)
-    BAD("time.damping_beta needs time.scheme = usl or musl (one strain pass a step)");
+  if (sc->damping_beta > 0.0 && sc->scheme != MPM_SCHEME_MUSL)
+    BAD("time.damping_beta needs time.scheme = musl (usl: fig8.ini's beta = h / c throws a "
+        "particle off the grid after the cut at h 4, 1 ppc; usf, usavg: two strain passes)");
   if (sc->damping_from != MPM_DAMP_CUT && sc->damping_from != MPM_DAMP_START) BAD("time.damping_from must be cut or start");
   if (sc->damping > 0.0 && sc->node_mass == MPM_NODEMASS_LIMITED && sc->shape == MPM_SHAPE_LINEAR &&
       (sc->scheme == MPM_SCHEME_USL || sc->scheme == MPM_SCHEME_USAVG))

@@ -137,7 +137,7 @@ static void usage(FILE *f)
     "(fig6.ini's); Fig. 6 and Fig. 7 at h = 2 with uGIMP; Fig. 7 at h = 2 with\n"
     "uGIMP and two velocity fields, from a band already cut, and through the softening\n"
     "with Le measured per row and as its file runs it (Le over the lead's zone, the band\n"
-    "held to its line); Fig. 8 at h = 2 as its file runs it (uGIMP, two fields, local\n"
+    "held to its line); Fig. 8 at h = 2 as its file runs it (uGIMP, two fields, Rayleigh\n"
     "damping) from a band already cut, with and without the damping (the case id ends in\n"
     "the method).\n"
     "Each case runs --repeat times from the same start and the fastest run is reported\n"

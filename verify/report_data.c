@@ -103,14 +103,13 @@ void ver_report_method(const rep_case *c, char *buf, size_t len)
 {
   char damp[96] = "", beta[32] = "";
   if (c->damping_beta > 0.0)
-    snprintf(beta, sizeof beta, " and beta %.3g", c->damping_beta);
+    snprintf(beta, sizeof beta, ", beta %.3g", c->damping_beta);
   if (c->damping > 0.0 || c->damping_beta > 0.0)
-    snprintf(damp, sizeof damp, ", damping %s%.4g%s%s%s", !strcmp(c->damping_rule, "critical") ? "critical (" : "",
-             c->damping, !strcmp(c->damping_rule, "critical") ? ")" : "", beta,
-             !strcmp(c->damping_from, "cut") ? " from the cut" : "");
+    snprintf(damp, sizeof damp, ", damped%s (c %.4g%s)", !strcmp(c->damping_from, "cut") ? " from the cut" : "",
+             c->damping, beta);
   char path[64] = "";
   if (!strcmp(c->path, "line"))
-    snprintf(path, sizeof path, ", held to its line (reach %g h)", c->path_reach);
+    snprintf(path, sizeof path, ", on its line (reach %g h)", c->path_reach);
   snprintf(buf, len, "%s, %s, %s field%s, Le = %s%s%s", !strcmp(c->scheme, "musl") ? "MUSL" : "USL",
            !strcmp(c->shape, "gimp") ? "uGIMP" : "bilinear", c->fields[0] ? c->fields : "one",
            !strcmp(c->fields, "two") ? "s" : "", c->le[0] ? c->le : "cell", path, damp);

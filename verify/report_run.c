@@ -6,6 +6,7 @@
  * pool (pool.c); each child writes to its own log file so that the parent's stderr
  * carries only the progress lines.
  */
+#include <assert.h>
 #include <errno.h>
 #include <fcntl.h>
 #include <math.h>
@@ -60,8 +61,12 @@ int ver_report_add_sets(rep_ctx *r, const char *scene, double h, int ppc, double
     snprintf(id + strlen(id), sizeof id - strlen(id), "-u%g", until);
   if (dt > 0)
     snprintf(id + strlen(id), sizeof id - strlen(id), "-dt%.4g", dt);
-  for (int j = 0; j < nset && j < REP_NSET; j++)
-    id_suffix(id, sizeof id, sets[j]);
+  /* the paper's method is one word in the id: its eleven overrides would not fit */
+  if (sets == ver_paper_sets)
+    snprintf(id + strlen(id), sizeof id - strlen(id), "-paper");
+  else
+    for (int j = 0; j < nset && j < REP_NSET; j++)
+      id_suffix(id, sizeof id, sets[j]);
   const int k = ver_report_find(r, id);
   if (k >= 0) {
     r->c[k].role |= role;
@@ -77,6 +82,7 @@ int ver_report_add_sets(rep_ctx *r, const char *scene, double h, int ppc, double
   c->ppc = ppc;
   c->dt = dt;
   c->until = until;
+  assert(nset <= REP_NSET); /* a case runs every override it is given */
   for (int j = 0; j < nset && j < REP_NSET; j++)
     snprintf(c->set[c->nset++], sizeof c->set[0], "%s", sets[j]);
   c->allow_unstable = (role & REP_STAB) != 0;

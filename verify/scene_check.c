@@ -192,6 +192,13 @@ int ver_scene_validate(ver_scene *vs, char *err, size_t errlen)
              sc->damping, sc->dt, sc->damping * sc->dt, 1.0 / sc->dt);
     return 2;
   }
+  /* the viscous stress is measured stable with MUSL only (kernel/mpm_sim.c says why) */
+  if (sc->damping_beta > 0.0 && sc->scheme != MPM_SCHEME_MUSL) {
+    snprintf(err, errlen, "%s: time.damping_beta: %g needs time.scheme = musl (allowed: 0 with %s)",
+             ver_scene_key_at(vs, ver_scene_key_idx("time", "damping_beta"), at, sizeof at), sc->damping_beta,
+             ver_scene_word(vs, "time", "scheme"));
+    return 2;
+  }
   if (sc->damping > 0.0 && sc->node_mass == MPM_NODEMASS_LIMITED && sc->shape == MPM_SHAPE_LINEAR &&
       (sc->scheme == MPM_SCHEME_USL || sc->scheme == MPM_SCHEME_USAVG)) {
     snprintf(err, errlen, "%s: time.damping: %g needs grid.node_mass = lumped with usl or usavg on linear shapes "
