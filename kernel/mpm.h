@@ -253,6 +253,8 @@ typedef struct {
 } mpm_particles;
 
 mpm_particles *mpm_particles_alloc(size_t n);
+/* The viscous stress arrays of time.damping_beta, zeroed; 0, or -1 out of memory. */
+int mpm_particles_alloc_viscous(mpm_particles *p);
 void mpm_particles_free(mpm_particles *p);
 
 /* ---- grid: a regular lattice of (ncx+1) x (ncy+1) nodes, origin (ox, oy), spacing h.

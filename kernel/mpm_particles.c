@@ -31,6 +31,14 @@ mpm_particles *mpm_particles_alloc(size_t n)
   return p;
 }
 
+int mpm_particles_alloc_viscous(mpm_particles *p)
+{
+  p->vxx = calloc(p->n, sizeof(double));
+  p->vyy = calloc(p->n, sizeof(double));
+  p->vxy = calloc(p->n, sizeof(double));
+  return p->vxx && p->vyy && p->vxy ? 0 : -1;
+}
+
 void mpm_particles_free(mpm_particles *p)
 {
   if (!p)

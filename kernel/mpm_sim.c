@@ -163,14 +163,9 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
   mpm_threads_init(&s->thr, nthreads, np);
   s->nthreads = s->thr.use;
   s->p = mpm_particles_alloc(np);
-  if (s->p && sc->damping_beta > 0.0) {
-    s->p->vxx = calloc(np, sizeof(double));
-    s->p->vyy = calloc(np, sizeof(double));
-    s->p->vxy = calloc(np, sizeof(double));
-    if (!s->p->vxx || !s->p->vyy || !s->p->vxy) {
-      mpm_particles_free(s->p);
-      s->p = NULL;
-    }
+  if (s->p && sc->damping_beta > 0.0 && mpm_particles_alloc_viscous(s->p) != 0) {
+    mpm_particles_free(s->p);
+    s->p = NULL;
   }
   s->dws = calloc((size_t)s->thr.nmax, sizeof *s->dws);
   s->defer = calloc((size_t)s->thr.nmax, sizeof *s->defer);

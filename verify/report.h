@@ -64,7 +64,6 @@ typedef struct {
   char scheme[16];      /* "usl" or "musl" (summary.json)                                     */
   char shape[16], fields[16], le[16]; /* "linear"/"gimp", "one"/"two", "cell"/... (summary.json) */
   char damping_from[16];                /* "start" or "cut" (summary.json; "" if absent)        */
-  char damping_rule[16];                /* "critical" or "rate" (summary.json; "" if absent)    */
   char path[16];                        /* decohesion.path, "free" or "line" ("" if absent)    */
   double path_reach;                    /* decohesion.path_reach                               */
   double sep_threshold; /* the run's separation threshold (summary.json)                     */

@@ -43,7 +43,6 @@ int ver_report_read_summary(rep_case *c)
   snprintf(c->shape, sizeof c->shape, "%s", d.shape);
   snprintf(c->fields, sizeof c->fields, "%s", d.fields);
   snprintf(c->damping_from, sizeof c->damping_from, "%s", d.damping_from);
-  snprintf(c->damping_rule, sizeof c->damping_rule, "%s", d.damping_rule);
   snprintf(c->path, sizeof c->path, "%s", d.path);
   c->path_reach = d.path_reach;
   snprintf(c->le, sizeof c->le, "%s", d.le);

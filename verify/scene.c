@@ -227,12 +227,35 @@ int ver_scene_key_num(const char *s, double *v)
   return 0;
 }
 
+/* Number keys that also take one word, for a value the scene itself gives: the word sets
+ * the flag, and resolve_damping derives the number after the file and every override. */
+static const struct {
+  const char *section, *key, *word;
+  size_t flag;
+} derived_words[] = {
+  {"time", "damping", "critical", VOFF(damping_critical)},
+  {"time", "damping_beta", "cell", VOFF(damping_beta_cell)},
+};
+
+/* The flag of key k's word (NULL: none), and the word into *word. */
+static int *derived_flag(ver_scene *vs, const keydef *k, const char **word)
+{
+  for (size_t i = 0; i < sizeof derived_words / sizeof derived_words[0]; i++)
+    if (!strcmp(k->section, derived_words[i].section) && !strcmp(k->key, derived_words[i].key)) {
+      *word = derived_words[i].word;
+      return (int *)((char *)vs + derived_words[i].flag);
+    }
+  return NULL;
+}
+
 /* Checks value for key ki and stores it; 0, or 2 with a message (no location) in msg. */
 static int set_key(ver_scene *vs, int ki, const char *value, char *msg, size_t len)
 {
   const keydef *k = &ver_scene_keys[ki];
   char sv[48];
   char *base = (char *)vs;
+  int *flag = NULL;         /* derived_words: the key's word flag, if it has one */
+  const char *word = NULL;
   while (*value == ' ' || *value == '\t')
     value++;
   if (!*value) {
@@ -283,10 +306,8 @@ static int set_key(ver_scene *vs, int ki, const char *value, char *msg, size_t l
     }
     memcpy(vs->snap, v, sizeof(double) * (size_t)n);
     vs->nsnap = n;
-  } else if (k->off == OFF(damping) && !strcmp(k->section, "time") && !strcmp(value, "critical")) {
-    vs->damping_critical = 1; /* the rate is the bar's: resolve_damping */
-  } else if (k->off == OFF(damping_beta) && !strcmp(k->section, "time") && !strcmp(value, "cell")) {
-    vs->damping_beta_cell = 1; /* the grid's: resolve_damping */
+  } else if ((flag = derived_flag(vs, k, &word)) && !strcmp(value, word)) {
+    *flag = 1; /* the number is the scene's: resolve_damping */
   } else {
     double v;
     const int r = ver_scene_key_num(value, &v);
@@ -305,10 +326,8 @@ static int set_key(ver_scene *vs, int ki, const char *value, char *msg, size_t l
                k->allowed);
       return 2;
     }
-    if (k->off == OFF(damping) && !strcmp(k->section, "time"))
-      vs->damping_critical = 0;
-    if (k->off == OFF(damping_beta) && !strcmp(k->section, "time"))
-      vs->damping_beta_cell = 0;
+    if (flag)
+      *flag = 0; /* a number given after the word replaces it */
     if (!strcmp(k->section, "output"))
       vs->interval = v;
     else if (k->type == K_INT)

@@ -177,7 +177,6 @@ int ver_summary_read(const char *dir, ver_summary_doc *d)
   jstr(o, "shape", d->shape, sizeof d->shape);
   jstr(o, "fields", d->fields, sizeof d->fields);
   jstr(o, "damping_from", d->damping_from, sizeof d->damping_from);
-  jstr(o, "damping_rule", d->damping_rule, sizeof d->damping_rule);
   jstr(o, "path", d->path, sizeof d->path);
   jstr(o, "motion", d->motion, sizeof d->motion);
   d->path_reach = jnum(o, "path_reach");

@@ -71,7 +71,6 @@ typedef struct {
   char shape[16];                /* "linear" or "gimp"                               */
   char fields[16];               /* "one" or "two" velocity fields                   */
   char damping_from[16];         /* "start" or "cut" ("" if the file predates it)   */
-  char damping_rule[16];         /* "critical" or "rate" ("" if the file predates it) */
   char path[16];                 /* decohesion.path: "free" or "line" ("" if absent) */
   char motion[16];               /* grid.motion: "fixed" or "stretch" ("" if absent) */
   double path_reach;             /* decohesion.path_reach (NaN if absent)           */

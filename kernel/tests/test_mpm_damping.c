@@ -50,7 +50,7 @@ static double booked(const mpm_energy *e)
 
 /* Energy kept over `periods` of 2 L / c (the time run into *t); the ledger's gap over E0
  * into *gap. */
-static double run_vib2(double c, double beta, double periods, double *t, double *gap, double *ldamp)
+static double run_vib(double c, double beta, double periods, double *t, double *gap, double *ldamp)
 {
   mpm_scene sc = bar_scene(8.0);
   sc.damping = c;
@@ -76,17 +76,12 @@ static double run_vib2(double c, double beta, double periods, double *t, double 
   return (e.KE + e.SE) / E0;
 }
 
-static double run_vib(double c, double periods, double *t, double *gap, double *ldamp)
-{
-  return run_vib2(c, 0.0, periods, t, gap, ldamp);
-}
-
 static void test_damping_decay(void **state)
 {
   (void)state;
   const double c = 0.05;
   double t0, t, gap0, gap, ld0, ld;
-  const double k0 = run_vib(0.0, 2.0, &t0, &gap0, &ld0), k = run_vib(c, 2.0, &t, &gap, &ld);
+  const double k0 = run_vib(0.0, 0.0, 2.0, &t0, &gap0, &ld0), k = run_vib(c, 0.0, 2.0, &t, &gap, &ld);
   print_message("kept: undamped %.5f, damped %.5f; (kept / undamped) / exp(-c t) = %.4f; L_damp / E0 %.4f\n", k0, k,
                 k / k0 / exp(-c * t), ld);
   assert_rel(k / k0, exp(-c * t), 0.02, "damped energy kept / undamped against exp(-c t)");
@@ -109,7 +104,7 @@ static void test_damping_beta_decay(void **state)
   (void)state;
   const double beta = 0.1;
   double t0, t, gap0, gap, ld0, ld;
-  const double k0 = run_vib2(0.0, 0.0, 2.0, &t0, &gap0, &ld0), k = run_vib2(0.0, beta, 2.0, &t, &gap, &ld);
+  const double k0 = run_vib(0.0, 0.0, 2.0, &t0, &gap0, &ld0), k = run_vib(0.0, beta, 2.0, &t, &gap, &ld);
   const double w = PI * 32.0 / 192.0; /* vibration.ini: E 1024, rho 1, L 192 */
   print_message("beta: kept undamped %.5f, damped %.5f; (kept / undamped) / exp(-beta w^2 t) = %.4f; L_damp / E0 %.4f\n",
                 k0, k, k / k0 / exp(-beta * w * w * t), ld);
