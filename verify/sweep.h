@@ -28,6 +28,7 @@ typedef struct {
   const char *set;    /* "section.key=value" or NULL */
   int whole;          /* 1: to the scene's own end_delta, not the verify stop       */
   int slow;           /* k: set makes loading.speed the file's / 2^k (rate studies)  */
+  int swap;           /* 1: the file's snf and stf exchanged (the other mode, --angles) */
 } ver_variant;
 
 

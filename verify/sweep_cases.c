@@ -3,6 +3,7 @@
  * scene x h x ppc, each case's scene with the overrides `delam run` gets, its analytic
  * bar (ver_scene_bar) and end displacement; and reading back what a run left.
  */
+#include <assert.h>
 #include <dirent.h>
 #include <errno.h>
 #include <math.h>
@@ -17,24 +18,27 @@
 #include "summary.h"
 #include "sweep.h"
 
-static const ver_variant V_BASE = {"", NULL, 0, 0};
-static const ver_variant V_LEP = {"Leparticle", "decohesion.Le=particle", 0, 0};
-static const ver_variant V_SEP8 = {"sep0.8", "decohesion.separation=0.8", 0, 0};
+static const ver_variant V_BASE = {"", NULL, 0, 0, 0};
+static const ver_variant V_LEP = {"Leparticle", "decohesion.Le=particle", 0, 0, 0};
+static const ver_variant V_SEP8 = {"sep0.8", "decohesion.separation=0.8", 0, 0, 0};
 /* the scene's whole run (its end_delta, no early stop) for the energy balance to the end */
-static const ver_variant V_WHOLE = {"whole", "run.stop_margin=0", 1, 0};
+static const ver_variant V_WHOLE = {"whole", "run.stop_margin=0", 1, 0, 0};
 /* fig6.ini's grip speed 0.001 halved and quartered: the speed refined with h
  * (v = 0.001 h / 8) and the rate study at fixed h (policy.c policy_rate) */
-static const ver_variant V_V2 = {"v0.0005", "loading.speed=0.0005", 0, 1};
-static const ver_variant V_V4 = {"v0.00025", "loading.speed=0.00025", 0, 2};
-/* --angles: an inclined file with only its laminate angle changed (issue 13: the
- * method must hold for bands the files were not written for); a file's own angle is
- * --full's case and is left out */
-static const double V_ANGLE_DEG[4] = {30, 45, 60, 75};
-static const ver_variant V_ANGLES[4] = {
-  {"a30", "decohesion.alpha=30", 0, 0},
-  {"a45", "decohesion.alpha=45", 0, 0},
-  {"a60", "decohesion.alpha=60", 0, 0},
-  {"a75", "decohesion.alpha=75", 0, 0},
+static const ver_variant V_V2 = {"v0.0005", "loading.speed=0.0005", 0, 1, 0};
+static const ver_variant V_V4 = {"v0.00025", "loading.speed=0.00025", 0, 2, 0};
+/* --angles: an inclined file with only its laminate angle changed, and with its two
+ * failure tractions snf and stf exchanged as well (the other mode: Mode I by strengths
+ * becomes Mode II and back), issue 13: the method must hold for the bands and modes the
+ * files were not written for.  A file's own angle in its own mode is --full's case and is
+ * left out; in the other mode it is kept (its alpha restated). */
+#define V_NANGLE 4
+static const double V_ANGLE_DEG[V_NANGLE] = {30, 45, 60, 75};
+static const ver_variant V_ANGLES[2 * V_NANGLE] = {
+  {"a30", "decohesion.alpha=30", 0, 0, 0},       {"a45", "decohesion.alpha=45", 0, 0, 0},
+  {"a60", "decohesion.alpha=60", 0, 0, 0},       {"a75", "decohesion.alpha=75", 0, 0, 0},
+  {"a30-swap", "decohesion.alpha=30", 0, 0, 1}, {"a45-swap", "decohesion.alpha=45", 0, 0, 1},
+  {"a60-swap", "decohesion.alpha=60", 0, 0, 1}, {"a75-swap", "decohesion.alpha=75", 0, 0, 1},
 };
 
 /* The scene file with the same overrides `delam run --h H --ppc N --set ...` applies
@@ -92,6 +96,15 @@ int ver_case_init(ver_case *c, const char *path, const char *scene, double h, in
     snprintf(c->sets[c->nset++], sizeof c->sets[0], "%s", v.set);
   if (build_scene(path, h, ppc, c->sets, c->nset, &c->vs, err, len))
     return 2;
+  char swap[2][sizeof c->sets[0]]; /* the file's own tractions exchanged: the other mode */
+  if (v.swap) {
+    snprintf(swap[0], sizeof swap[0], "decohesion.snf=%.17g", c->vs.sc.stf);
+    snprintf(swap[1], sizeof swap[1], "decohesion.stf=%.17g", c->vs.sc.snf);
+    for (int i = 0; i < 2; i++)
+      memcpy(c->sets[c->nset++], swap[i], sizeof swap[i]);
+    if (build_scene(path, h, ppc, c->sets, c->nset, &c->vs, err, len))
+      return 2;
+  }
   char aerr[256];
   double mult = 4.0, least = 1.0;
   if (c->vs.sc.model > 0 && ver_scene_bar(&c->vs.sc, &c->ana, aerr, sizeof aerr) == 0) {
@@ -113,6 +126,9 @@ int ver_case_init(ver_case *c, const char *path, const char *scene, double h, in
     snprintf(c->sets[c->nset++], sizeof c->sets[0], "run.stop_margin=%.6g", 2.0 * VER_LOAD_SETTLE);
   if (v.set)
     snprintf(c->sets[c->nset++], sizeof c->sets[0], "%s", v.set);
+  for (int i = 0; v.swap && i < 2; i++)
+    memcpy(c->sets[c->nset++], swap[i], sizeof swap[i]);
+  assert(c->nset <= VER_MAXSET);
   if (build_scene(path, h, ppc, c->sets, c->nset, &c->vs, err, len))
     return 2;
   char base[100];
@@ -195,7 +211,7 @@ int ver_sweep_cases(const ver_verify_opts *o, ver_case **out, int *nout)
     static const int ps[] = {1, 4, 9}, ps_angles[] = {1, 4};
     const double *hv = o->angles ? hs_angles : hs;
     const int *pv = o->angles ? ps_angles : ps;
-    const int nh = o->angles ? 2 : 4, np = o->angles ? 2 : 3, na = o->angles ? 4 : 1;
+    const int nh = o->angles ? 2 : 4, np = o->angles ? 2 : 3, na = o->angles ? 2 * V_NANGLE : 1;
     cs = calloc((size_t)(nn * nh * np * na + 1), sizeof *cs);
     int rc = cs ? 0 : 2;
     for (int i = 0; i < nn && !rc; i++) {
@@ -211,8 +227,8 @@ int ver_sweep_cases(const ver_verify_opts *o, ver_case **out, int *nout)
         continue;
       for (int k = 0; k < na && !rc; k++) {
         const ver_variant *v = o->angles ? &V_ANGLES[k] : &V_BASE;
-        if (o->angles && fabs(sf.sc.alpha_deg - V_ANGLE_DEG[k]) < 1e-9)
-          continue; /* the file's own angle: --full's case */
+        if (o->angles && !v->swap && fabs(sf.sc.alpha_deg - V_ANGLE_DEG[k % V_NANGLE]) < 1e-9)
+          continue; /* the file's own angle and mode: --full's case */
         for (int a = 0; a < nh && !rc; a++)
           for (int b = 0; b < np && !rc; b++) {
             if (ver_case_init(&cs[n], path, scene, hv[a], pv[b], *v, err, sizeof err)) {
