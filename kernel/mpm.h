@@ -97,6 +97,12 @@ enum { MPM_DAMP_START = 0, MPM_DAMP_CUT = 1 };
  * laminate delaminates along its ply interface: the crack's path is the plane at alpha
  * through where it starts (docs/bands.md sec. 3c). */
 enum { MPM_PATH_FREE = 0, MPM_PATH_LINE = 1 };
+/* decohesion.reversed_shear: shear on the failure plane against a particle's accumulated
+ * tangential jump (s_nt upt < 0).  EVEN (the paper): eq. 23 is even in s_nt, so it softens
+ * the particle as shear the other way does.  CLOSING: it closes the slip elastically and
+ * neither starts nor drives decohesion, as <sn> keeps normal compression out of eq. 23
+ * (mpm_decohesion.c; docs/bands.md sec. 5j). */
+enum { MPM_SHEAR_EVEN = 0, MPM_SHEAR_CLOSING = 1 };
 
 /* ---- scene: everything a run needs, as plain numbers (filled by verify/scene.c) ---- */
 typedef struct {
@@ -117,6 +123,7 @@ typedef struct {
   double imp_x, imp_y;   /* the imperfection sits at the particle nearest this point   */
   int imp_size;          /* MPM_IMP_PARTICLE (the paper) or MPM_IMP_CELL               */
   int path;              /* MPM_PATH_FREE (the paper) or MPM_PATH_LINE                 */
+  int reversed_shear;    /* MPM_SHEAR_EVEN (the paper) or MPM_SHEAR_CLOSING            */
   double path_reach;     /* LINE: the band's half-width beyond the crossed cells, in cells */
   double h;              /* grid spacing                                               */
   int ppc;               /* particles per cell, a perfect square (1, 4, 9, ...)        */
@@ -181,6 +188,8 @@ typedef struct {
   double Le;             /* effective length V_e / A_d (eq. 41), fixed for the run     */
   double sep_threshold;  /* eqs. 56-58 take over when lambda would pass this           */
   double visc;           /* decohesion.eta / dt: overstress per unit dlambda in a step (0: none) */
+  int shear_closing;     /* decohesion.reversed_shear = closing: shear against the particle's
+                            slip upt leaves eq. 23 (mpm_decohesion.c)                  */
   /* derived (mpm_material_derive), so that the hot paths multiply instead of divide */
   double isnf, istf;     /* 1 / snf, 1 / stf                                            */
   double isnf2, istf2;   /* 1 / snf^2, 1 / stf^2                                        */

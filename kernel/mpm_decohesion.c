@@ -29,6 +29,8 @@
  *    dissipation counts min(lambda, 1) (mpm_sim_energy).
  *  - A separated particle in normal compression first closes its opening
  *    (d ud_n >= -ud_n), then carries the compression; shear is always released.
+ *  - decohesion.reversed_shear = closing (not the paper's): shear against the
+ *    particle's accumulated slip is elastic, the <sn> of the shear (see the update).
  */
 #include <assert.h>
 #include <math.h>
@@ -90,6 +92,7 @@ void mpm_material_init(mpm_material *m, const mpm_scene *sc, double snf, double 
   m->Le = Le;
   m->sep_threshold = sc->sep_threshold;
   m->visc = sc->dt > 0.0 ? sc->eta / sc->dt : 0.0;
+  m->shear_closing = sc->reversed_shear == MPM_SHEAR_CLOSING;
   mpm_material_derive(m);
 }
 
@@ -306,19 +309,25 @@ mpm_status mpm_dcoh_update(const mpm_material *m, const mpm_dstate *in, const do
     separate(m, tr, in->upn, &s, &dun, &dut);
     info->path = MPM_DPATH_OPEN;
   } else {
-    const double se = eff_traction(m, tr.nn, tr.nt);
+    /* decohesion.reversed_shear = closing: shear against the slip the particle has
+     * accumulated (s_nt upt < 0) closes that slip elastically and leaves eq. 23, as <sn>
+     * leaves normal compression out of it; only the opening part may soften.  The paper's
+     * eq. 23 is even in s_nt (EVEN): after a release the rebound's reversed shear fails
+     * the band's part-softened neighbours (docs/bands.md secs. 5h, 5j). */
+    const double st = (m->shear_closing && tr.nt * in->upt < 0.0) ? 0.0 : tr.nt;
+    const double se = eff_traction(m, tr.nn, st);
     const double c = se - (1.0 - powq(in->lam, m->q));            /* eq. 23 */
     if (c <= 0.0)
       goto done;
     /* Flow direction at the trial state (eqs. 24, 26). */
     const double ise = 1.0 / se, r = m->s0 * ise;
     const double gn = tr.nn > 0.0 ? tr.nn * m->isnf2 : 0.0;
-    const double gt = tr.nt * m->istf2;
+    const double gt = st * m->istf2;
     const double mn = r * gn;
     const double mt = m->model == MPM_DCOH_MODEL2 ? 0.0 : r * gt;
     /* Traction (and s_tt) per unit dlambda: C : (ubar0/Le) sym(n (x) m), eqs. 39-41. */
     const double k = m->kL;
-    phi_ctx ctx = {m, tr.nn, tr.nt, m->E1 * k * mn, m->G * k * mt, in->lam};
+    phi_ctx ctx = {m, tr.nn, st, m->E1 * k * mn, m->G * k * mt, in->lam};
     const double smtt = m->E2 * k * mn;
     /* 2b of eq. 49, -(m* : s_m) / s0 + q lambda^(q-1) with m* = (s0 / se)(gn, gt),
      * is dpow - Q / se^2 with Q = s0 (ubar0 / Le)(E1 gn^2 + G gt^2); the first-order

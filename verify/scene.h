@@ -15,7 +15,7 @@
 #include "mpm.h"
 
 #define VER_MAX_SNAP 16
-#define VER_NKEYS 48
+#define VER_NKEYS 49
 #define VER_NSECT 12
 #define VER_MAX_OVER 32
 
@@ -43,7 +43,7 @@ typedef struct {
 
 /* The overrides ("section.key=value") that turn any scene file's method into the
  * paper's (scene_bar.c). */
-#define VER_PAPER_NSETS 11
+#define VER_PAPER_NSETS 12
 extern const char *const ver_paper_sets[VER_PAPER_NSETS];
 
 /* Reads and validates a scene file.  Returns 0, or 2 with one line in err. */

@@ -33,4 +33,4 @@ int ver_scene_bar(const mpm_scene *sc, ana_bar *bar, char *err, size_t len)
 const char *const ver_paper_sets[VER_PAPER_NSETS] = {
     "grid.shape=linear",         "grid.fields=one", "decohesion.Le=cell",
     "imperfection.stf_factor=1", "time.scheme=usl", "grid.node_mass=limited", "time.damping=0", "time.damping_beta=0",
-    "imperfection.size=particle", "decohesion.path=free", "grid.motion=fixed"};
+    "imperfection.size=particle", "decohesion.path=free", "grid.motion=fixed", "decohesion.reversed_shear=even"};

@@ -86,6 +86,7 @@ int ver_summary_write(const char *dir, const ver_scene *vs, const ver_summary *u
   /* how the rate was given: "critical" (set from the bar, 2 pi sqrt(E / rho) / L) or "rate" */
   cJSON_AddStringToObject(o, "damping_rule", vs->damping_critical ? "critical" : "rate");
   cJSON_AddStringToObject(o, "path", ver_scene_word(vs, "decohesion", "path"));
+  cJSON_AddStringToObject(o, "reversed_shear", ver_scene_word(vs, "decohesion", "reversed_shear"));
   cJSON_AddStringToObject(o, "motion", ver_scene_word(vs, "grid", "motion"));
   cJSON_AddNumberToObject(o, "path_reach", vs->sc.path_reach);
   cJSON_AddBoolToObject(o, "complete", u->complete);

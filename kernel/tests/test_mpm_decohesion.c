@@ -9,7 +9,7 @@
  *    and the dissipation U0 lambda -> U0;
  *  - the flow directions of eqs. 24 (Model 1) and 26 (Model 2) evaluated here;
  *  - the decisions in the header of mpm_decohesion.c: Macaulay bracket, contact of a
- *    separated particle, purity.
+ *    separated particle, purity, and the reversed-shear option (closing).
  * Material (the paper's Fig. 6 data): E 1024, nu 0.25, rho 1, U0 0.375, s0 1,
  * separation threshold 0.98, Le 8 (one cell of the Fig. 6 grid).
  */
@@ -352,6 +352,83 @@ static void test_mpm_decohesion_shear(void **state)
 }
 
 /*
+ * decohesion.reversed_shear (docs/bands.md sec. 5j): a particle softened in shear to
+ * lambda about 0.5, then sheared back past its strength the other way, then forward again.
+ * EVEN (the paper's eq. 23, even in st): the reversed shear softens it once |st| reaches
+ * stf (1 - lambda), and the slip upt runs back.  CLOSING: every reversed step is elastic,
+ * st = st_rev + 2G d(exy) with G from E and nu, lambda and upt unchanged, even at 1.5 times
+ * the strength; forward again it stays elastic up to stf (1 - lambda) and then softens
+ * on F = 0 from the lambda it kept.
+ */
+static void test_mpm_decohesion_reversed_shear(void **state)
+{
+  (void)state;
+  const double E = 1024.0, nu = 0.25, G = E / (2.0 * (1.0 + nu)), stf = 1.0, s0 = 10.0;
+  mpm_dwork *w = mpm_dwork_alloc();
+  for (int rule = MPM_SHEAR_EVEN; rule <= MPM_SHEAR_CLOSING; rule++) {
+    mpm_scene sc = base_scene(MPM_DCOH_MODEL1, 90.0, 10.0, stf, s0, 1.0);
+    sc.reversed_shear = rule;
+    mpm_material m;
+    mpm_material_init(&m, &sc, 10.0, LE);
+    const double d = 2e-5;
+    mpm_dstate s = zero_state();
+    mpm_dinfo info;
+    double sn, st;
+    for (int k = 0; k < 2000 && s.lam < 0.5; k++) {
+      const double de[3] = {0.0, 0.0, d};
+      step(&m, &s, de, &info, w);
+    }
+    assert_true(s.lam >= 0.5 && s.lam < 0.6 && !s.sep);
+    const double lam1 = s.lam, upt1 = s.upt;
+    traction(90.0, s.sxx, s.syy, s.sxy, &sn, &st);
+    const double st1 = st;
+    assert_rel(st1, stf * (1.0 - lam1), 1e-8, "on the forward branch");
+    /* back: 2G n d = 2.5 times the strength, so st ends at -1.5 stf (1 - lambda) */
+    const int nback = (int)ceil(2.5 * stf * (1.0 - lam1) / (2.0 * G * d));
+    int nsoft = 0;
+    for (int k = 1; k <= nback; k++) {
+      const double de[3] = {0.0, 0.0, -d};
+      step(&m, &s, de, &info, w);
+      traction(90.0, s.sxx, s.syy, s.sxy, &sn, &st);
+      if (rule == MPM_SHEAR_CLOSING) {
+        assert_int_equal(info.path, MPM_DPATH_ELASTIC);
+        assert_abs(st, st1 - 2.0 * G * d * k, 1e-10, "closing: reversed shear is elastic");
+        assert_true(s.lam == lam1 && s.upt == upt1);
+      } else if (info.path == MPM_DPATH_SOFTEN) {
+        nsoft++;
+        assert_abs(st, -stf * (1.0 - s.lam), 1e-8, "even: the reversed branch, |st| = stf (1 - lambda)");
+      }
+    }
+    if (rule == MPM_SHEAR_EVEN) {
+      assert_true(nsoft > 10);
+      assert_true(s.lam > lam1 + 0.01); /* 0.25 of stress past the strength over B - stf = 18.2 */
+      assert_true(s.upt < upt1); /* the slip runs back */
+      continue;
+    }
+    assert_true(st < -1.4 * stf * (1.0 - lam1));
+    /* forward again: elastic up to the kept strength, then the branch from lam1 */
+    int first_soft = -1;
+    const double st_back = st;
+    for (int k = 1; k <= 2 * nback && first_soft < 0; k++) {
+      const double de[3] = {0.0, 0.0, d};
+      step(&m, &s, de, &info, w);
+      traction(90.0, s.sxx, s.syy, s.sxy, &sn, &st);
+      if (info.path == MPM_DPATH_SOFTEN) {
+        first_soft = k;
+        assert_abs(mpm_dcoh_F(&m, s.sxx, s.syy, s.sxy, s.lam), 0.0, 1e-10, "F after softening");
+        assert_true(s.lam > lam1 && s.lam < lam1 + 0.01);
+      } else {
+        assert_int_equal(info.path, MPM_DPATH_ELASTIC);
+        assert_abs(st, st_back + 2.0 * G * d * k, 1e-10, "forward again: elastic");
+        assert_true(st <= stf * (1.0 - lam1) + 1e-12);
+      }
+    }
+    assert_true(first_soft > 0);
+  }
+  mpm_dwork_free(w);
+}
+
+/*
  * Mixed loading: alpha = 60 with uniaxial-stress increments in x (sn and st both
  * nonzero), stf = 2 so that both terms of se matter.  Checks at every softening step:
  * F = 0; the increment of up is along the flow direction evaluated here at the trial
@@ -645,6 +722,7 @@ int main(void)
       cmocka_unit_test(test_mpm_decohesion_viscous_overstress),
       cmocka_unit_test(test_mpm_decohesion_opening_q_range),
       cmocka_unit_test(test_mpm_decohesion_shear),
+      cmocka_unit_test(test_mpm_decohesion_reversed_shear),
       cmocka_unit_test(test_mpm_decohesion_mixed_model1),
       cmocka_unit_test(test_mpm_decohesion_model2_normal_only),
       cmocka_unit_test(test_mpm_decohesion_compression_never_initiates),
