@@ -65,6 +65,7 @@ typedef struct {
   char shape[16], fields[16], le[16]; /* "linear"/"gimp", "one"/"two", "cell"/... (summary.json) */
   char damping_from[16];                /* "start" or "cut" (summary.json; "" if absent)        */
   char path[16];                        /* decohesion.path, "free" or "line" ("" if absent)    */
+  char reversed_shear[16];              /* decohesion.reversed_shear ("" if absent)            */
   double path_reach;                    /* decohesion.path_reach                               */
   double sep_threshold; /* the run's separation threshold (summary.json)                     */
   double damping;       /* the run's time.damping (summary.json; 0 if absent)                 */

@@ -67,7 +67,7 @@ static void table_role(report *R, int mask)
     const rep_case *c = &R->r.c[i];
     if (!(c->role & mask) || !c->have)
       continue;
-    char a[32], b[32], d[32], e[32], f[32], g[32], m[128];
+    char a[32], b[32], d[32], e[32], f[32], g[32], m[192];
     ver_report_method(c, m, sizeof m);
     rep_table_row(t, c->complete ? REP_ROW_PLAIN : REP_ROW_FAIL, "%s\t%s\t%s\t%s (%s)\t%s\t%s (%.4g)\t%s\t%s", c->id,
                   m, num(c->bar.g, a, sizeof a),
@@ -88,7 +88,7 @@ static void table_runs(report *R)
       rep_table_row(t, REP_ROW_FAIL, "%s\t\tno result\t\t\t\t\t\t\t", c->id);
       continue;
     }
-    char a[32], b[32], d[32], e[32], m[128];
+    char a[32], b[32], d[32], e[32], m[192];
     ver_report_method(c, m, sizeof m);
     rep_table_row(t, c->complete || (c->role & REP_STAB) ? REP_ROW_PLAIN : REP_ROW_FAIL,
                   "%s\t%s\t%s\t%.3g\t%s\t%s\t%s\t%s\t%.3g\t%s", c->id, m,

@@ -44,6 +44,7 @@ int ver_report_read_summary(rep_case *c)
   snprintf(c->fields, sizeof c->fields, "%s", d.fields);
   snprintf(c->damping_from, sizeof c->damping_from, "%s", d.damping_from);
   snprintf(c->path, sizeof c->path, "%s", d.path);
+  snprintf(c->reversed_shear, sizeof c->reversed_shear, "%s", d.reversed_shear);
   c->path_reach = d.path_reach;
   snprintf(c->le, sizeof c->le, "%s", d.le);
   snprintf(c->error, sizeof c->error, "%.255s", d.error);
@@ -109,7 +110,8 @@ void ver_report_method(const rep_case *c, char *buf, size_t len)
   char path[64] = "";
   if (!strcmp(c->path, "line"))
     snprintf(path, sizeof path, ", on its line (reach %g h)", c->path_reach);
-  snprintf(buf, len, "%s, %s, %s field%s, Le = %s%s%s", !strcmp(c->scheme, "musl") ? "MUSL" : "USL",
+  snprintf(buf, len, "%s, %s, %s field%s, Le = %s%s%s%s", !strcmp(c->scheme, "musl") ? "MUSL" : "USL",
            !strcmp(c->shape, "gimp") ? "uGIMP" : "bilinear", c->fields[0] ? c->fields : "one",
-           !strcmp(c->fields, "two") ? "s" : "", c->le[0] ? c->le : "cell", path, damp);
+           !strcmp(c->fields, "two") ? "s" : "", c->le[0] ? c->le : "cell", path, damp,
+           !strcmp(c->reversed_shear, "closing") ? ", reversed shear closing" : "");
 }

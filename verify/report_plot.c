@@ -242,10 +242,15 @@ static void write_vars_case(FILE *vars, const char *key, const rep_case *c)
   fprintf(vars, "%s = \"%s\"\n%s_hw = %.6g\n", key, c ? c->id : "", key, c ? 0.5 * c->h / sqrt(c->ppc) : 1.0);
   fprintf(vars, "%s_end = %.6g\n", key, c && c->have ? c->delta_end : 0.0);
   fprintf(vars, "%s_speed = %.6g\n", key, c && c->speed > 0 ? c->speed : 1.0);
-  char m[128] = "";
+  char m[192] = "";
   if (c)
     ver_report_method(c, m, sizeof m);
-  fprintf(vars, "%s_method = \"%s, h = %g, %d ppc\"\n", key, m, c ? c->h : 0.0, c ? c->ppc : 0);
+  /* a long label breaks before its damping, so that a figure's title fits its width */
+  char *dmp = strlen(m) > 90 ? strstr(m, ", damped") : NULL;
+  if (dmp)
+    *dmp = '\0';
+  fprintf(vars, "%s_method = \"%s%s%s, h = %g, %d ppc\"\n", key, m, dmp ? ",\\n" : "", dmp ? dmp + 2 : "",
+          c ? c->h : 0.0, c ? c->ppc : 0);
 }
 
 /* The largest lambda in the snapshots ds of case c (1 if none is read): the top of the

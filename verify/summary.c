@@ -179,6 +179,7 @@ int ver_summary_read(const char *dir, ver_summary_doc *d)
   jstr(o, "fields", d->fields, sizeof d->fields);
   jstr(o, "damping_from", d->damping_from, sizeof d->damping_from);
   jstr(o, "path", d->path, sizeof d->path);
+  jstr(o, "reversed_shear", d->reversed_shear, sizeof d->reversed_shear);
   jstr(o, "motion", d->motion, sizeof d->motion);
   d->path_reach = jnum(o, "path_reach");
   jstr(o, "error", d->error, sizeof d->error);

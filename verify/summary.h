@@ -72,6 +72,7 @@ typedef struct {
   char fields[16];               /* "one" or "two" velocity fields                   */
   char damping_from[16];         /* "start" or "cut" ("" if the file predates it)   */
   char path[16];                 /* decohesion.path: "free" or "line" ("" if absent) */
+  char reversed_shear[16];       /* decohesion.reversed_shear: "even" or "closing" ("" if absent) */
   char motion[16];               /* grid.motion: "fixed" or "stretch" ("" if absent) */
   double path_reach;             /* decohesion.path_reach (NaN if absent)           */
   char error[512];               /* "" if none                                       */
