@@ -95,11 +95,16 @@ static void print_result(const ver_scene *vs, const char *id, const ver_summary 
     fprintf(stderr, "delam run: warning: energy residual %.3g over the whole run (to delta %.4g) is above the tolerance "
             "%g (W_ext + E0 - KE - SE - W_coh - booked losses, over max W_ext; unbooked %.3g; energy.csv)\n",
             u.energy_residual, u.delta_end, VER_ENERGY_TOL, u.energy_unbooked);
-  else if (vs->sc.vib_mode == 0 && !(u.energy_unbooked <= VER_ENERGY_TOL))
+  else if (vs->sc.vib_mode == 0 && !(u.energy_unbooked <= VER_ENERGY_TOL)) {
+    char damp[96] = ""; /* the damper is work the scene asked to remove: say how much */
+    if (u.L_damp_final > 0.0)
+      snprintf(damp, sizeof damp, "; of it the damper the scene asks for (time.damping) took %.3g (L_damp)",
+               u.L_damp_final);
     fprintf(stderr, "delam run: warning: energy not accounted for %.3g over the whole run (to delta %.4g) is above the "
             "tolerance %g (W_ext + E0 - KE - SE - W_coh over max W_ext, nothing booked; booked residual %.3g; "
-            "energy.csv L_bc, L_flip, L_scheme, W_head, L_contact, L_debris, L_damp)\n", u.energy_unbooked, u.delta_end, VER_ENERGY_TOL,
-            u.energy_residual);
+            "energy.csv L_bc, L_flip, L_scheme, W_head, L_contact, L_debris, L_damp)%s\n", u.energy_unbooked, u.delta_end,
+            VER_ENERGY_TOL, u.energy_residual, damp);
+  }
   if (vs->sc.vib_mode > 0) /* free vibration: what it kept and its period */
     printf("%s: energy kept %.4f (booked: L_bc %.3g, L_flip %.3g, L_scheme %.3g of %.4g), period %.6g against "
            "%.6g (error %+.3f %%), energy residual %.2e\n",
