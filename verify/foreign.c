@@ -169,7 +169,7 @@ void ver_foreign_measure(ver_case *c, const ver_table *ld, const ver_table *en, 
       c->delta_sep = sep.delta_sep;
     ver_sep_free(&sep);
   }
-  c->P_after = ver_load_after(d, P, n, c->delta_sep, c->peak_P);
+  c->P_after = ver_load_after(d, P, n, c->delta_sep, c->peak_P, &c->P_after_t, &c->P_after_c);
   if (en) { /* W_ext, KE, SE, W_coh, D */
     const size_t m = (size_t)en->n;
     c->W_ext_final = en->col[0][m - 1];

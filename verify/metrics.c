@@ -147,17 +147,32 @@ double ver_diffuse_share(const double *lam, size_t n, double thr)
   return all > 0.0 ? out / all : 0.0;
 }
 
-double ver_load_after(const double *delta, const double *P, size_t n, double delta_sep, double peak)
+double ver_load_after(const double *delta, const double *P, size_t n, double delta_sep, double peak, double *tens,
+                      double *comp)
 {
+  if (tens)
+    *tens = NAN;
+  if (comp)
+    *comp = NAN;
   if (!isfinite(delta_sep) || !isfinite(peak) || !(peak > 0.0) || n == 0)
     return NAN;
   const double from = delta_sep + VER_LOAD_SETTLE;
-  double m = -1.0;
+  double m = -1.0, t = 0.0, c = 0.0;
   for (size_t i = 0; i < n; i++)
-    if (delta[i] >= from && isfinite(P[i]))
+    if (delta[i] >= from && isfinite(P[i])) {
       m = fmax(m, fabs(P[i]));
-  if (m < 0.0)
+      t = fmax(t, P[i]);
+      c = fmax(c, -P[i]);
+    }
+  if (m < 0.0) {
     m = fabs(P[n - 1]);
+    t = fmax(P[n - 1], 0.0);
+    c = fmax(-P[n - 1], 0.0);
+  }
+  if (tens)
+    *tens = t / peak;
+  if (comp)
+    *comp = c / peak;
   return m / peak;
 }
 

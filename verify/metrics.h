@@ -43,8 +43,12 @@ double ver_softening_slope(const double *delta, const double *P, size_t n, doubl
 /* The load the grip still carries once the bar has separated at delta_sep: the largest
  * |P| over the rows with delta >= delta_sep + VER_LOAD_SETTLE, over peak; if no row
  * reaches it, the last row's |P| (what the run ended with).  NaN if delta_sep or peak is
- * not finite and positive, or n is 0. */
-double ver_load_after(const double *delta, const double *P, size_t n, double delta_sep, double peak);
+ * not finite and positive, or n is 0.  tens and comp (either may be NULL) get the
+ * largest tension (P > 0, a band still carrying) and the largest compression (-P, the
+ * parts pushed together: a contact) over the same rows, each over peak, 0 if the load
+ * never has that sign there, NaN where the return is. */
+double ver_load_after(const double *delta, const double *P, size_t n, double delta_sep, double peak, double *tens,
+                      double *comp);
 
 /* Width in delta of the load drop: from the first row after the (first) largest P
  * below 0.9 of it to the first row below 0.1 of it.  NaN if the load never falls

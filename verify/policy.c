@@ -300,8 +300,10 @@ static void check_band(ver_case *c, const case_class *q)
     const double drop = 1.0 - sc->sep_threshold;
     if (one || drop > 0.0)
       known(k, 0.0, fmax(one ? 0.6 : 0.0, k->tol + drop));
-    snprintf(k->note, sizeof k->note, "largest |P| / peak from delta_sep + %g to the end%s%s",
-             VER_LOAD_SETTLE, one ? "; one field: known-limit to 0.6" : "",
+    /* the sign says which: tension is a band still carrying, compression the separated
+     * parts pushed together (fig8: the sliding part meets the other, docs/bands.md 5k) */
+    snprintf(k->note, sizeof k->note, "largest |P| / peak from delta_sep + %g to the end (tension %.2g, compression %.2g)%s%s",
+             VER_LOAD_SETTLE, c->P_after_t, c->P_after_c, one ? "; one field: known-limit to 0.6" : "",
              drop > 0.0 ? "; traction left at separation dropped: known-limit to tol + 1 - threshold" : "");
   }
 }

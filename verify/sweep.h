@@ -59,6 +59,7 @@ typedef struct {
   double k_soft, curve_l2, band_width, band_extent, angle;
   double D_diffuse;  /* dissipation outside the band, over U0 x area (ver_diffuse_share) */
   double P_after;    /* largest |P| past separation, over the peak (ver_load_after)       */
+  double P_after_t, P_after_c; /* its largest tension and compression, over the peak   */
   size_t band_count;
   ver_check chk[VER_NCHECK];
   int nchk;

@@ -269,7 +269,7 @@ void ver_case_read(const ver_verify_opts *o, ver_case *c)
   ver_case_dir(o, c, dir, sizeof dir);
   c->peak_P = c->delta_peak = c->delta_sep = c->k_elastic = NAN;
   c->D_final = c->W_ext_final = c->energy_residual = c->energy_unbooked = c->delta_end = NAN;
-  c->k_soft = c->curve_l2 = c->band_width = c->band_extent = c->angle = c->D_diffuse = c->P_after = NAN;
+  c->k_soft = c->curve_l2 = c->band_width = c->band_extent = c->angle = c->D_diffuse = c->P_after = c->P_after_t = c->P_after_c = NAN;
   ver_summary_doc sd;
   if (ver_summary_read(dir, &sd) == 0) {
     const ver_summary *u = &sd.u;
@@ -320,7 +320,7 @@ void ver_case_read(const ver_verify_opts *o, ver_case *c)
     c->curve_l2 = ver_curve_err_bar(&c->ana, lc[0], lc[1], (size_t)nl, ver_curve_end(&c->ana, c->vs.sc.sep_threshold), NULL);
   }
   if (nl > 0)
-    c->P_after = ver_load_after(lc[0], lc[1], (size_t)nl, c->delta_sep, c->peak_P);
+    c->P_after = ver_load_after(lc[0], lc[1], (size_t)nl, c->delta_sep, c->peak_P, &c->P_after_t, &c->P_after_c);
   for (int k = 0; k < 2; k++)
     free(lc[k]);
   static const char *const fcols[] = {"x0", "y0", "lambda"};

@@ -453,11 +453,29 @@ static void test_ver_metrics_load_after(void **state)
   /* delta 1.5 is row 1500, a whole number of periods past 1: cos = 1 there */
   /* separation at 1.5 - VER_LOAD_SETTLE: the window opens at 1.5 */
   const double s = VER_LOAD_SETTLE;
-  assert_rel(ver_load_after(d, P, N, 1.5 - s, P0), 0.4 * exp(-0.5 / tau), 1e-9, "first row past 1.5");
-  assert_true(fabs(ver_load_after(d, P, N, 0.0 - s, P0) - 1.0) < 1e-12);
-  assert_rel(ver_load_after(d, P, N, 2.5 - s, P0), 0.4 * exp(-1.0 / tau), 1e-9, "the last row");
-  assert_true(isnan(ver_load_after(d, P, N, 1.5 - s, 0.0)));
-  assert_true(isnan(ver_load_after(d, P, N, NAN, P0)));
+  assert_rel(ver_load_after(d, P, N, 1.5 - s, P0, NULL, NULL), 0.4 * exp(-0.5 / tau), 1e-9, "first row past 1.5");
+  assert_true(fabs(ver_load_after(d, P, N, 0.0 - s, P0, NULL, NULL) - 1.0) < 1e-12);
+  assert_rel(ver_load_after(d, P, N, 2.5 - s, P0, NULL, NULL), 0.4 * exp(-1.0 / tau), 1e-9, "the last row");
+  assert_true(isnan(ver_load_after(d, P, N, 1.5 - s, 0.0, NULL, NULL)));
+  assert_true(isnan(ver_load_after(d, P, N, NAN, P0, NULL, NULL)));
+  /* the sign: past delta 1.001 a tension of 0.01 P0 up to delta 1.5, then a push of
+   * 0.03 P0 (two separated parts meeting): |P| 0.03, tension 0.01, compression 0.03; the
+   * ringing above, from 1.5, whole periods of cos from row 1500: its largest tension is
+   * the first row's, its largest compression half a period later, 0.4 exp(-(0.5 +
+   * 1 / 80) / tau) */
+  double Q[N], t, c;
+  for (int i = 0; i < N; i++)
+    Q[i] = d[i] <= 1.0 ? P0 * d[i] : (d[i] <= 1.5 ? 0.01 : -0.03) * P0;
+  assert_rel(ver_load_after(d, Q, N, 1.001 - s, P0, &t, &c), 0.03, 1e-12, "|P| of the push");
+  assert_rel(t, 0.01, 1e-12, "tension");
+  assert_rel(c, 0.03, 1e-12, "compression");
+  ver_load_after(d, Q, N, 1.6 - s, P0, &t, &c);
+  assert_true(t == 0.0 && fabs(c - 0.03) < 1e-12);
+  ver_load_after(d, P, N, 1.5 - s, P0, &t, &c);
+  assert_rel(t, 0.4 * exp(-0.5 / tau), 1e-9, "ringing's tension");
+  assert_true(c > 0.0 && c <= 0.4 * exp(-0.5 / tau));
+  ver_load_after(d, P, N, NAN, P0, &t, &c);
+  assert_true(isnan(t) && isnan(c));
 }
 
 int main(void)
