@@ -21,6 +21,31 @@
  * (grip load -13 % of the peak at delta 0.95); docs/bands.md sec. 5e.  Held components
  * (grip and fixed end) are not damped: their reactions stay the constraint's.
  *
+ * About what (time.damping_about): DRIFT (above; the default) or PARTS.  To a slow
+ * change of velocity a damper about a lagging low-pass is an added mass: vbar trails v
+ * by about tau dv/dt, so the force is about -c tau m dv/dt (c tau = 12.6 for the files'
+ * critical c and tau = 2 L / c_wave).  After the cut that resists the separated parts'
+ * own slow motions: fig8's left part sliding back into the other needs about 14 times the
+ * contact force (docs/bands.md sec. 5k).  With PARTS, once the band has cut the bar the
+ * node damping stops and each bar particle's velocity v relaxes instead toward the rigid
+ * motion of its part, V + w x (x - X) (X, V the part's centre of mass and its velocity,
+ * w its angular velocity: angular momentum about X over the moment of inertia), by
+ *     v <- v - c dt (v - V - w x (x - X))
+ * once a step, after the gather (mpm_damping_parts).  A free part's momentum and
+ * angular momentum are unchanged (the deviation has neither), its rigid motion is not
+ * damped at any speed, and only the deformation's velocity decays, as exp(-c t).  A
+ * part held along its end takes the rigid motion its end allows (below).  The parts are
+ * the ones the cut made (mpm_sim_cut: a separated particle in every particle row): in
+ * each row, the particles left of the midpoint between the row's first and last
+ * separated particle at the cut (reference x0) belong to part 0, those right of it to
+ * part 1, the band's own particles included, each with the side it lies on; a particle
+ * on the midpoint (a row's lone separated particle), the head and debris are left
+ * alone.  Leaving the band's particles out (only those beyond the row's first and last
+ * separated particle damped) let them ring on: a45 h 1, 9 ppc D 1.102 against 1.067
+ * (docs/bands.md sec. 5l).  The kinetic
+ * energy it takes is booked in L_damp.  Before the cut (damping_from = start) the
+ * node damping about the drift acts as with DRIFT.  Serial, in particle order.
+ *
  * When (time.damping_from): START (the default and the scene files' choice), from the
  * first step; CUT, from the step the band has cut the bar (mpm_sim_cut) on, so that
  * everything up to the cut, the peak and the band's own opening included, is the
@@ -52,6 +77,11 @@ struct mpm_damping {
   double *del;    /* this step's delta per node, first field (x, y pairs)            */
   double *del2;   /* ... second field                                                */
   uint8_t *held;  /* bit 0: x held, bit 1: y held                                     */
+  double *rowlo, *rowhi; /* PARTS: per particle row, the reference x0 of its first and
+                             last separated particle at the cut (set once: rows_set);
+                             their midpoint divides the row between the parts         */
+  int rows_set;
+  int8_t *part;          /* PARTS: this step's part per particle (-1: left alone)       */
   size_t nn;
   int on;         /* 1 if this step's delta may be nonzero (time.damping_from)      */
 };
@@ -69,7 +99,11 @@ mpm_damping *mpm_damping_alloc(const mpm_sim *s)
   d->del = calloc(2 * nn, sizeof(double));
   d->del2 = calloc(2 * nn, sizeof(double));
   d->held = calloc(nn, 1);
-  if (!d->vbar || !d->vbar2 || !d->del || !d->del2 || !d->held) {
+  d->rowlo = malloc((size_t)(s->nrow > 0 ? s->nrow : 1) * sizeof(double));
+  d->rowhi = malloc((size_t)(s->nrow > 0 ? s->nrow : 1) * sizeof(double));
+  d->part = s->sc.damping_about == MPM_DAMP_PARTS ? malloc(s->p->n ? s->p->n : 1) : NULL;
+  if (!d->vbar || !d->vbar2 || !d->del || !d->del2 || !d->held || !d->rowlo || !d->rowhi ||
+      (s->sc.damping_about == MPM_DAMP_PARTS && !d->part)) {
     mpm_damping_free(d);
     return NULL;
   }
@@ -102,6 +136,9 @@ void mpm_damping_free(mpm_damping *d)
   free(d->del);
   free(d->del2);
   free(d->held);
+  free(d->rowlo);
+  free(d->rowhi);
+  free(d->part);
   free(d);
 }
 
@@ -149,7 +186,8 @@ void mpm_damping_apply(mpm_sim *s, double bfac)
   const mpm_grid *g = s->g;
   const mpm_fields *f = g->fld;
   const double mmin = MPM_MASS_EPS * s->mat[MPM_MAT_BAR].mp;
-  const double alpha = s->sc.damping_from == MPM_DAMP_CUT && !s->cut ? 0.0 : d->alpha;
+  const int off = (s->sc.damping_from == MPM_DAMP_CUT && !s->cut) || (s->sc.damping_about == MPM_DAMP_PARTS && s->cut);
+  const double alpha = off ? 0.0 : d->alpha;
   d->on = alpha != 0.0;
   damp_sums t = {0.0, 0.0, 0.0, 0.0};
   for (size_t k = 0; k < d->nn; k++) {
@@ -194,4 +232,102 @@ void mpm_damping_musl(mpm_sim *s)
       B += d->del2[2 * k] * f->nd2[k].qx + d->del2[2 * k + 1] * f->nd2[k].qy;
   }
   s->led.s_B += B;
+}
+
+/* PARTS: the part of particle k (0 or 1), or -1 if it is left alone (see the top). */
+static int part_of(const mpm_sim *s, const mpm_damping *d, size_t k, double idy)
+{
+  const mpm_particles *p = s->p;
+  const int mat = p->mat[k];
+  if (mat == MPM_MAT_HEAD || mat == MPM_MAT_DEBRIS)
+    return -1;
+  const int j = (int)(p->y0[k] * idy);
+  if (j < 0 || j >= s->nrow)
+    return -1;
+  const double mid = 0.5 * (d->rowlo[j] + d->rowhi[j]);
+  return p->x0[k] < mid ? 0 : p->x0[k] > mid ? 1 : -1;
+}
+
+void mpm_damping_parts(mpm_sim *s)
+{
+  mpm_damping *d = s->damp;
+  if (!d || s->sc.damping_about != MPM_DAMP_PARTS || !s->cut || d->alpha == 0.0)
+    return;
+  mpm_particles *p = s->p;
+  const double dy = s->sc.h / sqrt((double)s->sc.ppc);
+  if (!d->rows_set) { /* the parts the cut made: every row holds a separated particle */
+    for (int j = 0; j < s->nrow; j++) {
+      d->rowlo[j] = INFINITY;
+      d->rowhi[j] = -INFINITY;
+    }
+    for (size_t k = 0; k < p->n; k++) {
+      const int j = (int)(p->y0[k] / dy);
+      if (!p->sep[k] || p->mat[k] == MPM_MAT_HEAD || j < 0 || j >= s->nrow)
+        continue;
+      d->rowlo[j] = fmin(d->rowlo[j], p->x0[k]);
+      d->rowhi[j] = fmax(d->rowhi[j], p->x0[k]);
+    }
+    d->rows_set = 1;
+  }
+  /* each part's mass, first moments, momentum, angular momentum about the origin and
+   * polar moment; then its centre X, velocity V and angular velocity w */
+  double S[2][7] = {{0.0}};
+  const double idy = 1.0 / dy;
+  for (size_t k = 0; k < p->n; k++) {
+    const int q = part_of(s, d, k, idy);
+    d->part[k] = (int8_t)q;
+    if (q < 0)
+      continue;
+    const double m = p->m[k], x = p->x[k], y = p->y[k], vx = p->vx[k], vy = p->vy[k];
+    S[q][0] += m;
+    S[q][1] += m * x;
+    S[q][2] += m * y;
+    S[q][3] += m * vx;
+    S[q][4] += m * vy;
+    S[q][5] += m * (x * vy - y * vx);
+    S[q][6] += m * (x * x + y * y);
+  }
+  double X[2], Y[2], VX[2], VY[2], W[2];
+  for (int q = 0; q < 2; q++) {
+    const double M = S[q][0];
+    if (!(M > 0.0)) {
+      X[q] = Y[q] = VX[q] = VY[q] = W[q] = 0.0;
+      continue;
+    }
+    X[q] = S[q][1] / M;
+    Y[q] = S[q][2] / M;
+    VX[q] = S[q][3] / M;
+    VY[q] = S[q][4] / M;
+    const double Lc = S[q][5] - M * (X[q] * VY[q] - Y[q] * VX[q]);
+    const double Ic = S[q][6] - M * (X[q] * X[q] + Y[q] * Y[q]);
+    W[q] = Ic > 0.0 ? Lc / Ic : 0.0;
+  }
+  /* A part held in x along its end (the grip's column at x = 0 for part 0, the fixed
+   * end's at x = L for part 1) is not free there: its rigid motion is the end's x
+   * velocity without rotation, and the fixed end's part is held in y too (fixy).  Damping
+   * such a part about its own mean x velocity would leave the mean of its axial ring
+   * undamped (fixed-free first mode: (2 / pi)^2 of its energy): fig7 h 4, 1 ppc rang at
+   * 8 % of the peak 0.1 past separation, against 0.3 % with the drift. */
+  if (s->ngrip > 0) {
+    VX[0] = -s->vgrip;
+    W[0] = 0.0;
+  }
+  if (s->nfixx > 0) {
+    VX[1] = VY[1] = 0.0;
+    W[1] = 0.0;
+  }
+  const double a = d->alpha;
+  double dke = 0.0;
+  for (size_t k = 0; k < p->n; k++) {
+    const int q = d->part[k];
+    if (q < 0)
+      continue;
+    const double rx = p->x[k] - X[q], ry = p->y[k] - Y[q];
+    const double ux = p->vx[k], uy = p->vy[k];
+    const double nx = ux - a * (ux - (VX[q] - W[q] * ry)), ny = uy - a * (uy - (VY[q] + W[q] * rx));
+    dke += 0.5 * p->m[k] * ((ux * ux - nx * nx) + (uy * uy - ny * ny));
+    p->vx[k] = nx;
+    p->vy[k] = ny;
+  }
+  s->led.L_damp += dke;
 }

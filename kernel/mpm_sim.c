@@ -98,6 +98,7 @@ mpm_status mpm_scene_check(const mpm_scene *sc, char *err, size_t errlen)
     BAD("time.damping_beta needs time.scheme = musl (usl: fig8.ini's beta = h / c throws a "
         "particle off the grid after the cut at h 4, 1 ppc; usf, usavg: two strain passes)");
   if (sc->damping_from != MPM_DAMP_CUT && sc->damping_from != MPM_DAMP_START) BAD("time.damping_from must be cut or start");
+  if (sc->damping_about != MPM_DAMP_DRIFT && sc->damping_about != MPM_DAMP_PARTS) BAD("time.damping_about must be drift or parts");
   if (sc->damping > 0.0 && sc->node_mass == MPM_NODEMASS_LIMITED && sc->shape == MPM_SHAPE_LINEAR &&
       (sc->scheme == MPM_SCHEME_USL || sc->scheme == MPM_SCHEME_USAVG))
     BAD("time.damping needs grid.node_mass = lumped here (the mass limit's v^L is not the node's velocity)");

@@ -677,6 +677,8 @@ mpm_status mpm_sim_step(mpm_sim *s, char *err, size_t errlen)
   if (s->band)
     mpm_band_step(s->band);
   head_rigid(s);
+  if (s->damp)
+    mpm_damping_parts(s);
   ledger_step(s);
   s->ugrip += s->vgrip * s->sc.dt;
   s->P_peak = fmax(s->P_peak, s->P_grip);

@@ -64,6 +64,7 @@ typedef struct {
   char scheme[16];      /* "usl" or "musl" (summary.json)                                     */
   char shape[16], fields[16], le[16]; /* "linear"/"gimp", "one"/"two", "cell"/... (summary.json) */
   char damping_from[16];                /* "start" or "cut" (summary.json; "" if absent)        */
+  char damping_about[16];               /* "drift" or "parts" (summary.json; "" if absent)      */
   char path[16];                        /* decohesion.path, "free" or "line" ("" if absent)    */
   char reversed_shear[16];              /* decohesion.reversed_shear ("" if absent)            */
   double path_reach;                    /* decohesion.path_reach                               */

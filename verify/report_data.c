@@ -43,6 +43,7 @@ int ver_report_read_summary(rep_case *c)
   snprintf(c->shape, sizeof c->shape, "%s", d.shape);
   snprintf(c->fields, sizeof c->fields, "%s", d.fields);
   snprintf(c->damping_from, sizeof c->damping_from, "%s", d.damping_from);
+  snprintf(c->damping_about, sizeof c->damping_about, "%s", d.damping_about);
   snprintf(c->path, sizeof c->path, "%s", d.path);
   snprintf(c->reversed_shear, sizeof c->reversed_shear, "%s", d.reversed_shear);
   c->path_reach = d.path_reach;
@@ -105,8 +106,8 @@ void ver_report_method(const rep_case *c, char *buf, size_t len)
   if (c->damping_beta > 0.0)
     snprintf(beta, sizeof beta, ", beta %.3g", c->damping_beta);
   if (c->damping > 0.0 || c->damping_beta > 0.0)
-    snprintf(damp, sizeof damp, ", damped%s (c %.4g%s)", !strcmp(c->damping_from, "cut") ? " from the cut" : "",
-             c->damping, beta);
+    snprintf(damp, sizeof damp, ", damped%s%s (c %.4g%s)", !strcmp(c->damping_from, "cut") ? " from the cut" : "",
+             !strcmp(c->damping_about, "parts") ? " about the parts" : "", c->damping, beta);
   char path[64] = "";
   if (!strcmp(c->path, "line"))
     snprintf(path, sizeof path, ", on its line (reach %g h)", c->path_reach);

@@ -83,6 +83,7 @@ int ver_summary_write(const char *dir, const ver_scene *vs, const ver_summary *u
   cJSON_AddNumberToObject(o, "damping_beta", vs->sc.damping_beta);
   cJSON_AddNumberToObject(o, "speed", vs->sc.speed);
   cJSON_AddStringToObject(o, "damping_from", ver_scene_word(vs, "time", "damping_from"));
+  cJSON_AddStringToObject(o, "damping_about", ver_scene_word(vs, "time", "damping_about"));
   /* how the rate was given: "critical" (set from the bar, 2 pi sqrt(E / rho) / L) or "rate" */
   cJSON_AddStringToObject(o, "damping_rule", vs->damping_critical ? "critical" : "rate");
   cJSON_AddStringToObject(o, "path", ver_scene_word(vs, "decohesion", "path"));
@@ -178,6 +179,7 @@ int ver_summary_read(const char *dir, ver_summary_doc *d)
   jstr(o, "shape", d->shape, sizeof d->shape);
   jstr(o, "fields", d->fields, sizeof d->fields);
   jstr(o, "damping_from", d->damping_from, sizeof d->damping_from);
+  jstr(o, "damping_about", d->damping_about, sizeof d->damping_about);
   jstr(o, "path", d->path, sizeof d->path);
   jstr(o, "reversed_shear", d->reversed_shear, sizeof d->reversed_shear);
   jstr(o, "motion", d->motion, sizeof d->motion);

@@ -71,6 +71,7 @@ typedef struct {
   char shape[16];                /* "linear" or "gimp"                               */
   char fields[16];               /* "one" or "two" velocity fields                   */
   char damping_from[16];         /* "start" or "cut" ("" if the file predates it)   */
+  char damping_about[16];        /* "drift" or "parts" ("" if the file predates it) */
   char path[16];                 /* decohesion.path: "free" or "line" ("" if absent) */
   char reversed_shear[16];       /* decohesion.reversed_shear: "even" or "closing" ("" if absent) */
   char motion[16];               /* grid.motion: "fixed" or "stretch" ("" if absent) */

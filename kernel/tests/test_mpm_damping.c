@@ -19,7 +19,15 @@
  *  - a damped decohesion run (fig8's bar at h 4, uGIMP, two velocity fields, MUSL, a
  *    ten times faster grip) through the cut to delta 1 gives the same bits on 1 and 2
  *    threads, and up to the cut the bits of the same run undamped (time.damping_from =
- *    cut: nothing acts before the band has cut the bar).
+ *    cut: nothing acts before the band has cut the bar); damped about the parts
+ *    (time.damping_about = parts) the same, and its ledger closes to 1e-6 of W_ext;
+ *  - damping about the parts (mpm_damping_parts) on a bar held in x at both ends and cut
+ *    by a separated particle column: the grip's part keeps its y translation (free) and
+ *    the grip's x velocity, and a stretch of it, v_x = eps (x - 44) (44 the centre of
+ *    the rectangle of particle centres 4-84), keeps (1 - c dt) of itself; a rotation of
+ *    the fixed end's part (held, so not its rigid motion) keeps (1 - c dt); the
+ *    separated column is left alone; L_damp gains the kinetic energy lost, (1 - (1 -
+ *    c dt)^2) times the stretch's and the rotation's.
  */
 #include <math.h>
 #include <setjmp.h>
@@ -198,6 +206,89 @@ static void test_damping_threads(void **state)
   tu_assert_same_bits(a, b, "damped, two fields");
   mpm_sim_free(a);
   mpm_sim_free(b);
+  /* about the parts */
+  sc.damping_about = MPM_DAMP_PARTS;
+  if (mpm_sim_alloc(&sc, 1, &a, err, sizeof err) != MPM_OK || mpm_sim_alloc(&sc, 2, &b, err, sizeof err) != MPM_OK)
+    fail_msg("mpm_sim_alloc: %s", err);
+  mpm_energy e0, e;
+  mpm_sim_energy(a, &e0);
+  for (long k = 0; k < n; k++)
+    if (mpm_sim_step(a, err, sizeof err) != MPM_OK || mpm_sim_step(b, err, sizeof err) != MPM_OK)
+      fail_msg("parts, step %ld: %s", k, err);
+  mpm_sim_energy(a, &e);
+  const double gap = fabs(e.W_ext + e0.KE + e0.SE - e.KE - e.SE - e.W_coh - booked(&e)) / e.W_ext;
+  print_message("parts: cut %d, L_damp %.4g, ledger gap / W_ext %.2e\n", a->cut, e.L_damp, gap);
+  assert_true(a->cut && e.L_damp > 0.0);
+  assert_abs(gap, 0.0, 1e-6, "ledger, damped about the parts");
+  tu_assert_same_bits(a, b, "damped about the parts, two fields");
+  mpm_sim_free(a);
+  mpm_sim_free(b);
+}
+
+static void test_damping_parts(void **state)
+{
+  (void)state;
+  mpm_scene sc = bar_scene(8.0);
+  sc.vib_mode = 0;
+  sc.damping = 1.0;
+  sc.damping_from = MPM_DAMP_CUT;
+  sc.damping_about = MPM_DAMP_PARTS;
+  mpm_sim *s = NULL;
+  char err[256] = "";
+  if (mpm_sim_alloc(&sc, 1, &s, err, sizeof err) != MPM_OK)
+    fail_msg("mpm_sim_alloc: %s", err);
+  assert_true(s->ngrip > 0 && s->nfixx > 0); /* held in x at both ends */
+  mpm_particles *p = s->p;
+  const double a = sc.damping * sc.dt, eps = 1e-3, vy0 = -0.02, w1 = -0.001, px1 = 150.0, py1 = 30.0;
+  double *vx0 = malloc(p->n * sizeof(double)), *vy = malloc(p->n * sizeof(double)), ke = 0.0;
+  assert_non_null(vx0);
+  assert_non_null(vy);
+  size_t nsep = 0, n0 = 0, n1 = 0;
+  for (size_t k = 0; k < p->n; k++) {
+    vx0[k] = vy[k] = 0.0;
+    if (p->mat[k] == MPM_MAT_HEAD)
+      continue;
+    if (p->x0[k] == 92.0) {
+      p->sep[k] = 1;
+      nsep++;
+      vx0[k] = 0.02; /* a row's lone separated particle: left alone */
+    } else if (p->x0[k] < 92.0) { /* the grip's part: the grip's x velocity, free in y, a stretch */
+      vx0[k] = -s->vgrip + eps * (p->x0[k] - 44.0);
+      vy[k] = vy0;
+      ke += 0.5 * p->m[k] * pow(eps * (p->x0[k] - 44.0), 2);
+      n0++;
+    } else { /* the fixed end's part, held: a rotation is not its rigid motion */
+      vx0[k] = -w1 * (p->y[k] - py1);
+      vy[k] = w1 * (p->x[k] - px1);
+      ke += 0.5 * p->m[k] * (vx0[k] * vx0[k] + vy[k] * vy[k]);
+      n1++;
+    }
+    p->vx[k] = vx0[k];
+    p->vy[k] = vy[k];
+  }
+  assert_int_equal(nsep, 4); /* h 8: four particle rows */
+  assert_true(n0 == 44 && n1 == 48);
+  s->cut = 1; /* the column has cut the bar */
+  mpm_damping_parts(s);
+  double e1 = 0.0, e2 = 0.0;
+  for (size_t k = 0; k < p->n; k++) {
+    if (p->mat[k] == MPM_MAT_HEAD || p->sep[k]) {
+      e1 = fmax(e1, fabs(p->vx[k] - vx0[k]) + fabs(p->vy[k] - vy[k]));
+      continue;
+    }
+    if (p->x0[k] < 92.0)
+      e2 = fmax(e2, fabs(p->vx[k] - (-s->vgrip + (1.0 - a) * eps * (p->x0[k] - 44.0))) + fabs(p->vy[k] - vy0));
+    else
+      e2 = fmax(e2, fabs(p->vx[k] - (1.0 - a) * vx0[k]) + fabs(p->vy[k] - (1.0 - a) * vy[k]));
+  }
+  print_message("parts: untouched %.2e, kept and scaled %.2e; L_damp %.6e against %.6e\n", e1, e2, s->led.L_damp,
+                ke * (1.0 - (1.0 - a) * (1.0 - a)));
+  assert_abs(e1, 0.0, 0.0, "separated and head particles");
+  assert_abs(e2, 0.0, 1e-14, "the grip's part free in y, its stretch and the held part's rotation scaled by 1 - c dt");
+  assert_rel(s->led.L_damp, ke * (1.0 - (1.0 - a) * (1.0 - a)), 1e-9, "L_damp: the kinetic energy lost");
+  free(vx0);
+  free(vy);
+  mpm_sim_free(s);
 }
 
 int main(void)
@@ -207,6 +298,7 @@ int main(void)
     cmocka_unit_test(test_damping_beta_decay),
     cmocka_unit_test(test_damping_quasistatic),
     cmocka_unit_test(test_damping_threads),
+    cmocka_unit_test(test_damping_parts),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
