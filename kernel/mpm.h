@@ -91,8 +91,8 @@ enum { MPM_IMP_PARTICLE = 0, MPM_IMP_CELL = 1 };
  * the band has cut the bar (CUT). */
 enum { MPM_DAMP_START = 0, MPM_DAMP_CUT = 1 };
 /* time.damping_about (mpm_damping.c): after the cut the damping takes each velocity about
- * its node's slow drift (DRIFT, a low-pass) or about the rigid motion of the part of the
- * bar its particle belongs to (PARTS: the parts the cut made, each a free body). */
+ * its node's slow drift (DRIFT, a low-pass) or about the motion of the end that holds the
+ * part of the bar its particle belongs to (PARTS: the parts the cut made). */
 enum { MPM_DAMP_DRIFT = 0, MPM_DAMP_PARTS = 1 };
 /* decohesion.path: where the bar may soften.  FREE (the paper): every particle.  LINE:
  * only the particles whose reference centre lies within h (|sin a| + |cos a|) / 2 +
@@ -159,7 +159,7 @@ typedef struct {
   int damping_from;      /* MPM_DAMP_START (from the first step) or MPM_DAMP_CUT (from the
                             band's cut on)                                             */
   int damping_about;     /* MPM_DAMP_DRIFT (the node's low-pass) or MPM_DAMP_PARTS (after
-                            the cut, each part's rigid motion)                        */
+                            the cut, each part's held end's motion)                        */
   double end_delta;      /* the run never goes past this end displacement              */
 } mpm_scene;
 
@@ -487,7 +487,7 @@ void mpm_damping_free(mpm_damping *d);
 void mpm_damping_apply(mpm_sim *s, double bfac);
 void mpm_damping_musl(mpm_sim *s);
 /* time.damping_about = parts, once the band has cut the bar: each bar particle's velocity
- * relaxes toward the rigid motion of its part (mpm_damping.c); books L_damp. */
+ * relaxes toward the motion of its part's held end (mpm_damping.c); books L_damp. */
 void mpm_damping_parts(mpm_sim *s);
 
 enum { MPM_T_SORT = 0, MPM_T_P2G, MPM_T_GRID, MPM_T_G2P, MPM_T_CONST };

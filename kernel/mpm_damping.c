@@ -27,24 +27,27 @@
  * critical c and tau = 2 L / c_wave).  After the cut that resists the separated parts'
  * own slow motions: fig8's left part sliding back into the other needs about 14 times the
  * contact force (docs/bands.md sec. 5k).  With PARTS, once the band has cut the bar the
- * node damping stops and each bar particle's velocity v relaxes instead toward the rigid
- * motion of its part, V + w x (x - X) (X, V the part's centre of mass and its velocity,
- * w its angular velocity: angular momentum about X over the moment of inertia), by
- *     v <- v - c dt (v - V - w x (x - X))
- * once a step, after the gather (mpm_damping_parts).  A free part's momentum and
- * angular momentum are unchanged (the deviation has neither), its rigid motion is not
- * damped at any speed, and only the deformation's velocity decays, as exp(-c t).  A
- * part held along its end takes the rigid motion its end allows (below).  The parts are
- * the ones the cut made (mpm_sim_cut: a separated particle in every particle row): in
- * each row, the particles left of the midpoint between the row's first and last
- * separated particle at the cut (reference x0) belong to part 0, those right of it to
- * part 1, the band's own particles included, each with the side it lies on; a particle
- * on the midpoint (a row's lone separated particle), the head and debris are left
- * alone.  Leaving the band's particles out (only those beyond the row's first and last
- * separated particle damped) let them ring on: a45 h 1, 9 ppc D 1.102 against 1.067
- * (docs/bands.md sec. 5l).  The kinetic
- * energy it takes is booked in L_damp.  Before the cut (damping_from = start) the
- * node damping about the drift acts as with DRIFT.  Serial, in particle order.
+ * node damping stops and each bar particle's velocity v relaxes instead toward the
+ * motion of the end its part is held by, by
+ *     v <- v - c dt (v - V_end)
+ * once a step, after the gather (mpm_damping_parts): V_end = (-v_grip, 0) for the grip's
+ * part, 0 for the fixed end's.  After the cut each part is a body held along one end, and
+ * the quasi-static answer to the scene's question is that body moving with its end; any
+ * other velocity, the part's deformation and its sliding along the band alike, is the
+ * release's and decays as exp(-c t).  The grip holds x only, but nothing quasi-static
+ * drives a separated part in y: leaving the grip's part free in y (its mean vy kept) let
+ * fig8's left part slide back into the other after the release (push 2.15 % of the peak
+ * at h 8, 1 ppc; 0.03 % with it damped; docs/bands.md sec. 5l).  The parts are the ones
+ * the cut made (mpm_sim_cut: a separated particle in every particle row): in each row,
+ * the particles left of the midpoint between the row's first and last separated particle
+ * at the cut (reference x0) belong to the grip's part, those right of it to the fixed
+ * end's, the band's own particles included, each with the side it lies on; a particle
+ * on the midpoint (a row's lone separated particle), the head and debris are left alone.
+ * Leaving the band's particles out (only those beyond the row's first and last separated
+ * particle damped) let them ring on: a45 h 1, 9 ppc D 1.102 against 1.067 (docs/bands.md
+ * sec. 5l).  The kinetic energy it takes is booked in L_damp.  Before the cut
+ * (damping_from = start) the node damping about the drift acts as with DRIFT.  Serial, in
+ * particle order.
  *
  * When (time.damping_from): START (the default and the scene files' choice), from the
  * first step; CUT, from the step the band has cut the bar (mpm_sim_cut) on, so that
@@ -62,6 +65,7 @@
  * mpm_fields_musl), with d holding delta: mpm_damping_musl gives back delta . q.
  * Serial in node order: the same sums whatever the threads.
  */
+#include <assert.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -81,7 +85,6 @@ struct mpm_damping {
                              last separated particle at the cut (set once: rows_set);
                              their midpoint divides the row between the parts         */
   int rows_set;
-  int8_t *part;          /* PARTS: this step's part per particle (-1: left alone)       */
   size_t nn;
   int on;         /* 1 if this step's delta may be nonzero (time.damping_from)      */
 };
@@ -101,9 +104,7 @@ mpm_damping *mpm_damping_alloc(const mpm_sim *s)
   d->held = calloc(nn, 1);
   d->rowlo = malloc((size_t)(s->nrow > 0 ? s->nrow : 1) * sizeof(double));
   d->rowhi = malloc((size_t)(s->nrow > 0 ? s->nrow : 1) * sizeof(double));
-  d->part = s->sc.damping_about == MPM_DAMP_PARTS ? malloc(s->p->n ? s->p->n : 1) : NULL;
-  if (!d->vbar || !d->vbar2 || !d->del || !d->del2 || !d->held || !d->rowlo || !d->rowhi ||
-      (s->sc.damping_about == MPM_DAMP_PARTS && !d->part)) {
+  if (!d->vbar || !d->vbar2 || !d->del || !d->del2 || !d->held || !d->rowlo || !d->rowhi) {
     mpm_damping_free(d);
     return NULL;
   }
@@ -138,7 +139,6 @@ void mpm_damping_free(mpm_damping *d)
   free(d->held);
   free(d->rowlo);
   free(d->rowhi);
-  free(d->part);
   free(d);
 }
 
@@ -253,6 +253,7 @@ void mpm_damping_parts(mpm_sim *s)
   mpm_damping *d = s->damp;
   if (!d || s->sc.damping_about != MPM_DAMP_PARTS || !s->cut || d->alpha == 0.0)
     return;
+  assert(s->ngrip > 0 && s->nfixx > 0); /* every scene holds both ends (mpm_sim_alloc) */
   mpm_particles *p = s->p;
   const double dy = s->sc.h / sqrt((double)s->sc.ppc);
   if (!d->rows_set) { /* the parts the cut made: every row holds a separated particle */
@@ -269,62 +270,14 @@ void mpm_damping_parts(mpm_sim *s)
     }
     d->rows_set = 1;
   }
-  /* each part's mass, first moments, momentum, angular momentum about the origin and
-   * polar moment; then its centre X, velocity V and angular velocity w */
-  double S[2][7] = {{0.0}};
-  const double idy = 1.0 / dy;
-  for (size_t k = 0; k < p->n; k++) {
-    const int q = part_of(s, d, k, idy);
-    d->part[k] = (int8_t)q;
-    if (q < 0)
-      continue;
-    const double m = p->m[k], x = p->x[k], y = p->y[k], vx = p->vx[k], vy = p->vy[k];
-    S[q][0] += m;
-    S[q][1] += m * x;
-    S[q][2] += m * y;
-    S[q][3] += m * vx;
-    S[q][4] += m * vy;
-    S[q][5] += m * (x * vy - y * vx);
-    S[q][6] += m * (x * x + y * y);
-  }
-  double X[2], Y[2], VX[2], VY[2], W[2];
-  for (int q = 0; q < 2; q++) {
-    const double M = S[q][0];
-    if (!(M > 0.0)) {
-      X[q] = Y[q] = VX[q] = VY[q] = W[q] = 0.0;
-      continue;
-    }
-    X[q] = S[q][1] / M;
-    Y[q] = S[q][2] / M;
-    VX[q] = S[q][3] / M;
-    VY[q] = S[q][4] / M;
-    const double Lc = S[q][5] - M * (X[q] * VY[q] - Y[q] * VX[q]);
-    const double Ic = S[q][6] - M * (X[q] * X[q] + Y[q] * Y[q]);
-    W[q] = Ic > 0.0 ? Lc / Ic : 0.0;
-  }
-  /* A part held in x along its end (the grip's column at x = 0 for part 0, the fixed
-   * end's at x = L for part 1) is not free there: its rigid motion is the end's x
-   * velocity without rotation, and the fixed end's part is held in y too (fixy).  Damping
-   * such a part about its own mean x velocity would leave the mean of its axial ring
-   * undamped (fixed-free first mode: (2 / pi)^2 of its energy): fig7 h 4, 1 ppc rang at
-   * 8 % of the peak 0.1 past separation, against 0.3 % with the drift. */
-  if (s->ngrip > 0) {
-    VX[0] = -s->vgrip;
-    W[0] = 0.0;
-  }
-  if (s->nfixx > 0) {
-    VX[1] = VY[1] = 0.0;
-    W[1] = 0.0;
-  }
-  const double a = d->alpha;
+  const double idy = 1.0 / dy, a = d->alpha, vend[2] = {-s->vgrip, 0.0};
   double dke = 0.0;
   for (size_t k = 0; k < p->n; k++) {
-    const int q = d->part[k];
+    const int q = part_of(s, d, k, idy);
     if (q < 0)
       continue;
-    const double rx = p->x[k] - X[q], ry = p->y[k] - Y[q];
     const double ux = p->vx[k], uy = p->vy[k];
-    const double nx = ux - a * (ux - (VX[q] - W[q] * ry)), ny = uy - a * (uy - (VY[q] + W[q] * rx));
+    const double nx = ux - a * (ux - vend[q]), ny = uy - a * uy;
     dke += 0.5 * p->m[k] * ((ux * ux - nx * nx) + (uy * uy - ny * ny));
     p->vx[k] = nx;
     p->vy[k] = ny;

@@ -57,7 +57,7 @@ const keydef ver_scene_keys[] = {
   {"time", "dt", K_DBL, OFF(dt), 1, 0, 0, LO_OPEN, 0, "> 0 and below the CFL bound h / (c sqrt 2)"},
   {"time", "damping", K_DBL, OFF(damping), 0, 0, 0, LO_CLOSED, 0, ">= 0 and below 1 / dt: a rate, the damping of each node's velocity about its slow drift (0: none, the paper), or critical: 2 pi sqrt(E / rho) / L, twice the bar's first axial frequency"},
   {"time", "damping_from", K_DAMPFROM, OFF(damping_from), 0, 0, 0, 0, MPM_DAMP_START, "start (from the first step) or cut (once the band has cut the bar)"},
-  {"time", "damping_about", K_DAMPABOUT, OFF(damping_about), 0, 0, 0, 0, MPM_DAMP_DRIFT, "drift (each node's slow drift, a low-pass) or parts (after the cut, each part's rigid motion)"},
+  {"time", "damping_about", K_DAMPABOUT, OFF(damping_about), 0, 0, 0, 0, MPM_DAMP_DRIFT, "drift (each node's slow drift, a low-pass) or parts (after the cut, the motion of the end holding each part)"},
   {"time", "damping_beta", K_DBL, OFF(damping_beta), 0, 0, 0, LO_CLOSED, 0, ">= 0, a time: a viscous stress beta C : grad v on the particles not separated, from damping_from on (0: none), or cell: h / sqrt(E / rho), critical for the grid's fastest axial mode; needs time.scheme = musl"},
   {"time", "damping_tau", K_DBL, OFF(damping_tau), 0, 0, 0, LO_CLOSED, 0, ">= 0: the damping's low-pass time (0: 2 L / c)"},
   {"time", "scheme", K_SCHEME, OFF(scheme), 0, 0, 0, 0, MPM_SCHEME_USL, "usl (the paper), musl, usf or usavg"},
