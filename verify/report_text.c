@@ -153,6 +153,10 @@ static void pic_vars(report *R)
     snapshot_stats(c, -1, VER_BAND_LAMBDA, &band, &uy, &ml);
     num(R, key, "band_final", band);
     num(R, key, "uy_final", uy);
+    snprintf(key, sizeof key, "paper_%s", sc[i]); /* the paper's method's left quarter, beside */
+    snapshot_stats(pc ? pc : c, -1, VER_BAND_LAMBDA, &band, &uy, &ml);
+    num(R, key, "uy_final", uy);
+    snprintf(key, sizeof key, "pic_%s", sc[i]);
     if (i == 1) {
       snapshot_stats(c, 0.28, 0.01, &band, &uy, &ml);
       num(R, key, "band028", band);
