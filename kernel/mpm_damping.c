@@ -81,9 +81,10 @@ struct mpm_damping {
   double *del;    /* this step's delta per node, first field (x, y pairs)            */
   double *del2;   /* ... second field                                                */
   uint8_t *held;  /* bit 0: x held, bit 1: y held                                     */
-  double *rowlo, *rowhi; /* PARTS: per particle row, the reference x0 of its first and
-                             last separated particle at the cut (set once: rows_set);
-                             their midpoint divides the row between the parts         */
+  double *rowmid, *rowhi; /* PARTS: per particle row, the midpoint between the reference
+                              x0 of its first and last separated particle at the cut,
+                              which divides the row between the parts (set once:
+                              rows_set; rowhi is the last's x0 while it is built)     */
   int rows_set;
   size_t nn;
   int on;         /* 1 if this step's delta may be nonzero (time.damping_from)      */
@@ -102,9 +103,9 @@ mpm_damping *mpm_damping_alloc(const mpm_sim *s)
   d->del = calloc(2 * nn, sizeof(double));
   d->del2 = calloc(2 * nn, sizeof(double));
   d->held = calloc(nn, 1);
-  d->rowlo = malloc((size_t)(s->nrow > 0 ? s->nrow : 1) * sizeof(double));
+  d->rowmid = malloc((size_t)(s->nrow > 0 ? s->nrow : 1) * sizeof(double));
   d->rowhi = malloc((size_t)(s->nrow > 0 ? s->nrow : 1) * sizeof(double));
-  if (!d->vbar || !d->vbar2 || !d->del || !d->del2 || !d->held || !d->rowlo || !d->rowhi) {
+  if (!d->vbar || !d->vbar2 || !d->del || !d->del2 || !d->held || !d->rowmid || !d->rowhi) {
     mpm_damping_free(d);
     return NULL;
   }
@@ -137,7 +138,7 @@ void mpm_damping_free(mpm_damping *d)
   free(d->del);
   free(d->del2);
   free(d->held);
-  free(d->rowlo);
+  free(d->rowmid);
   free(d->rowhi);
   free(d);
 }
@@ -235,45 +236,47 @@ void mpm_damping_musl(mpm_sim *s)
 }
 
 /* PARTS: the part of particle k (0 or 1), or -1 if it is left alone (see the top). */
-static int part_of(const mpm_sim *s, const mpm_damping *d, size_t k, double idy)
+static int part_of(const mpm_sim *s, const mpm_damping *d, size_t k, double dy)
 {
   const mpm_particles *p = s->p;
   const int mat = p->mat[k];
   if (mat == MPM_MAT_HEAD || mat == MPM_MAT_DEBRIS)
     return -1;
-  const int j = (int)(p->y0[k] * idy);
+  const int j = (int)(p->y0[k] / dy); /* the row, as mpm_sim_cut counts it */
   if (j < 0 || j >= s->nrow)
     return -1;
-  const double mid = 0.5 * (d->rowlo[j] + d->rowhi[j]);
+  const double mid = d->rowmid[j];
   return p->x0[k] < mid ? 0 : p->x0[k] > mid ? 1 : -1;
 }
 
 void mpm_damping_parts(mpm_sim *s)
 {
   mpm_damping *d = s->damp;
-  if (!d || s->sc.damping_about != MPM_DAMP_PARTS || !s->cut || d->alpha == 0.0)
+  if (s->sc.damping_about != MPM_DAMP_PARTS || !s->cut || d->alpha == 0.0)
     return;
   assert(s->ngrip > 0 && s->nfixx > 0); /* every scene holds both ends (mpm_sim_alloc) */
   mpm_particles *p = s->p;
   const double dy = s->sc.h / sqrt((double)s->sc.ppc);
   if (!d->rows_set) { /* the parts the cut made: every row holds a separated particle */
     for (int j = 0; j < s->nrow; j++) {
-      d->rowlo[j] = INFINITY;
+      d->rowmid[j] = INFINITY; /* the first separated x0, until the loop below ends */
       d->rowhi[j] = -INFINITY;
     }
     for (size_t k = 0; k < p->n; k++) {
       const int j = (int)(p->y0[k] / dy);
       if (!p->sep[k] || p->mat[k] == MPM_MAT_HEAD || j < 0 || j >= s->nrow)
         continue;
-      d->rowlo[j] = fmin(d->rowlo[j], p->x0[k]);
+      d->rowmid[j] = fmin(d->rowmid[j], p->x0[k]);
       d->rowhi[j] = fmax(d->rowhi[j], p->x0[k]);
     }
+    for (int j = 0; j < s->nrow; j++)
+      d->rowmid[j] = 0.5 * (d->rowmid[j] + d->rowhi[j]);
     d->rows_set = 1;
   }
-  const double idy = 1.0 / dy, a = d->alpha, vend[2] = {-s->vgrip, 0.0};
+  const double a = d->alpha, vend[2] = {-s->vgrip, 0.0};
   double dke = 0.0;
   for (size_t k = 0; k < p->n; k++) {
-    const int q = part_of(s, d, k, idy);
+    const int q = part_of(s, d, k, dy);
     if (q < 0)
       continue;
     const double ux = p->vx[k], uy = p->vy[k];

@@ -153,10 +153,10 @@ static void pic_vars(report *R)
     snapshot_stats(c, -1, VER_BAND_LAMBDA, &band, &uy, &ml);
     num(R, key, "band_final", band);
     num(R, key, "uy_final", uy);
-    snprintf(key, sizeof key, "paper_%s", sc[i]); /* the paper's method's left quarter, beside */
+    char pkey[32]; /* the paper's method's left quarter, beside */
+    snprintf(pkey, sizeof pkey, "paper_%s", sc[i]);
     snapshot_stats(pc ? pc : c, -1, VER_BAND_LAMBDA, &band, &uy, &ml);
-    num(R, key, "uy_final", uy);
-    snprintf(key, sizeof key, "pic_%s", sc[i]);
+    num(R, pkey, "uy_final", uy);
     if (i == 1) {
       snapshot_stats(c, 0.28, 0.01, &band, &uy, &ml);
       num(R, key, "band028", band);
