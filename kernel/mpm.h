@@ -99,8 +99,10 @@ enum { MPM_DAMP_DRIFT = 0, MPM_DAMP_PARTS = 1 };
  * path_reach h of the failure line through the imperfection (the cells that line
  * crosses, widened by path_reach cells); the others are elastic (MPM_MAT_ELASTIC).  A
  * laminate delaminates along its ply interface: the crack's path is the plane at alpha
- * through where it starts (docs/bands.md sec. 3c). */
-enum { MPM_PATH_FREE = 0, MPM_PATH_LINE = 1 };
+ * through where it starts (docs/bands.md sec. 3c).  IFACE: no particle softens; the
+ * line is a cohesive interface between two velocity fields (mpm_iface.c,
+ * docs/interface.md). */
+enum { MPM_PATH_FREE = 0, MPM_PATH_LINE = 1, MPM_PATH_IFACE = 2 };
 /* decohesion.reversed_shear: shear on the failure plane against a particle's accumulated
  * tangential jump (s_nt upt < 0).  EVEN (the paper): eq. 23 is even in s_nt, so it softens
  * the particle as shear the other way does.  CLOSING: it closes the slip elastically and
@@ -286,6 +288,8 @@ typedef struct {
                               mass times the displacement along the failure normal    */
 } mpm_node;
 
+typedef struct mpm_iface mpm_iface; /* decohesion.path = interface (mpm_iface.h) */
+
 /* The second velocity field (grid.fields = 2, mpm_fields.c): at a node that a separated
  * particle's support covers ("split"), the particles on the far side of the band, as
  * seen from the band's local centre (crk), sum into nd2 instead of nd. */
@@ -294,10 +298,13 @@ typedef struct {
   uint8_t *split;          /* 1 where a node holds two fields this step                 */
   double *crk;             /* the band's local centre at a split node (x, y pairs)      */
   double *cw;              /* the weights summed into crk (scratch)                     */
-  double *dc;              /* the contact's normal velocity change of field 1 and 2 at a
-                              split node this step (pairs; 0 without contact): the ledger */
+  double *dc;              /* the velocity change the contact (or the interface) made in
+                              field 1 and 2 at a split node this step (x, y of field 1,
+                              then of field 2; 0 without contact): the ledger           */
   double nx, ny;           /* the failure plane's normal: side 2 is n . (x - crk) > 0   */
   int nsplit;              /* split nodes this step (0: one field everywhere)           */
+  mpm_iface *ifc;          /* decohesion.path = interface: the split nodes are its, from
+                              the first step; NULL otherwise                            */
 } mpm_fields;
 
 typedef struct {
@@ -402,11 +409,13 @@ void mpm_threads_init(mpm_threads *t, int requested, size_t particles);
 /* The ledger's sums (mpm_step.c), accumulated step by step in a fixed order. */
 typedef struct {
   double L_bc, L_flip, L_scheme, W_head, L_contact, L_debris, L_damp;
+  double W_iface;          /* the interface's cohesive work so far (mpm_iface.c): in W_coh */
   double KE_head0;         /* the head's kinetic energy at the start                   */
   double head_reset;       /* kinetic energy the head's rigid projection removed so far */
   /* this step's held-node and serial sums (mpm_nodes.c, mpm_step.c; reset every step) */
   double s_A, s_K, s_B, s_Bheld, s_Bstart, s_H, s_Wtrue, s_Wbook;
   double s_C;              /* the contact's loss this step (mpm_fields.c)               */
+  double s_I;              /* the interface's work this step (mpm_iface.c)             */
   double s_Dmp;            /* the damper's work this step (mpm_damping.c)               */
 } mpm_ledger;
 

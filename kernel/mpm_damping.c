@@ -72,6 +72,7 @@
 
 #include "mpm.h"
 #include "mpm_node.h"
+#include "mpm_iface.h"
 
 struct mpm_damping {
   double alpha;   /* c dt (time.damping times dt): the share of v - vbar taken out a step */
@@ -195,11 +196,11 @@ void mpm_damping_apply(mpm_sim *s, double bfac)
     mpm_node *n = &g->nd[k];
     const int split = f && f->nsplit && f->split[k];
     double ca[2] = {0.0, 0.0}, cb[2] = {0.0, 0.0};
-    if (split) { /* the contact's normal velocity change is in d too (mpm_fields_grid) */
-      ca[0] = f->dc[2 * k] * f->nx;
-      ca[1] = f->dc[2 * k] * f->ny;
-      cb[0] = f->dc[2 * k + 1] * f->nx;
-      cb[1] = f->dc[2 * k + 1] * f->ny;
+    if (split) { /* the contact's (or interface's) velocity change is in d too (mpm_fields_grid) */
+      ca[0] = f->dc[4 * k];
+      ca[1] = f->dc[4 * k + 1];
+      cb[0] = f->dc[4 * k + 2];
+      cb[1] = f->dc[4 * k + 3];
     }
     if (n->m > mmin)
       damp_record(n, ca, &d->vbar[2 * k], &d->del[2 * k], d->held[k], alpha, d->w, bfac, &t);
@@ -269,8 +270,9 @@ void mpm_damping_parts(mpm_sim *s)
       d->rowmid[j] = fmin(d->rowmid[j], p->x0[k]);
       d->rowhi[j] = fmax(d->rowhi[j], p->x0[k]);
     }
-    for (int j = 0; j < s->nrow; j++)
-      d->rowmid[j] = 0.5 * (d->rowmid[j] + d->rowhi[j]);
+    for (int j = 0; j < s->nrow; j++) /* the interface: the line's x at the row's centre */
+      d->rowmid[j] = s->g->fld && s->g->fld->ifc ? mpm_iface_x_at(s->g->fld->ifc, (j + 0.5) * dy)
+                                                   : 0.5 * (d->rowmid[j] + d->rowhi[j]);
     d->rows_set = 1;
   }
   const double a = d->alpha, vend[2] = {-s->vgrip, 0.0};

@@ -31,6 +31,7 @@
 #include <string.h>
 
 #include "mpm_gimp.h"
+#include "mpm_iface.h"
 
 mpm_fields *mpm_fields_alloc(size_t nn, double nx, double ny)
 {
@@ -41,7 +42,7 @@ mpm_fields *mpm_fields_alloc(size_t nn, double nx, double ny)
   f->split = calloc(nn, 1);
   f->crk = calloc(2 * nn, sizeof(double));
   f->cw = calloc(nn, sizeof(double));
-  f->dc = calloc(2 * nn, sizeof(double));
+  f->dc = calloc(4 * nn, sizeof(double));
   if (!f->nd2 || !f->split || !f->crk || !f->cw || !f->dc) {
     mpm_fields_free(f);
     return NULL;
@@ -61,6 +62,7 @@ void mpm_fields_free(mpm_fields *f)
   free(f->crk);
   free(f->cw);
   free(f->dc);
+  mpm_iface_free(f->ifc);
   free(f);
 }
 
@@ -71,6 +73,10 @@ void mpm_fields_mark(mpm_sim *s)
   mpm_fields *f = s->g->fld;
   const mpm_particles *p = s->p;
   const mpm_grid *g = s->g;
+  if (f->ifc) { /* the interface's split nodes are fixed (mpm_iface_alloc) */
+    memset(f->nd2, 0, (size_t)g->nnx * (size_t)g->nny * sizeof(mpm_node));
+    return;
+  }
   if (!s->cut)
     return; /* a cut band has its separated particles (separation is never undone) */
   const size_t nn = (size_t)g->nnx * (size_t)g->nny, nny = (size_t)g->nny;
@@ -165,7 +171,8 @@ void mpm_fields_grid(mpm_sim *s, double bfac)
   for (size_t k = 0; k < nn; k++) {
     if (!f->split[k])
       continue;
-    f->dc[2 * k] = f->dc[2 * k + 1] = 0.0;
+    double *dc = f->dc + 4 * k;
+    dc[0] = dc[1] = dc[2] = dc[3] = 0.0;
     mpm_node *b = &f->nd2[k], *a = &g->nd[k];
     if (b->m > mmin) {
       const double im = 1.0 / b->m;
@@ -185,6 +192,8 @@ void mpm_fields_grid(mpm_sim *s, double bfac)
     }
     if (!(a->m > mmin))
       continue;
+    if (f->ifc && f->ifc->state[f->ifc->seg[k]] != MPM_SEG_OPEN)
+      continue; /* still bonded: the interface's law (mpm_iface_grid) */
     const double wa = a->px * nx + a->py * ny, wb = b->px * nx + b->py * ny;
     /* the gap along n: the mean normal displacement of the far field's particles less
      * that of the near field's (lane 7 holds m u_n); contact only when it is closed */
@@ -194,8 +203,10 @@ void mpm_fields_grid(mpm_sim *s, double bfac)
       const double dva = a->fx * nx + a->fy * ny, dvb = b->fx * nx + b->fy * ny;
       contact_ledger(L, a->m, wa - dva, dva, da, bfac);
       contact_ledger(L, b->m, wb - dvb, dvb, db, bfac);
-      f->dc[2 * k] = da;
-      f->dc[2 * k + 1] = db;
+      dc[0] = da * nx;
+      dc[1] = da * ny;
+      dc[2] = db * nx;
+      dc[3] = db * ny;
       a->px += da * nx;
       a->py += da * ny;
       a->fx += da * nx;
@@ -206,6 +217,8 @@ void mpm_fields_grid(mpm_sim *s, double bfac)
       b->fy += db * ny;
     }
   }
+  if (f->ifc)
+    mpm_iface_grid(s, bfac);
 }
 
 /* USF and USAVG: the second field's projected velocity v = p / m into (fx, fy), as
@@ -241,19 +254,21 @@ void mpm_fields_musl(mpm_sim *s)
   if (f->nsplit == 0)
     return;
   const size_t nn = (size_t)s->g->nnx * (size_t)s->g->nny;
-  const double mmin = MPM_MASS_EPS * s->mat[MPM_MAT_BAR].mp, nx = f->nx, ny = f->ny;
+  const double mmin = MPM_MASS_EPS * s->mat[MPM_MAT_BAR].mp;
   double B = 0.0;
   for (size_t k = 0; k < nn; k++) {
     if (!f->split[k])
       continue;
     const mpm_node *a = &s->g->nd[k];
     mpm_node *b = &f->nd2[k];
-    const double da = f->dc[2 * k], db = f->dc[2 * k + 1];
-    B += da * (a->qx * nx + a->qy * ny);
-    B -= (b->fx - db * nx) * b->qx + (b->fy - db * ny) * b->qy;
+    const double *dc = f->dc + 4 * k;
+    B += dc[0] * a->qx + dc[1] * a->qy;
+    B -= (b->fx - dc[2]) * b->qx + (b->fy - dc[3]) * b->qy;
     const double im = b->m > mmin ? 1.0 / b->m : 0.0;
     b->fx = b->qx * im;
     b->fy = b->qy * im;
   }
   s->led.s_B += B;
+  if (f->ifc)
+    mpm_iface_musl(s);
 }

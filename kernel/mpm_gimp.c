@@ -80,7 +80,7 @@ int mpm_gimp_p2g_range(const mpm_grid *gg, const mpm_particles *p, size_t a, siz
        * split nodes read it, and only particles of this path reach them) */
       const double un = fld->nx * (x[k] - x0[k]) + fld->ny * (y[k] - y0[k]);
       const mpm_v8 P = {mm, mm * vx[k], mm * vy[k], 0.0, 0.0, 0.0, 0.0, mm * un};
-      const int side = mpm_fields_side(fld, n0, nny, &sx, &sy, x[k], y[k], g->h);
+      const int side = mpm_fields_pside(fld, n0, nny, &sx, &sy, x[k], y[k], x0[k], y0[k], g->h);
       for (int j = 0; j < 3; j++) {
         const mpm_v8 T = sy.S[j] * P - sy.dS[j] * FY, R = sy.S[j] * FX;
         for (int i = 0; i < 3; i++)
@@ -120,7 +120,7 @@ double mpm_gimp_musl_range(const mpm_grid *gg, mpm_particles *p, size_t a, size_
     mpm_gimp_1d((y[k] - oy) * ihy, lcy, &sy);
     const size_t n0 = (size_t)sx.i0 * nny + (size_t)sy.i0;
     const int two = mpm_fields_any(fld, n0, nny);
-    const int side = two ? mpm_fields_side(fld, n0, nny, &sx, &sy, x[k], y[k], g->h) : 0;
+    const int side = two ? mpm_fields_pside(fld, n0, nny, &sx, &sy, x[k], y[k], p->x0[k], p->y0[k], g->h) : 0;
     mpm_v4 S, DX, DY;
     if (two)
       mpm_fields_gather(fld, nd, nny, &sx, &sy, side, &S, &DX, &DY);

@@ -9,6 +9,7 @@
 #include "mpm.h"
 #include "mpm_node.h"
 #include "mpm_shape.h"
+#include "mpm_iface.h"
 
 /* The particle's half-side in cells of the current grid, along x and y. */
 static inline void mpm_gimp_lc(const mpm_sim *s, double *lcx, double *lcy)
@@ -85,6 +86,14 @@ static inline int mpm_fields_side(const mpm_fields *f, size_t n0, size_t nny, co
   double w[9];
   mpm_gimp_stencil(n0, nny, gx, gy, n, w);
   return mpm_fields_side_w(f, n, w, 9, x, y, h);
+}
+
+/* The side of particle at (x, y), reference centre (x0, y0): the interface's by the
+ * reference centre (decohesion.path = interface), else the band's rule above. */
+static inline int mpm_fields_pside(const mpm_fields *f, size_t n0, size_t nny, const mpm_gimp1 *gx,
+                                   const mpm_gimp1 *gy, double x, double y, double x0, double y0, double h)
+{
+  return f->ifc ? mpm_iface_side(f->ifc, x0, y0) : mpm_fields_side(f, n0, nny, gx, gy, x, y, h);
 }
 
 /* 1 if any of the bilinear stencil's nodes is split. */

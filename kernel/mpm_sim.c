@@ -15,6 +15,7 @@
 
 #include "mpm.h"
 #include "mpm_gimp.h"
+#include "mpm_iface.h"
 
 const char *mpm_strerror(mpm_status s)
 {
@@ -67,6 +68,18 @@ mpm_status mpm_scene_check(const mpm_scene *sc, char *err, size_t errlen)
     if (!(sc->imp_factor > 0.0 && sc->imp_factor <= 1.0)) BAD("imperfection.snf_factor must be in (0, 1]");
     if (!(sc->imp_stf_factor > 0.0 && sc->imp_stf_factor <= 1.0)) BAD("imperfection.stf_factor must be in (0, 1]");
     if (sc->imp_size != MPM_IMP_PARTICLE && sc->imp_size != MPM_IMP_CELL) BAD("imperfection.size must be particle or cell");
+    if (sc->path < MPM_PATH_FREE || sc->path > MPM_PATH_IFACE) BAD("decohesion.path must be free, line or interface");
+  }
+  if (sc->model && sc->path == MPM_PATH_IFACE) { /* what mpm_iface.c implements, no more */
+    if (sc->fields != MPM_FIELDS_TWO || sc->shape != MPM_SHAPE_GIMP || sc->scheme != MPM_SCHEME_MUSL)
+      BAD("decohesion.path = interface needs grid.fields = two, grid.shape = gimp and time.scheme = musl");
+    if (sc->model != MPM_DCOH_MODEL1 || sc->q != 1.0 || sc->s0 != sc->snf || sc->eta != 0.0)
+      BAD("decohesion.path = interface implements Model 1 with q = 1, s0 = snf and eta = 0");
+    const double a = sc->alpha_deg * (3.14159265358979323846 / 180.0), c = cos(a) / sin(a);
+    if (!(sin(a) > 0.0) || !(sc->imp_x - sc->imp_y * c > 0.0 && sc->imp_x - sc->imp_y * c < sc->L &&
+                             sc->imp_x + (sc->H - sc->imp_y) * c > 0.0 && sc->imp_x + (sc->H - sc->imp_y) * c < sc->L))
+      BAD("decohesion.path = interface: the line at alpha = %g through the flaw must cross the bar from y = 0 to y = H "
+          "inside 0 < x < L", sc->alpha_deg);
   }
   if (!(sc->h > 0.0)) BAD("grid.h must be > 0");
   if (whole_cells(sc->L, sc->h) < 0 || whole_cells(sc->H, sc->h) < 0)
@@ -256,6 +269,7 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
   size_t k = 0;
   double best = INFINITY;
   size_t imp = 0;
+  double ifx = 0.0, ify = 0.0; /* decohesion.path = interface: the line's point */
   for (int j = 0; j < cy * n1; j++)
     for (int i = 0; i < cx * n1; i++, k++) {
       p->x[k] = p->x0[k] = (i + 0.5) * d;
@@ -290,6 +304,14 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
       if (p->mat[q] == MPM_MAT_BAR && fabs(sa * (p->x0[q] - p->x0[imp]) - ca * (p->y0[q] - p->y0[imp])) > w)
         p->mat[q] = MPM_MAT_ELASTIC;
   }
+  /* decohesion.path = interface: every particle elastic; the line through the
+   * imperfection's particle carries the law (mpm_iface.c) */
+  if (sc->model && sc->path == MPM_PATH_IFACE) {
+    for (size_t q = 0; q < nbar; q++)
+      p->mat[q] = MPM_MAT_ELASTIC;
+    ifx = p->x0[imp];
+    ify = p->y0[imp];
+  }
   /* The head: the same lattice continued MPM_HEAD_CELLS cells beyond x = 0, moving with
    * the grip. */
   for (int j = 0; nhead && j < cy * n1; j++)
@@ -316,6 +338,11 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
   s->ngrip = ngrip;
   s->nfixx = nfixcol * (cy + 1);
   s->fixy = s->fixx[cy / 2];
+  if (sc->model && sc->path == MPM_PATH_IFACE && !(s->g->fld->ifc = mpm_iface_alloc(s, ifx, ify))) {
+    mpm_sim_free(s);
+    snprintf(err, errlen, "out of memory for the interface's arrays");
+    return MPM_ENOMEM;
+  }
   if (sc->damping > 0.0 && !(s->damp = mpm_damping_alloc(s))) {
     mpm_sim_free(s);
     snprintf(err, errlen, "out of memory for the damping's node arrays");
@@ -403,6 +430,10 @@ void mpm_sim_energy(const mpm_sim *s, mpm_energy *e)
   e->W_ext = s->W_ext;
   e->KE = ke;
   e->SE = se;
+  if (s->g && s->g->fld && s->g->fld->ifc) { /* the interface's (mpm_iface.c) */
+    wc += s->led.W_iface;
+    dd += mpm_iface_D(s);
+  }
   e->W_coh = wc;
   e->D = dd;
   e->L_bc = s->led.L_bc;

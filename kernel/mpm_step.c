@@ -259,7 +259,8 @@ static inline __attribute__((always_inline)) void g2p_strip_impl(mpm_sim *s, int
         const size_t n0 = (size_t)sx.i0 * nny + (size_t)sy.i0;
         if ((mode & G2P_TWO) && mpm_fields_any(g->fld, n0, nny))
           mpm_fields_gather(g->fld, (mpm_node *)nd, nny, &sx, &sy,
-                            mpm_fields_side(g->fld, n0, nny, &sx, &sy, x[k], y[k], g->h), &S, &DX, &DY);
+                            mpm_fields_pside(g->fld, n0, nny, &sx, &sy, x[k], y[k], p->x0[k], p->y0[k], g->h), &S,
+                            &DX, &DY);
         else
           mpm_gimp_gather(nd, nny, &sx, &sy, &S, &DX, &DY);
         GX = dtihx * DX;
@@ -458,7 +459,8 @@ static void ledger_step(mpm_sim *s)
   const double Q = 0.5 * (s->mat[MPM_MAT_BAR].irho * t[MPM_LED_QS] - (B - Bv));
   L->L_flip += K - Kp;
   L->L_bc += -L->s_H + (L->s_Wbook - L->s_Wtrue);
-  L->L_scheme += L->s_Wtrue - A - K - B - Q + L->s_H - L->s_C - L->s_Dmp;
+  L->L_scheme += L->s_Wtrue - A - K - B - Q + L->s_H - L->s_C - L->s_Dmp - L->s_I;
+  L->W_iface += L->s_I;
   L->L_contact += L->s_C;
   L->L_damp += L->s_Dmp + Bv;
   s->D_run += t[MPM_LED_D];
@@ -626,7 +628,7 @@ mpm_status mpm_sim_step(mpm_sim *s, char *err, size_t errlen)
   }
   memset(s->led_part, 0, (size_t)s->nstrip * sizeof *s->led_part);
   mpm_ledger *L = &s->led;
-  L->s_A = L->s_K = L->s_B = L->s_Bheld = L->s_Bstart = L->s_H = L->s_Wtrue = L->s_Wbook = L->s_C = L->s_Dmp = 0.0;
+  L->s_A = L->s_K = L->s_B = L->s_Bheld = L->s_Bstart = L->s_H = L->s_Wtrue = L->s_Wbook = L->s_C = L->s_Dmp = L->s_I = 0.0;
   const int sch = s->sc.scheme;
   mpm_status st = p2g(s, err, errlen);
   if (st != MPM_OK)

@@ -272,6 +272,8 @@ static void take_step(run_state *r, ver_summary *u, double delta)
   }
   if (s->n_separate > 0)
     ver_sep_cut(&r->sep, s->p->y0, s->p->sep, s->p->mat, MPM_MAT_HEAD, s->p->n, delta);
+  if (s->cut && s->sc.path == MPM_PATH_IFACE)
+    ver_sep_through(&r->sep, delta);
   ver_sep_load(&r->sep, delta, w->Pg, w->Pf, r->peak, r->dpeak);
   u->delta_sep_cut = r->sep.delta_cut;
   u->delta_sep_load = r->sep.delta_load;

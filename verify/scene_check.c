@@ -199,6 +199,18 @@ int ver_scene_validate(ver_scene *vs, char *err, size_t errlen)
              ver_scene_word(vs, "time", "scheme"));
     return 2;
   }
+  /* the interface implements what the scene files use, no more (kernel/mpm_iface.c) */
+  if (sc->model && sc->path == MPM_PATH_IFACE &&
+      (sc->fields != MPM_FIELDS_TWO || sc->shape != MPM_SHAPE_GIMP || sc->scheme != MPM_SCHEME_MUSL ||
+       sc->model != MPM_DCOH_MODEL1 || sc->q != 1.0 || sc->s0 != sc->snf || sc->eta != 0.0)) {
+    snprintf(err, errlen, "%s: decohesion.path: interface needs grid.fields = two, grid.shape = gimp, time.scheme = "
+             "musl and Model 1 with q = 1, s0 = snf, eta = 0 (here: fields %s, shape %s, scheme %s, model %d, q %g, "
+             "s0 %g, snf %g, eta %g; allowed otherwise: path = free or line)",
+             ver_scene_key_at(vs, ver_scene_key_idx("decohesion", "path"), at, sizeof at),
+             ver_scene_word(vs, "grid", "fields"), ver_scene_word(vs, "grid", "shape"), ver_scene_word(vs, "time", "scheme"),
+             sc->model, sc->q, sc->s0, sc->snf, sc->eta);
+    return 2;
+  }
   if (sc->damping > 0.0 && sc->node_mass == MPM_NODEMASS_LIMITED && sc->shape == MPM_SHAPE_LINEAR &&
       (sc->scheme == MPM_SCHEME_USL || sc->scheme == MPM_SCHEME_USAVG)) {
     snprintf(err, errlen, "%s: time.damping: %g needs grid.node_mass = lumped with usl or usavg on linear shapes "

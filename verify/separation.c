@@ -59,6 +59,12 @@ void ver_sep_cut(ver_sep *d, const double *y0, const uint8_t *sep, const uint8_t
     d->delta_cut = delta;
 }
 
+void ver_sep_through(ver_sep *d, double delta)
+{
+  if (d->delta_cut < 0)
+    d->delta_cut = delta;
+}
+
 void ver_sep_load(ver_sep *d, double delta, double Pg, double Pf, double peak, double delta_peak)
 {
   const long w = d->win, slot = d->nseen % w;

@@ -36,6 +36,9 @@ void ver_sep_free(ver_sep *d);
 
 /* The cut test over n particles at reference heights y0 with separation flags sep;
  * particles with mat[k] == skip_mat are not part of the bar (mat may be NULL). */
+/* decohesion.path = interface: the kernel's cut (every segment of the line open) is the
+ * separation by particle rows; the first call sets delta_cut. */
+void ver_sep_through(ver_sep *d, double delta);
 void ver_sep_cut(ver_sep *d, const double *y0, const uint8_t *sep, const uint8_t *mat, int skip_mat, size_t n,
                  double delta);
 

@@ -1,0 +1,411 @@
+/*
+ * mpm_iface.c - the crack as a cohesive interface between two velocity fields
+ * (decohesion.path = interface; docs/interface.md derives and measures it).
+ *
+ * A band of softening particles on an inclined line dissipates more than U0 per unit
+ * area and carries load after it separates (docs/bands.md): the cell staircase makes
+ * more material strain with the opening than the line holds.  Here no particle softens.
+ * The paper's decohesion law (Model 1 with q = 1, eqs. 8-10) acts on the line itself:
+ *  - the two fields (mpm_fields.c) exist from the first step.  Every node within
+ *    MPM_IFACE_REACH h (|sin a| + |cos a|) of the line at alpha through the flaw is split,
+ *    and a particle's side is fixed by its reference centre (mpm_iface_side);
+ *  - the line is cut into segments of MPM_IFACE_SEG h.  A node belongs to the segment of
+ *    its projection on the line and carries An, the line's length weighted by the node's
+ *    uGIMP weight for a particle centred on it, so a segment's nodes share its length;
+ *  - STUCK: until a segment's mean traction on the line, from the particles' stresses
+ *    through the nodes it weighs (onset()), reaches se = sqrt(<tn>^2 / snf^2 +
+ *    tt^2 / stf^2) >= 1 (eq. 8 at lambda = 0), both fields at its nodes take their centre-of-mass velocity (the
+ *    impulse J = m1 (vc - v1) on field 1, -J on field 2) and, under MUSL, share v':
+ *    the bar is one body there;
+ *  - SOFT: the stick impulse's traction J / (dt An) is held to the failure surface
+ *    se <= 1 - lambda (eq. 8, q = 1) by scaling it back toward 0 (tension and shear;
+ *    compression is never capped), node by node.  A segment whose mean traction is inside
+ *    the surface sticks whole this step.  lambda grows by the traction's work on the
+ *    opening, dW per unit area (the impulse times the fields' relative velocity after
+ *    it, summed over the segment's nodes): dlambda = dW / (U0 (1 - lambda)), Model 1's
+ *    power s . d up = U0 se dlambda with se = 1 - lambda on the surface, so a segment
+ *    that opens to lambda = 1 has taken UF = U0 / 2 per unit area whatever the mode.
+ *    (lambda from an effective opening, sqrt((snf un)^2 + (stf ut)^2) / U0, counts the
+ *    slip that Mode I's inclined opening makes ten times over with stf = 10 snf, and
+ *    separated fig7 early: h 4, 4 ppc, W_ext 0.75 UF area; docs/interface.md);
+ *  - OPEN: at lambda >= the separation threshold, frictionless contact only
+ *    (mpm_fields.c).  The bar is cut when every segment is open (s->cut).
+ * The flaw: the segment holding the flaw's square (its particle, or its cell with
+ * imperfection.size = cell) loses strength in proportion to the share of its length that
+ * lies in the square.  A segment with less than a quarter of the segment length of line
+ * (the bar's edges) joins its larger neighbour.
+ * Energy: the impulse's work on the fields over the step, -m c . (v + v^L) / 2 per record
+ * (as the contact's, docs/energy.md), is the cohesive work and goes to W_coh; D is eq. 10
+ * on the segments, U0 A min(lambda, 1).
+ * Serial, in node and particle order: the same sums whatever the threads.
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "mpm_gimp.h"
+#include "mpm_iface.h"
+
+/* quadrature of the line for An and the flaw: points per cell of line */
+#define IFACE_QUAD 200
+
+static int seg_of(const mpm_iface *f, double x, double y)
+{
+  const int b = (int)floor((f->tx * (x - f->lx) + f->ty * (y - f->ly) - f->smin) / f->sw);
+  return b < 0 ? 0 : b >= f->nseg ? f->nseg - 1 : b;
+}
+
+void mpm_iface_free(mpm_iface *f)
+{
+  if (!f)
+    return;
+  free(f->seg);
+  double *d[] = {f->An, f->jx, f->jy, f->A, f->snf, f->stf, f->lam, f->sn, f->st, f->sv,
+                 f->wn, f->Tn, f->Tt, f->md, f->ns};
+  for (size_t i = 0; i < sizeof d / sizeof *d; i++)
+    free(d[i]);
+  free(f->state);
+  free(f->stuck);
+  free(f);
+}
+
+/* The line's length in each segment that lies in the flaw's square, into lf. */
+static void flaw_lengths(const mpm_sim *s, const mpm_iface *f, double s0, double s1, double *lf)
+{
+  const mpm_scene *sc = &s->sc;
+  const double h = sc->h, dx = h / sqrt((double)sc->ppc);
+  double x0 = f->lx - 0.5 * dx, x1 = f->lx + 0.5 * dx, y0 = f->ly - 0.5 * dx, y1 = f->ly + 0.5 * dx;
+  if (sc->imp_size == MPM_IMP_CELL) {
+    x0 = floor(f->lx / h) * h;
+    y0 = floor(f->ly / h) * h;
+    x1 = x0 + h;
+    y1 = y0 + h;
+  }
+  const int ns = (int)ceil((s1 - s0) / h * IFACE_QUAD);
+  const double ds = (s1 - s0) / ns;
+  for (int i = 0; i < ns; i++) {
+    const double sl = s0 + (i + 0.5) * ds, x = f->lx + sl * f->tx, y = f->ly + sl * f->ty;
+    if (x >= x0 && x <= x1 && y >= y0 && y <= y1)
+      lf[seg_of(f, x, y)] += ds;
+  }
+}
+
+mpm_iface *mpm_iface_alloc(mpm_sim *s, double lx, double ly)
+{
+  const mpm_scene *sc = &s->sc;
+  mpm_grid *g = s->g;
+  mpm_fields *fl = g->fld;
+  const size_t nn = (size_t)g->nnx * (size_t)g->nny, nny = (size_t)g->nny;
+  mpm_iface *f = calloc(1, sizeof *f);
+  if (!f)
+    return NULL;
+  const double a = sc->alpha_deg * (3.14159265358979323846 / 180.0), sa = sin(a), ca = cos(a), h = sc->h;
+  f->lx = lx;
+  f->ly = ly;
+  f->nx = fl->nx;
+  f->ny = fl->ny;
+  f->tx = ca;
+  f->ty = sa;
+  /* the line on the bar: y from 0 to H (mpm_scene_check: sin a > 0 and it stays in x) */
+  const double s0 = -ly / sa, s1 = (sc->H - ly) / sa;
+  f->sw = MPM_IFACE_SEG * h;
+  f->smin = s0 - 4.0 * h;
+  f->nseg = (int)ceil((s1 - s0 + 8.0 * h) / f->sw) + 1;
+  const size_t ns = (size_t)f->nseg;
+  f->seg = malloc(nn * sizeof(int));
+  double **nodal[] = {&f->An, &f->jx, &f->jy};
+  for (size_t i = 0; i < 3; i++)
+    *nodal[i] = calloc(nn, sizeof(double));
+  f->md = calloc(4 * nn, sizeof(double));
+  f->ns = calloc(3 * nn, sizeof(double));
+  double **segs[] = {&f->A, &f->snf, &f->stf, &f->lam, &f->sn, &f->st, &f->sv, &f->wn, &f->Tn, &f->Tt};
+  int ok = f->seg && f->An && f->jx && f->jy && f->md && f->ns;
+  for (size_t i = 0; i < sizeof segs / sizeof *segs; i++)
+    ok &= (*segs[i] = calloc(ns, sizeof(double))) != NULL;
+  f->state = calloc(ns, 1);
+  f->stuck = calloc(ns, 1);
+  double *lf = calloc(ns, sizeof(double));
+  if (!ok || !f->state || !f->stuck || !lf) {
+    free(lf);
+    mpm_iface_free(f);
+    return NULL;
+  }
+  /* An: the line integral of each node's uGIMP weight for a particle of the run's size
+   * centred on the line (midpoint rule) */
+  double lcx = 0.0, lcy = 0.0;
+  mpm_gimp_lc(s, &lcx, &lcy);
+  const int nq = (int)ceil((s1 - s0) / h * IFACE_QUAD);
+  const double ds = (s1 - s0) / nq;
+  for (int i = 0; i < nq; i++) {
+    const double sl = s0 + (i + 0.5) * ds, x = lx + sl * ca, y = ly + sl * sa;
+    mpm_gimp1 gx, gy;
+    mpm_gimp_1d((x - g->ox) * g->ihx, lcx, &gx);
+    mpm_gimp_1d((y - g->oy) * g->ihy, lcy, &gy);
+    size_t n[9];
+    double w[9];
+    mpm_gimp_stencil((size_t)gx.i0 * nny + (size_t)gy.i0, nny, &gx, &gy, n, w);
+    for (int q = 0; q < 9; q++)
+      f->An[n[q]] += w[q] * ds;
+  }
+  /* the split nodes (never a held one: its reaction stays that of one field), and the
+   * segment of each node */
+  const double reach = MPM_IFACE_REACH * h * (fabs(sa) + fabs(ca));
+  for (size_t n = 0; n < nn; n++) {
+    const double X = g->ox + (double)(n / nny) * g->hx, Y = g->oy + (double)(n % nny) * g->h;
+    fl->split[n] = fabs(f->nx * (X - lx) + f->ny * (Y - ly)) <= reach;
+    f->seg[n] = seg_of(f, X, Y);
+  }
+  for (int q = 0; q < s->ngrip; q++)
+    fl->split[s->grip[q]] = 0;
+  for (int q = 0; q < s->nfixx; q++)
+    fl->split[s->fixx[q]] = 0;
+  fl->split[s->fixy] = 0;
+  fl->nsplit = 0;
+  for (size_t n = 0; n < nn; n++)
+    if (fl->split[n]) {
+      fl->nsplit++;
+      f->A[f->seg[n]] += f->An[n];
+    }
+  /* a segment with under a quarter of its length of line joins its larger neighbour,
+   * if that one is a whole segment (the bar's edges: the line ends inside it); the
+   * slivers left, the uGIMP tails beyond the bar, hold no line */
+  const double amin = 0.25 * f->sw;
+  for (int b = 0; b < f->nseg; b++)
+    if (f->A[b] > 0.0 && f->A[b] < amin) {
+      const int lo = b > 0 ? b - 1 : b + 1, hi = b + 1 < f->nseg ? b + 1 : b - 1;
+      const int to = f->A[lo] > f->A[hi] ? lo : hi;
+      if (!(f->A[to] >= amin))
+        continue;
+      for (size_t n = 0; n < nn; n++)
+        if (f->seg[n] == b)
+          f->seg[n] = to;
+      f->A[to] += f->A[b];
+      f->A[b] = 0.0;
+    }
+  flaw_lengths(s, f, s0, s1, lf);
+  for (int b = 0; b < f->nseg; b++) {
+    const double share = f->A[b] > 0.0 ? fmin(lf[b] / f->A[b], 1.0) : 0.0;
+    f->snf[b] = sc->snf * (1.0 - (1.0 - sc->imp_factor) * share);
+    f->stf[b] = sc->stf * (1.0 - (1.0 - sc->imp_stf_factor) * share);
+    /* a segment with no line in it (beyond the bar's edges) is open from the start */
+    f->state[b] = f->A[b] >= amin ? MPM_SEG_STUCK : MPM_SEG_OPEN;
+  }
+  free(lf);
+  return f;
+}
+
+double mpm_iface_x_at(const mpm_iface *f, double y)
+{
+  return f->lx + (y - f->ly) * f->tx / f->ty;
+}
+
+double mpm_iface_D(const mpm_sim *s)
+{
+  const mpm_iface *f = s->g->fld->ifc;
+  double d = 0.0;
+  for (int b = 0; b < f->nseg; b++)
+    d += s->sc.U0 * f->A[b] * fmin(f->lam[b], 1.0); /* eq. 10 */
+  return d;
+}
+
+/* se of a traction (eq. 8's effective stress, compression not counted) */
+static double eff(double tn, double tt, double snf, double stf)
+{
+  const double a = fmax(tn, 0.0) / snf, b = tt / stf;
+  return sqrt(a * a + b * b);
+}
+
+/* Onset: each stuck segment's mean traction on the line, sum An t_k / A, with t_k the
+ * traction sigma . n of the node's volume-weighted mean particle stress (the particles'
+ * stress at the end of the last step, with their uGIMP weights): every node the line
+ * weighs has particles in its support, whatever the ppc. */
+static void onset(mpm_sim *s, mpm_iface *f)
+{
+  int any = 0;
+  for (int b = 0; b < f->nseg; b++) {
+    f->sn[b] = f->st[b] = f->sv[b] = 0.0;
+    any |= f->state[b] == MPM_SEG_STUCK;
+  }
+  if (!any)
+    return;
+  const mpm_grid *g = s->g;
+  const mpm_fields *fl = g->fld;
+  const mpm_particles *p = s->p;
+  const size_t nn = (size_t)g->nnx * (size_t)g->nny, nny = (size_t)g->nny;
+  memset(f->ns, 0, 3 * nn * sizeof(double));
+  double lcx = 0.0, lcy = 0.0;
+  mpm_gimp_lc(s, &lcx, &lcy);
+  const double nx = f->nx, ny = f->ny, far = MPM_IFACE_REACH * s->sc.h * (fabs(nx) + fabs(ny)) + 2.0 * s->sc.h;
+  for (size_t k = 0; k < p->n; k++) {
+    if (p->mat[k] == MPM_MAT_HEAD || p->mat[k] == MPM_MAT_DEBRIS ||
+        fabs(nx * (p->x0[k] - f->lx) + ny * (p->y0[k] - f->ly)) > far || !mpm_gimp_inside(g, p->x[k], p->y[k]))
+      continue;
+    mpm_gimp1 gx, gy;
+    mpm_gimp_1d((p->x[k] - g->ox) * g->ihx, lcx, &gx);
+    mpm_gimp_1d((p->y[k] - g->oy) * g->ihy, lcy, &gy);
+    size_t n[9];
+    double w[9];
+    mpm_gimp_stencil((size_t)gx.i0 * nny + (size_t)gy.i0, nny, &gx, &gy, n, w);
+    const double sx = p->sxx[k] * nx + p->sxy[k] * ny, sy = p->sxy[k] * nx + p->syy[k] * ny; /* sigma . n */
+    const double tn = sx * nx + sy * ny, tt = sx * f->tx + sy * f->ty;
+    for (int q = 0; q < 9; q++)
+      if (fl->split[n[q]] && f->An[n[q]] > 0.0) {
+        const double wv = w[q] * p->V[k];
+        f->ns[3 * n[q]] += wv * tn;
+        f->ns[3 * n[q] + 1] += wv * tt;
+        f->ns[3 * n[q] + 2] += wv;
+      }
+  }
+  for (size_t k = 0; k < nn; k++)
+    if (fl->split[k] && f->ns[3 * k + 2] > 0.0) {
+      const int b = f->seg[k];
+      f->sn[b] += f->An[k] * f->ns[3 * k] / f->ns[3 * k + 2];
+      f->st[b] += f->An[k] * f->ns[3 * k + 1] / f->ns[3 * k + 2];
+      f->sv[b] += f->An[k];
+    }
+  for (int b = 0; b < f->nseg; b++)
+    if (f->state[b] == MPM_SEG_STUCK && f->sv[b] > 0.0 &&
+        eff(f->sn[b] / f->sv[b], f->st[b] / f->sv[b], f->snf[b], f->stf[b]) >= 1.0)
+      f->state[b] = MPM_SEG_SOFT;
+}
+
+/* The ledger at one record that the interface's impulse changes by c (a velocity): with
+ * v its projected velocity and dv its free increment, as the contact's (mpm_fields.c)
+ * with c a vector; returns the impulse's work on the record over the step, at the mean
+ * of the start and end velocities. */
+static double record_ledger(mpm_ledger *L, double m, const double v[2], const double dv[2], const double c[2],
+                            double bfac)
+{
+  const double cv = c[0] * v[0] + c[1] * v[1], cd = c[0] * dv[0] + c[1] * dv[1], cc = c[0] * c[0] + c[1] * c[1];
+  L->s_A += m * cv;
+  L->s_K += m * (2.0 * cd + cc);
+  L->s_B -= bfac * m * cd;
+  return m * (cv + 0.5 * (cd + cc)); /* m c . (v + v + dv + c) / 2 */
+}
+
+void mpm_iface_grid(mpm_sim *s, double bfac)
+{
+  mpm_grid *g = s->g;
+  mpm_fields *fl = g->fld;
+  mpm_iface *f = fl->ifc;
+  mpm_ledger *L = &s->led;
+  const size_t nn = (size_t)g->nnx * (size_t)g->nny;
+  const double dt = s->sc.dt, mmin = MPM_MASS_EPS * s->mat[MPM_MAT_BAR].mp;
+  const double nx = f->nx, ny = f->ny, tx = f->tx, ty = f->ty, tiny = 1e-9 * s->sc.h;
+  onset(s, f);
+  /* the stick impulses J = m1 (vc - v1), vc the pair's centre-of-mass velocity (p holds
+   * v^L after the node update), and their sums per segment */
+  for (int b = 0; b < f->nseg; b++)
+    f->Tn[b] = f->Tt[b] = f->wn[b] = 0.0;
+  for (size_t k = 0; k < nn; k++) {
+    f->jx[k] = f->jy[k] = 0.0;
+    if (!fl->split[k] || f->state[f->seg[k]] == MPM_SEG_OPEN)
+      continue;
+    const mpm_node *a = &g->nd[k], *b = &fl->nd2[k];
+    if (!(a->m > mmin) || !(b->m > mmin))
+      continue;
+    const double mt = a->m + b->m;
+    f->jx[k] = a->m * b->m * (b->px - a->px) / mt;
+    f->jy[k] = a->m * b->m * (b->py - a->py) / mt;
+    f->Tn[f->seg[k]] += f->jx[k] * nx + f->jy[k] * ny;
+    f->Tt[f->seg[k]] += f->jx[k] * tx + f->jy[k] * ty;
+  }
+  /* a softening segment sticks whole this step when its mean traction is inside the
+   * surface se <= 1 - lambda */
+  for (int b = 0; b < f->nseg; b++)
+    f->stuck[b] = f->state[b] == MPM_SEG_STUCK ||
+                  (f->state[b] == MPM_SEG_SOFT &&
+                   eff(f->Tn[b] / (dt * f->A[b]), f->Tt[b] / (dt * f->A[b]), f->snf[b], f->stf[b]) <= 1.0 - f->lam[b]);
+  double work = 0.0;
+  for (size_t k = 0; k < nn; k++) {
+    if (!fl->split[k] || f->state[f->seg[k]] == MPM_SEG_OPEN)
+      continue;
+    mpm_node *a = &g->nd[k], *b = &fl->nd2[k];
+    double *md = f->md + 4 * k;
+    md[0] = md[1] = md[2] = md[3] = 0.0;
+    if (!(a->m > mmin) || !(b->m > mmin))
+      continue;
+    const int q = f->seg[k];
+    double jn = f->jx[k] * nx + f->jy[k] * ny, jt = f->jx[k] * tx + f->jy[k] * ty;
+    if (!f->stuck[q]) { /* SOFT: the node's traction held to the surface */
+      const double c = 1.0 - f->lam[q];
+      if (f->An[k] > tiny) {
+        const double tn = jn / (dt * f->An[k]), se = eff(tn, jt / (dt * f->An[k]), f->snf[q], f->stf[q]);
+        if (se > c) {
+          const double r = c / se;
+          if (tn > 0.0)
+            jn *= r;
+          jt *= r;
+        }
+      } else { /* no line in the node's support: compression only */
+        jn = fmin(jn, 0.0);
+        jt = 0.0;
+      }
+    }
+    const double ex = jn * nx + jt * tx, ey = jn * ny + jt * ty; /* the impulse on field 1 */
+    const double ca[2] = {ex / a->m, ey / a->m}, cb[2] = {-ex / b->m, -ey / b->m};
+    const double dva[2] = {a->fx, a->fy}, dvb[2] = {b->fx, b->fy};
+    const double va[2] = {a->px - a->fx, a->py - a->fy}, vb[2] = {b->px - b->fx, b->py - b->fy};
+    work -= record_ledger(L, a->m, va, dva, ca, bfac) + record_ledger(L, b->m, vb, dvb, cb, bfac);
+    /* MUSL's B needs each record's m dv (mpm_iface_musl) */
+    md[0] = a->m * dva[0];
+    md[1] = a->m * dva[1];
+    md[2] = b->m * dvb[0];
+    md[3] = b->m * dvb[1];
+    double *dc = fl->dc + 4 * k;
+    dc[0] = ca[0];
+    dc[1] = ca[1];
+    dc[2] = cb[0];
+    dc[3] = cb[1];
+    a->px += ca[0];
+    a->py += ca[1];
+    a->fx += ca[0];
+    a->fy += ca[1];
+    b->px += cb[0];
+    b->py += cb[1];
+    b->fx += cb[0];
+    b->fy += cb[1];
+    if (f->state[q] == MPM_SEG_SOFT) /* the traction's work on the opening this step */
+      f->wn[q] += ex * (b->px - a->px) + ey * (b->py - a->py);
+  }
+  L->s_I += work;
+  /* the segments' opening and lambda: the largest effective opening over U0 */
+  int open = 1;
+  for (int b = 0; b < f->nseg; b++) {
+    if (f->state[b] == MPM_SEG_SOFT) {
+      const double dw = f->wn[b] / f->A[b], l0 = f->lam[b];
+      if (dw > 0.0)
+        f->lam[b] = fmin(1.0, l0 + dw / (s->sc.U0 * fmax(1.0 - l0, 1e-3)));
+      if (f->lam[b] >= s->sc.sep_threshold)
+        f->state[b] = MPM_SEG_OPEN;
+    }
+    open &= f->state[b] == MPM_SEG_OPEN;
+  }
+  if (open)
+    s->cut = 1;
+}
+
+void mpm_iface_musl(mpm_sim *s)
+{
+  mpm_grid *g = s->g;
+  mpm_fields *fl = g->fld;
+  const mpm_iface *f = fl->ifc;
+  const size_t nn = (size_t)g->nnx * (size_t)g->nny;
+  const double mmin = MPM_MASS_EPS * s->mat[MPM_MAT_BAR].mp;
+  double B = 0.0;
+  for (size_t k = 0; k < nn; k++) {
+    if (!fl->split[k] || !f->stuck[f->seg[k]])
+      continue;
+    mpm_node *a = &g->nd[k], *b = &fl->nd2[k];
+    if (!(a->m > mmin) || !(b->m > mmin))
+      continue;
+    /* stuck: one body, one v' (fx, fy hold v'); B = -m dv . v' of both records again */
+    const double mt = a->m + b->m;
+    const double vx = (a->m * a->fx + b->m * b->fx) / mt, vy = (a->m * a->fy + b->m * b->fy) / mt;
+    const double *md = f->md + 4 * k;
+    B -= md[0] * (vx - a->fx) + md[1] * (vy - a->fy) + md[2] * (vx - b->fx) + md[3] * (vy - b->fy);
+    a->fx = b->fx = vx;
+    a->fy = b->fy = vy;
+  }
+  s->led.s_B += B;
+}

@@ -1,0 +1,60 @@
+/*
+ * mpm_iface.h - the crack as a cohesive interface between two velocity fields
+ * (decohesion.path = interface, mpm_iface.c), private to kernel/.
+ */
+#ifndef DELAM_MPM_IFACE_H
+#define DELAM_MPM_IFACE_H
+
+#include <stdint.h>
+
+#include "mpm.h"
+
+/* One interface: the line at alpha through the flaw, cut into segments of MPM_IFACE_SEG h
+ * along it.  Per node (nnx * nny): its segment and its share of the line.  Per segment:
+ * its length, strengths, state and the paper's lambda. */
+#define MPM_IFACE_SEG 2.0      /* segment length, in cells (docs/interface.md, "Segments") */
+#define MPM_IFACE_REACH 2.5    /* split nodes: within this many h (|sin a| + |cos a|) of the line */
+enum { MPM_SEG_STUCK = 0, MPM_SEG_SOFT = 1, MPM_SEG_OPEN = 2 };
+
+struct mpm_iface {
+  double lx, ly;           /* the line's point: the flaw particle's reference centre    */
+  double nx, ny, tx, ty;   /* its normal (sin a, -cos a) and direction (cos a, sin a)    */
+  double smin, sw;         /* the first segment's start along the line, and the length  */
+  int nseg;
+  int *seg;                /* per node: its segment                                     */
+  double *An;              /* per node: the line's length weighted by the node's uGIMP N */
+  double *jx, *jy;         /* per node: the impulse that sticks the fields, this step    */
+  double *A;               /* per segment: the line's length in it (sum of An)          */
+  double *snf, *stf;       /* per segment: strengths (the flaw by its length on the line) */
+  double *lam;             /* per segment: lambda (eq. 10's, here of the segment)        */
+  uint8_t *state;          /* per segment: MPM_SEG_*                                     */
+  uint8_t *stuck;          /* per segment: stuck this step (MUSL shares v' there)        */
+  double *sn, *st, *sv;    /* per segment (scratch): sum An tn, An tt, An at the nodes    */
+  double *wn;              /* per segment (scratch): the traction's work this step      */
+  double *Tn, *Tt;         /* per segment (scratch): the stick impulses' sums            */
+  double *ns;              /* per node (scratch): the particles' sum w V (tn, tt, 1)      */
+  double *md;              /* per node: m dv of field 1 and 2 this step (x, y pairs): MUSL's B */
+};
+
+/* The interface through (lx, ly); marks the fields' split nodes (fixed for the run).
+ * NULL when out of memory. */
+mpm_iface *mpm_iface_alloc(mpm_sim *s, double lx, double ly);
+void mpm_iface_free(mpm_iface *f);
+/* After the second field's eq. 4 at every split node (mpm_fields_grid): the law, its
+ * impulses, the ledger, the segments' lambda and the cut. */
+void mpm_iface_grid(mpm_sim *s, double bfac);
+/* MUSL (mpm_fields_musl): the ledger's B at split nodes, and v' shared where stuck. */
+void mpm_iface_musl(mpm_sim *s);
+/* sum U0 A min(lambda, 1) over the segments: eq. 10 on the line */
+double mpm_iface_D(const mpm_sim *s);
+/* x of the line at height y */
+double mpm_iface_x_at(const mpm_iface *f, double y);
+
+/* The side of a particle: 1 (the second field) when its reference centre is on the
+ * normal's side of the line.  A particle keeps its side for the whole run. */
+static inline int mpm_iface_side(const mpm_iface *f, double x0, double y0)
+{
+  return f->nx * (x0 - f->lx) + f->ny * (y0 - f->ly) > 0.0;
+}
+
+#endif

@@ -1,0 +1,228 @@
+/*
+ * test_mpm_iface.c - the crack as a cohesive interface (decohesion.path = interface,
+ * mpm_iface.c) on the paper's inclined bar (L 192, H 32, alpha 60), against closed forms
+ * and conservation laws, not against the code's own output:
+ *  - Mode I (Fig. 7's strengths, snf 1, stf 10) and Mode II (Fig. 8's, snf 10, stf 1),
+ *    h 4, 4 ppc: the elastic slope is E H / L; the peak is r0 H with r0 the uniaxial
+ *    stress at which the plane at alpha reaches eq. 8's surface,
+ *    1 / sqrt((sin^2 a / snf)^2 + (sin a cos a / stf)^2); the dissipation is U0 x area
+ *    (eq. 10 over the crack, area H / sin a) and the interface's cohesive work is
+ *    UF x area = U0 / 2 x area (eq. 24) by the time the bar is cut; the cut bar carries
+ *    under 2 % of the peak; the ledger closes (W_ext + E0 = KE + SE + W_coh + the
+ *    booked terms, to 1e-6 of W_ext);
+ *  - no particle softens (every one stays elastic: lambda 0);
+ *  - results do not depend on the number of threads (bit for bit);
+ *  - the scene check refuses what the interface does not implement.
+ */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "mpm.h"
+#include "test_util.h"
+
+static const double PI = 3.14159265358979323846;
+
+/* The inclined bar of fig7.ini / fig8.ini with the interface: Model 1, q 1, 60 deg,
+ * the flaw (0.9 of the strengths that govern) on the centre's cell, uGIMP, two fields,
+ * MUSL, the release damped from the cut about the parts. */
+static mpm_scene iface_scene(double snf, double stf, double h, int ppc)
+{
+  mpm_scene sc;
+  memset(&sc, 0, sizeof sc);
+  sc.L = 192.0;
+  sc.H = 32.0;
+  sc.E = 1024.0;
+  sc.nu = 0.25;
+  sc.rho = 1.0;
+  sc.model = MPM_DCOH_MODEL1;
+  sc.alpha_deg = 60.0;
+  sc.snf = snf;
+  sc.stf = stf;
+  sc.U0 = 0.375;
+  sc.s0 = snf;
+  sc.q = 1.0;
+  sc.sep_threshold = 0.98;
+  sc.le_mode = MPM_LE_CELL;
+  sc.le_factor = 1.0;
+  sc.imp_factor = snf < stf ? 0.9 : 1.0;
+  sc.imp_stf_factor = stf < snf ? 0.9 : 1.0;
+  sc.imp_x = 96.0;
+  sc.imp_y = 16.0;
+  sc.imp_size = MPM_IMP_CELL;
+  sc.path = MPM_PATH_IFACE;
+  sc.h = h;
+  sc.ppc = ppc;
+  sc.margin = 16.0;
+  sc.scheme = MPM_SCHEME_MUSL;
+  sc.shape = MPM_SHAPE_GIMP;
+  sc.fields = MPM_FIELDS_TWO;
+  sc.dt = 0.0125 * h; /* the paper's 0.025 at h 2 */
+  sc.speed = 0.001;
+  sc.damping = 0.1;
+  sc.damping_from = MPM_DAMP_CUT;
+  sc.damping_about = MPM_DAMP_PARTS;
+  sc.end_delta = 1.0;
+  return sc;
+}
+
+static mpm_sim *make_sim(const mpm_scene *sc, int nthreads)
+{
+  mpm_sim *s = NULL;
+  char err[256] = "";
+  const mpm_status st = mpm_sim_alloc(sc, nthreads, &s, err, sizeof err);
+  if (st != MPM_OK || !s)
+    fail_msg("mpm_sim_alloc: %s: %s", mpm_strerror(st), err);
+  return s;
+}
+
+static void step(mpm_sim *s)
+{
+  char err[256] = "";
+  const mpm_status st = mpm_sim_step(s, err, sizeof err);
+  if (st != MPM_OK)
+    fail_msg("step %ld: %s: %s", s->step, mpm_strerror(st), err);
+}
+
+/* Runs to the cut plus `after` of grip travel, and checks every closed form above. */
+static void bar_case(double snf, double stf, const char *mode)
+{
+  const mpm_scene sc = iface_scene(snf, stf, 4.0, 4);
+  mpm_sim *s = make_sim(&sc, 1);
+  mpm_energy e0, e;
+  mpm_sim_energy(s, &e0);
+  const double a = sc.alpha_deg * (PI / 180.0), sa = sin(a), ca = cos(a);
+  const double sn = sa * sa / snf, st = sa * ca / stf, r0 = 1.0 / sqrt(sn * sn + st * st);
+  const double Pmax = r0 * sc.H, area = sc.H / sa;
+  /* the elastic slope: least squares over the rows with 0.1 to 0.6 of the peak, before it */
+  double sx = 0, sy = 0, sxx = 0, sxy = 0, n = 0, peak = 0.0, dcut = -1.0, after = 0.0;
+  double Wcut = NAN;
+  const long nmax = lround(sc.end_delta / (sc.speed * sc.dt));
+  for (long k = 0; k < nmax; k++) {
+    step(s);
+    const double d = mpm_sim_delta(s), P = s->P_grip;
+    peak = fmax(peak, P);
+    if (peak < 0.6 * Pmax && P > 0.1 * Pmax && P == peak) {
+      sx += d;
+      sy += P;
+      sxx += d * d;
+      sxy += d * P;
+      n++;
+    }
+    if (s->cut && dcut < 0.0) {
+      dcut = d;
+      mpm_sim_energy(s, &e);
+      Wcut = e.W_coh;
+    }
+    /* the load a settle of 0.1 past the cut (the release's ringing has that long to
+     * pass), over 0.05 of travel */
+    if (dcut >= 0.0 && d >= dcut + 0.1)
+      after = fmax(after, fabs(P));
+    if (dcut >= 0.0 && d >= dcut + 0.15)
+      break;
+  }
+  char what[128];
+  snprintf(what, sizeof what, "%s: the bar is cut", mode);
+  if (dcut < 0.0)
+    fail_msg("%s (never, to delta %g; peak %g against r0 H %g)", what, mpm_sim_delta(s), peak, Pmax);
+  const double slope = (n * sxy - sx * sy) / (n * sxx - sx * sx);
+  snprintf(what, sizeof what, "%s: elastic slope vs E H / L", mode);
+  assert_rel(slope, sc.E * sc.H / sc.L, 0.01, what);
+  snprintf(what, sizeof what, "%s: peak vs r0 H", mode);
+  assert_rel(peak, Pmax, 0.03, what);
+  mpm_sim_energy(s, &e);
+  snprintf(what, sizeof what, "%s: dissipation vs U0 area", mode);
+  assert_rel(e.D, sc.U0 * area, 0.03, what);
+  snprintf(what, sizeof what, "%s: cohesive work at the cut vs UF area", mode);
+  assert_rel(Wcut, 0.5 * sc.U0 * area, 0.05, what);
+  snprintf(what, sizeof what, "%s: load after the cut vs the peak", mode);
+  assert_abs(after / peak, 0.0, 0.02, what);
+  const double booked = e.L_bc + e.L_flip + e.L_scheme + e.W_head + e.L_contact + e.L_debris + e.L_damp;
+  snprintf(what, sizeof what, "%s: W_ext + E0 - (KE + SE + W_coh + booked)", mode);
+  assert_abs(e.W_ext + e0.KE + e0.SE - (e.KE + e.SE + e.W_coh + booked), 0.0, 1e-6 * e.W_ext, what);
+  const mpm_particles *p = s->p;
+  for (size_t k = 0; k < p->n; k++)
+    if (p->lam[k] != 0.0 || p->sep[k])
+      fail_msg("%s: particle %zu softened (lambda %g)", mode, k, p->lam[k]);
+  mpm_sim_free(s);
+}
+
+static void test_mpm_iface_mode_one(void **state)
+{
+  (void)state;
+  bar_case(1.0, 10.0, "Mode I (snf 1, stf 10)");
+}
+
+static void test_mpm_iface_mode_two(void **state)
+{
+  (void)state;
+  bar_case(10.0, 1.0, "Mode II (snf 10, stf 1)");
+}
+
+/* 1 and 2 threads through the onset, the softening and the cut: the same bits. */
+static void test_mpm_iface_threads(void **state)
+{
+  (void)state;
+  mpm_scene sc = iface_scene(1.0, 10.0, 4.0, 4);
+  mpm_sim *a = make_sim(&sc, 1), *b = make_sim(&sc, 2);
+  const long nmax = lround(0.45 / (sc.speed * sc.dt));
+  for (long k = 0; k < nmax; k++) {
+    step(a);
+    step(b);
+  }
+  assert_true(a->cut); /* the run went through every phase */
+  tu_assert_same_bits(a, b, "interface, h 4, 4 ppc");
+  mpm_sim_free(a);
+  mpm_sim_free(b);
+}
+
+static void expect_einval(const mpm_scene *sc, const char *what)
+{
+  mpm_sim *s = NULL;
+  char err[256] = "";
+  if (mpm_sim_alloc(sc, 1, &s, err, sizeof err) != MPM_EINVAL || s)
+    fail_msg("%s: accepted", what);
+  if (!strstr(err, "interface"))
+    fail_msg("%s: the message does not name the interface: %s", what, err);
+}
+
+/* What the interface does not implement is refused, each rule on its own. */
+static void test_mpm_iface_scene_check(void **state)
+{
+  (void)state;
+  mpm_scene sc = iface_scene(1.0, 10.0, 8.0, 1);
+  mpm_sim *s = make_sim(&sc, 1); /* the base is accepted */
+  mpm_sim_free(s);
+  sc.shape = MPM_SHAPE_LINEAR;
+  expect_einval(&sc, "linear shapes");
+  sc = iface_scene(1.0, 10.0, 8.0, 1);
+  sc.fields = MPM_FIELDS_ONE;
+  expect_einval(&sc, "one field");
+  sc = iface_scene(1.0, 10.0, 8.0, 1);
+  sc.scheme = MPM_SCHEME_USL;
+  expect_einval(&sc, "USL");
+  sc = iface_scene(1.0, 10.0, 8.0, 1);
+  sc.q = 2.0;
+  expect_einval(&sc, "q = 2");
+  sc = iface_scene(1.0, 10.0, 8.0, 1);
+  sc.alpha_deg = 5.0; /* the line leaves the bar through its ends */
+  expect_einval(&sc, "alpha 5");
+}
+
+int main(void)
+{
+  const struct CMUnitTest tests[] = {
+      cmocka_unit_test(test_mpm_iface_scene_check),
+      cmocka_unit_test(test_mpm_iface_mode_one),
+      cmocka_unit_test(test_mpm_iface_mode_two),
+      cmocka_unit_test(test_mpm_iface_threads),
+  };
+  return cmocka_run_group_tests(tests, NULL, NULL);
+}
