@@ -537,6 +537,13 @@ double mpm_sim_grip_u(const mpm_sim *s, int ahead);
 /* Particle i's kinetic and elastic energy (plane-stress compliance of its material). */
 void mpm_particle_energy(const mpm_sim *s, size_t i, double *ke, double *se);
 void mpm_sim_energy(const mpm_sim *s, mpm_energy *e);
+/* decohesion.path = interface (mpm_iface.c), for pictures: the number of places on the
+ * line (0 without an interface), and place i's piece of the line on the bar, from
+ * (xy[0], xy[1]) to (xy[2], xy[3]) in reference coordinates, with the lambda and state
+ * (0 stuck, 1 softening, 2 open) of the segment that holds it; 0 when place i is off
+ * the bar. */
+int mpm_iface_pieces(const mpm_sim *s);
+int mpm_iface_piece(const mpm_sim *s, int i, double xy[4], double *lam, int *state);
 /* Called at the top of each step: picks the step's thread count (s->nthreads). */
 void mpm_threads_tick(mpm_sim *s);
 

@@ -60,6 +60,7 @@ void mpm_iface_free(mpm_iface *f)
   if (!f)
     return;
   free(f->seg);
+  free(f->owner);
   double *d[] = {f->An, f->jx, f->jy, f->A, f->snf, f->stf, f->lam, f->sn, f->st, f->sv,
                  f->wn, f->Tn, f->Tt, f->md, f->ns};
   for (size_t i = 0; i < sizeof d / sizeof *d; i++)
@@ -108,6 +109,8 @@ mpm_iface *mpm_iface_alloc(mpm_sim *s, double lx, double ly)
   f->ty = sa;
   /* the line on the bar: y from 0 to H (mpm_scene_check: sin a > 0 and it stays in x) */
   const double s0 = -ly / sa, s1 = (sc->H - ly) / sa;
+  f->s0 = s0;
+  f->s1 = s1;
   f->sw = MPM_IFACE_SEG * h;
   f->smin = s0 - 4.0 * h;
   f->nseg = (int)ceil((s1 - s0 + 8.0 * h) / f->sw) + 1;
@@ -123,9 +126,10 @@ mpm_iface *mpm_iface_alloc(mpm_sim *s, double lx, double ly)
   for (size_t i = 0; i < sizeof segs / sizeof *segs; i++)
     ok &= (*segs[i] = calloc(ns, sizeof(double))) != NULL;
   f->state = calloc(ns, 1);
+  f->owner = malloc(ns * sizeof(int));
   f->stuck = calloc(ns, 1);
   double *lf = calloc(ns, sizeof(double));
-  if (!ok || !f->state || !f->stuck || !lf) {
+  if (!ok || !f->state || !f->stuck || !f->owner || !lf) {
     free(lf);
     mpm_iface_free(f);
     return NULL;
@@ -171,6 +175,8 @@ mpm_iface *mpm_iface_alloc(mpm_sim *s, double lx, double ly)
    * slivers left, the uGIMP tails beyond the bar, hold no line */
   const double amin = 0.25 * f->sw;
   for (int b = 0; b < f->nseg; b++)
+    f->owner[b] = b;
+  for (int b = 0; b < f->nseg; b++)
     if (f->A[b] > 0.0 && f->A[b] < amin) {
       const int lo = b > 0 ? b - 1 : b + 1, hi = b + 1 < f->nseg ? b + 1 : b - 1;
       const int to = f->A[lo] > f->A[hi] ? lo : hi;
@@ -181,6 +187,7 @@ mpm_iface *mpm_iface_alloc(mpm_sim *s, double lx, double ly)
           f->seg[n] = to;
       f->A[to] += f->A[b];
       f->A[b] = 0.0;
+      f->owner[b] = to;
     }
   flaw_lengths(s, f, s0, s1, lf);
   for (int b = 0; b < f->nseg; b++) {
@@ -408,4 +415,25 @@ void mpm_iface_musl(mpm_sim *s)
     a->fy = b->fy = vy;
   }
   s->led.s_B += B;
+}
+
+int mpm_iface_pieces(const mpm_sim *s)
+{
+  return s->g && s->g->fld && s->g->fld->ifc ? s->g->fld->ifc->nseg : 0;
+}
+
+int mpm_iface_piece(const mpm_sim *s, int i, double xy[4], double *lam, int *state)
+{
+  const mpm_iface *f = s->g->fld->ifc;
+  const double a = fmax(f->smin + i * f->sw, f->s0), b = fmin(f->smin + (i + 1) * f->sw, f->s1);
+  if (!(b > a))
+    return 0;
+  xy[0] = f->lx + a * f->tx;
+  xy[1] = f->ly + a * f->ty;
+  xy[2] = f->lx + b * f->tx;
+  xy[3] = f->ly + b * f->ty;
+  const int o = f->owner[i];
+  *lam = f->lam[o];
+  *state = f->state[o];
+  return 1;
 }

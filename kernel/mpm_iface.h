@@ -20,6 +20,8 @@ struct mpm_iface {
   double lx, ly;           /* the line's point: the flaw particle's reference centre    */
   double nx, ny, tx, ty;   /* its normal (sin a, -cos a) and direction (cos a, sin a)    */
   double smin, sw;         /* the first segment's start along the line, and the length  */
+  double s0, s1;           /* the line on the bar: from y = 0 to y = H, along it         */
+  int *owner;              /* per segment's place on the line: the segment it joined     */
   int nseg;
   int *seg;                /* per node: its segment                                     */
   double *An;              /* per node: the line's length weighted by the node's uGIMP N */

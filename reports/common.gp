@@ -19,4 +19,6 @@ set grid lc rgb '#dddddd'
 set palette defined (0 '#1f3f8f', 0.005 '#5fb8e8', 0.1 '#6cc46c', 0.3 '#f2e05a', 0.7 '#e8752a', 1 '#8b0000')
 exists_file(f) = int(system(sprintf("[ -r '%s' ] && echo 1 || echo 0", f)))
 snap(id, d) = sprintf('data/%s/snap-d%.3f.csv', id, d)
+# decohesion.path = interface: the line's segments with their lambda
+snapl(id, d) = sprintf('data/%s/snap-d%.3f-line.csv', id, d)
 load_csv(id) = sprintf('data/%s/load.csv', id)

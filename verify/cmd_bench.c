@@ -52,6 +52,9 @@ static const bench_case cases[] = {
   /* fig7.ini's method since sessions 8 and 9: the lead's zone, the band held to its line */
   {"fig7", 2.0, 4, 4000, "gimp-zone-line", "grid.shape=gimp grid.fields=two decohesion.Le=zone decohesion.path=line", 0,
    0},
+  /* the crack as a cohesive interface (docs/interface.md): every particle elastic, the
+   * split nodes' two fields from the first step, the law on the line's segments */
+  {"fig7", 2.0, 4, 4000, "interface", "decohesion.path=interface", 0, 0},
   /* fig8's file (uGIMP, two fields, Rayleigh damping from the cut), after the cut: the
    * viscous stress in the gather and the scatter, with the mass half about each part's
    * held end (the file's since session 13: a serial particle pass) or about each node's
@@ -140,7 +143,8 @@ static void usage(FILE *f)
     "(fig6.ini's); Fig. 6 and Fig. 7 at h = 2 with uGIMP; Fig. 7 at h = 2 with\n"
     "uGIMP and two velocity fields, from a band already cut, and through the softening\n"
     "with Le measured per row and as its file runs it (Le over the lead's zone, the band\n"
-    "held to its line); Fig. 8 at h = 2 as its file runs it (uGIMP, two fields, Rayleigh\n"
+    "held to its line) and with the crack as a cohesive interface (decohesion.path =\n"
+    "interface); Fig. 8 at h = 2 as its file runs it (uGIMP, two fields, Rayleigh\n"
     "damping) from a band already cut, damped about each part's held end (the file's) or\n"
     "about each node's drift, and undamped (the case id ends in the method).\n"
     "Each case runs --repeat times from the same start and the fastest run is reported\n"

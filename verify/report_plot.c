@@ -46,7 +46,7 @@ static void copy_case(const rep_ctx *r, const rep_case *c)
   for (const struct dirent *e = d ? readdir(d) : NULL; e; e = readdir(d)) {
     const char *n = e->d_name;
     const size_t l = strlen(n);
-    const int pic_only = !strncmp(n, "snap-", 5) || !strncmp(n, "final.", 6); /* only pictures draw these */
+    const int pic_only = !strncmp(n, "snap-", 5) || !strncmp(n, "final", 5); /* only pictures draw these */
     const int keep = !strcmp(n + l - 4, ".csv") || !strcmp(n + l - 5, ".json") || !strcmp(n, "scene.ini");
     if (l > 5 && keep && (!pic_only || (c->role & REP_PIC))) {
       char a[2 * REP_PATH + 64], b[2 * REP_PATH + 256];
@@ -265,6 +265,12 @@ static double max_lambda(const rep_case *c, const double *ds, int nd)
     double *v[1];
     const long n = ver_csv_read(p, col, 1, v);
     for (long k = 0; k < n; k++)
+      m = fmax(m, v[0][k]);
+    free(v[0]);
+    /* decohesion.path = interface: the line's segments carry lambda */
+    snprintf(p, sizeof p, "%s/snap-d%.3f-line.csv", c->dir, ds[i]);
+    const long nl = ver_csv_read(p, col, 1, v);
+    for (long k = 0; k < nl; k++)
       m = fmax(m, v[0][k]);
     free(v[0]);
   }

@@ -134,6 +134,27 @@ static void snapshot_stats(const rep_case *c, double delta, double lam_min, doub
     free(v[j]);
 }
 
+/* decohesion.path = interface: the smallest and largest lambda of the line's segments in
+ * case c's snapshot at delta; 0 when it has no line file. */
+static int line_lambda(const rep_case *c, double delta, double *lo, double *hi)
+{
+  if (!c || !c->have)
+    return 0;
+  char p[REP_PATH + 48];
+  snprintf(p, sizeof p, "%s/snap-d%.3f-line.csv", c->dir, delta);
+  static const char *const col[1] = {"lambda"};
+  double *v[1];
+  const long n = ver_csv_read(p, col, 1, v);
+  *lo = INFINITY;
+  *hi = -INFINITY;
+  for (long k = 0; k < n; k++) {
+    *lo = fmin(*lo, v[0][k]);
+    *hi = fmax(*hi, v[0][k]);
+  }
+  free(v[0]);
+  return n > 0;
+}
+
 /* The pictures' cases and what their snapshots show. */
 static void pic_vars(report *R)
 {
@@ -161,6 +182,16 @@ static void pic_vars(report *R)
       snapshot_stats(c, 0.28, 0.01, &band, &uy, &ml);
       num(R, key, "band028", band);
       num(R, key, "lam028", ml);
+      /* what the picture at 0.28 shows: a band of particles, or the interface's line */
+      double lo, hi;
+      char s[300];
+      if (line_lambda(c, 0.28, &lo, &hi))
+        snprintf(s, sizeof s, "no particle softens (decohesion.path = interface): the line's segments carry lambda "
+                 "%.3g to %.3g", lo, hi);
+      else
+        snprintf(s, sizeof s, "the particles with lambda > 0.01 form a band %.3g cells wide (their area over the crack "
+                 "length); the largest lambda is %.3g", band, ml);
+      word(R, key, "front028", s);
     }
   }
 }

@@ -49,6 +49,28 @@ static int commit_file(FILE *f, const char *tmp)
   return ver_io_commit(f, tmp);
 }
 
+/* decohesion.path = interface: the line's pieces with their segment's lambda and state,
+ * <stem>-line.csv (docs/output-formats.md); nothing for the other paths. */
+static int write_line(const mpm_sim *s, const char *dir, const char *stem)
+{
+  const int n = mpm_iface_pieces(s);
+  if (n == 0)
+    return 0;
+  char tmp[1100], name[128];
+  snprintf(name, sizeof name, "%s-line.csv", stem);
+  FILE *f = open_tmp(dir, name, tmp, sizeof tmp);
+  if (!f)
+    return -1;
+  fprintf(f, "# delam line.csv schema %d\nxa,ya,xb,yb,lambda,state\n", VER_SCHEMA_LINE);
+  for (int i = 0; i < n; i++) {
+    double xy[4], lam;
+    int st;
+    if (mpm_iface_piece(s, i, xy, &lam, &st))
+      fprintf(f, "%.9g,%.9g,%.9g,%.9g,%.9g,%d\n", xy[0], xy[1], xy[2], xy[3], lam, st);
+  }
+  return commit_file(f, tmp);
+}
+
 static int write_snapshot(const mpm_sim *s, const char *dir, const char *stem)
 {
   const mpm_particles *p = s->p;
@@ -91,7 +113,9 @@ static int write_snapshot(const mpm_sim *s, const char *dir, const char *stem)
       if (p->mat[k] != MPM_MAT_HEAD)
         fprintf(f, "%.9g\n", arrs[q][k]);
   }
-  return commit_file(f, tmp);
+  if (commit_file(f, tmp))
+    return -1;
+  return write_line(s, dir, stem);
 }
 
 typedef struct {
@@ -159,7 +183,7 @@ static int clear_outdir(const char *dir, char *err, size_t errlen)
   DIR *d = opendir(dir);
   for (struct dirent *e = d ? readdir(d) : NULL; e; e = readdir(d)) {
     const char *n = e->d_name;
-    if (!strncmp(n, "snap-d", 6) || !strncmp(n, "final.", 6) || !strcmp(n, "summary.json") ||
+    if (!strncmp(n, "snap-d", 6) || !strncmp(n, "final.", 6) || !strcmp(n, "final-line.csv") || !strcmp(n, "summary.json") ||
         !strcmp(n, "load.csv") || !strcmp(n, "energy.csv") || !strcmp(n, "scene.ini")) {
       char old[1400];
       snprintf(old, sizeof old, "%s/%s", dir, n);

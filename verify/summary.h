@@ -52,6 +52,7 @@ typedef struct {
 #define VER_SCHEMA_ENERGY 3 /* 2: the ledger columns L_bc, L_flip, L_scheme, W_head; 3: L_contact,
                                taken out of L_scheme (two velocity fields) */
 #define VER_SCHEMA_PARTICLES 1
+#define VER_SCHEMA_LINE 1 /* <snapshot>-line.csv: decohesion.path = interface */
 #define VER_SCHEMA_VERIFY 2     /* verify.json and verify.csv                       */
 #define VER_SCHEMA_CHECK 1      /* check.json                                        */
 /* scene.ini: VER_SCHEMA_SCENE in scene.h */
