@@ -11,6 +11,8 @@ do for [h in "8 4 2 1"] {
 }
 # the paper's method beside the scene file's, where they differ (same grid)
 if (strlen(paper_fig7) > 0) { ids = ids.' '.paper_fig7; labs = labs.' "h = 2, paper method"' }
+# and the crack as a cohesive interface (decohesion.path = interface, same grid)
+if (strlen(iface_fig7) > 0) { ids = ids.' '.iface_fig7; labs = labs.' "h = 2, interface"' }
 # the scene file's method, without its grid (the key gives h; every curve is 1 ppc)
 meth = pic_fig7_method; cut = strstrt(meth, ", h ="); if (cut > 1) { meth = meth[1:cut-1] }
 set title sprintf("Fig. 7(d): fig7.ini, Mode I, {/Symbol a} = 60, 1 ppc (analytic g = %.3g)\nscene file: %s", g_fig7, meth)

@@ -28,6 +28,7 @@ enum {
   REP_SEP = 16,     /* separation threshold                                   */
   REP_SCHEME = 32,  /* usl vs musl                                            */
   REP_PAPER = 64,   /* a paper scene with the paper's method (bilinear, one field, Le = cell) */
+  REP_IFACE = 128,  /* an inclined paper scene with decohesion.path = interface (docs/interface.md) */
 };
 
 /* Outcome of a time-step sweep point. */

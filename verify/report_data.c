@@ -111,6 +111,11 @@ void ver_report_method(const rep_case *c, char *buf, size_t len)
   char path[64] = "";
   if (!strcmp(c->path, "line"))
     snprintf(path, sizeof path, ", on its line (reach %g h)", c->path_reach);
+  if (!strcmp(c->path, "interface")) { /* no particle softens: Le and the shear rule are unused */
+    snprintf(buf, len, "%s, %s, cohesive interface between two fields%s", !strcmp(c->scheme, "musl") ? "MUSL" : "USL",
+             !strcmp(c->shape, "gimp") ? "uGIMP" : "bilinear", damp);
+    return;
+  }
   snprintf(buf, len, "%s, %s, %s field%s, Le = %s%s%s%s", !strcmp(c->scheme, "musl") ? "MUSL" : "USL",
            !strcmp(c->shape, "gimp") ? "uGIMP" : "bilinear", c->fields[0] ? c->fields : "one",
            !strcmp(c->fields, "two") ? "s" : "", c->le[0] ? c->le : "cell", path, damp,

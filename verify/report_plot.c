@@ -112,17 +112,17 @@ static void write_fig3(const rep_ctx *r, FILE *vars)
     }
 }
 
-/* The paper-method sweep of an inclined scene (report_cases.c, tag 1): sweep-<scene>-paper.dat,
- * the columns of the other sweep tables. */
-static void write_paper_sweep(const rep_ctx *r, const char *scene)
+/* The paper-method or interface sweep of an inclined scene (report_cases.c, tag 1, role
+ * REP_PAPER or REP_IFACE): sweep-<scene>-<what>.dat, the columns of the other sweep tables. */
+static void write_method_sweep(const rep_ctx *r, const char *scene, int role, const char *what)
 {
   char name[64];
-  snprintf(name, sizeof name, "sweep-%s-paper.dat", scene);
+  snprintf(name, sizeof name, "sweep-%s-%s.dat", scene, what);
   FILE *f = NULL;
   for (double h = 8; h >= 0.5; h /= 2)
     for (int i = 0; i < r->n; i++) {
       const rep_case *c = &r->c[i];
-      if (!(c->role & REP_PAPER) || c->tag != 1 || strcmp(c->scene, scene) || c->h != h || !c->have ||
+      if (!(c->role & role) || c->tag != 1 || strcmp(c->scene, scene) || c->h != h || !c->have ||
           !isfinite(c->curve_err))
         continue;
       if (!f && !(f = open_data(r, name)))
@@ -138,8 +138,10 @@ static void write_paper_sweep(const rep_ctx *r, const char *scene)
 
 static void write_sweeps(const rep_ctx *r, rep_fit *fits, FILE *vars)
 {
-  for (int s = 1; s < REP_NSWEEP; s++)
-    write_paper_sweep(r, rep_sweep_scene[s]);
+  for (int s = 1; s < REP_NSWEEP; s++) {
+    write_method_sweep(r, rep_sweep_scene[s], REP_PAPER, "paper");
+    write_method_sweep(r, rep_sweep_scene[s], REP_IFACE, "iface");
+  }
   for (int s = 0; s < REP_NSWEEP; s++) {
     double hh[8], ec[8], ed[8];
     for (int ppc = 1; ppc <= 9; ppc += ppc == 1 ? 3 : 5) {
@@ -312,6 +314,8 @@ void ver_report_write_data(report *R)
   write_vars_case(vars, "pic_fig8", ver_report_first(r, REP_PIC, "fig8"));
   write_vars_case(vars, "paper_fig7", ver_report_first(r, REP_PAPER, "fig7"));
   write_vars_case(vars, "paper_fig8", ver_report_first(r, REP_PAPER, "fig8"));
+  write_vars_case(vars, "iface_fig7", ver_report_first(r, REP_IFACE, "fig7"));
+  write_vars_case(vars, "iface_fig8", ver_report_first(r, REP_IFACE, "fig8"));
   static const double f7a[4] = {0.24, 0.25, 0.26, 0.28};
   fprintf(vars, "lam_max_fig7a = %.6g\n", max_lambda(ver_report_first(r, REP_PIC, "fig7"), f7a, 4));
   fprintf(vars, "dt_crit8 = %.6g\nhave_musl = %d\n", ver_report_dt_crit(r, "fig6", 8), r->have_musl);

@@ -165,6 +165,10 @@ static void pic_vars(report *R)
     snprintf(key, sizeof key, "paper_%s", sc[i]);
     const rep_case *pc = ver_report_first(r, REP_PAPER, sc[i]);
     case_vars(R, key, pc ? pc : ver_report_first(r, REP_PIC, sc[i]));
+    if (i > 0) { /* the interface beside the scene file's method (report_cases.c) */
+      snprintf(key, sizeof key, "iface_%s", sc[i]);
+      case_vars(R, key, ver_report_first(r, REP_IFACE, sc[i]));
+    }
     snprintf(key, sizeof key, "pic_%s", sc[i]);
     const rep_case *c = ver_report_first(r, REP_PIC, sc[i]);
     case_vars(R, key, c);
