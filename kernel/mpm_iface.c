@@ -17,10 +17,14 @@
  *    tt^2 / stf^2) >= 1 (eq. 8 at lambda = 0), both fields at its nodes take their centre-of-mass velocity (the
  *    impulse J = m1 (vc - v1) on field 1, -J on field 2) and, under MUSL, share v':
  *    the bar is one body there;
- *  - SOFT: the stick impulse's traction J / (dt An) is held to the failure surface
- *    se <= 1 - lambda (eq. 8, q = 1) by scaling it back toward 0 (tension and shear;
- *    compression is never capped), node by node.  A segment whose mean traction is inside
- *    the surface sticks whole this step.  lambda grows by the traction's work on the
+ *  - SOFT: the segment's mean stick traction, sum J / (dt A), is held to the failure
+ *    surface se <= 1 - lambda (eq. 8, q = 1): every node's impulse is scaled by the same
+ *    factor (tension and shear; compression is never capped), and a segment whose mean
+ *    traction is inside the surface sticks whole this step.  (Holding each node's own
+ *    traction J / (dt An) to the surface released the bar at 1 ppc: the stick traction
+ *    scatters from node to node there, every node above the surface was cut at once, and
+ *    the load fell from the peak to a quarter within half a wave transit: fig7 h 4,
+ *    k_soft -5346 against the analytic -563; docs/interface.md.)  lambda grows by the traction's work on the
  *    opening, dW per unit area (the impulse times the fields' relative velocity after
  *    it, summed over the segment's nodes): dlambda = dW / (U0 (1 - lambda)), Model 1's
  *    power s . d up = U0 se dlambda with se = 1 - lambda on the surface, so a segment
@@ -61,7 +65,7 @@ void mpm_iface_free(mpm_iface *f)
     return;
   free(f->seg);
   free(f->owner);
-  double *d[] = {f->An, f->jx, f->jy, f->A, f->snf, f->stf, f->lam, f->sn, f->st, f->sv,
+  double *d[] = {f->r, f->An, f->jx, f->jy, f->A, f->snf, f->stf, f->lam, f->sn, f->st, f->sv,
                  f->wn, f->Tn, f->Tt, f->md, f->ns};
   for (size_t i = 0; i < sizeof d / sizeof *d; i++)
     free(d[i]);
@@ -121,7 +125,7 @@ mpm_iface *mpm_iface_alloc(mpm_sim *s, double lx, double ly)
     *nodal[i] = calloc(nn, sizeof(double));
   f->md = calloc(4 * nn, sizeof(double));
   f->ns = calloc(3 * nn, sizeof(double));
-  double **segs[] = {&f->A, &f->snf, &f->stf, &f->lam, &f->sn, &f->st, &f->sv, &f->wn, &f->Tn, &f->Tt};
+  double **segs[] = {&f->r, &f->A, &f->snf, &f->stf, &f->lam, &f->sn, &f->st, &f->sv, &f->wn, &f->Tn, &f->Tt};
   int ok = f->seg && f->An && f->jx && f->jy && f->md && f->ns;
   for (size_t i = 0; i < sizeof segs / sizeof *segs; i++)
     ok &= (*segs[i] = calloc(ns, sizeof(double))) != NULL;
@@ -298,7 +302,7 @@ void mpm_iface_grid(mpm_sim *s, double bfac)
   mpm_ledger *L = &s->led;
   const size_t nn = (size_t)g->nnx * (size_t)g->nny;
   const double dt = s->sc.dt, mmin = MPM_MASS_EPS * s->mat[MPM_MAT_BAR].mp;
-  const double nx = f->nx, ny = f->ny, tx = f->tx, ty = f->ty, tiny = 1e-9 * s->sc.h;
+  const double nx = f->nx, ny = f->ny, tx = f->tx, ty = f->ty;
   onset(s, f);
   /* the stick impulses J = m1 (vc - v1), vc the pair's centre-of-mass velocity (p holds
    * v^L after the node update), and their sums per segment */
@@ -319,10 +323,13 @@ void mpm_iface_grid(mpm_sim *s, double bfac)
   }
   /* a softening segment sticks whole this step when its mean traction is inside the
    * surface se <= 1 - lambda */
-  for (int b = 0; b < f->nseg; b++)
-    f->stuck[b] = f->state[b] == MPM_SEG_STUCK ||
-                  (f->state[b] == MPM_SEG_SOFT &&
-                   eff(f->Tn[b] / (dt * f->A[b]), f->Tt[b] / (dt * f->A[b]), f->snf[b], f->stf[b]) <= 1.0 - f->lam[b]);
+  for (int b = 0; b < f->nseg; b++) {
+    const double se = f->state[b] == MPM_SEG_SOFT
+                          ? eff(f->Tn[b] / (dt * f->A[b]), f->Tt[b] / (dt * f->A[b]), f->snf[b], f->stf[b])
+                          : 0.0;
+    f->stuck[b] = f->state[b] == MPM_SEG_STUCK || (f->state[b] == MPM_SEG_SOFT && se <= 1.0 - f->lam[b]);
+    f->r[b] = f->stuck[b] ? 1.0 : (1.0 - f->lam[b]) / se;
+  }
   double work = 0.0;
   for (size_t k = 0; k < nn; k++) {
     if (!fl->split[k] || f->state[f->seg[k]] == MPM_SEG_OPEN)
@@ -334,20 +341,11 @@ void mpm_iface_grid(mpm_sim *s, double bfac)
       continue;
     const int q = f->seg[k];
     double jn = f->jx[k] * nx + f->jy[k] * ny, jt = f->jx[k] * tx + f->jy[k] * ty;
-    if (!f->stuck[q]) { /* SOFT: the node's traction held to the surface */
-      const double c = 1.0 - f->lam[q];
-      if (f->An[k] > tiny) {
-        const double tn = jn / (dt * f->An[k]), se = eff(tn, jt / (dt * f->An[k]), f->snf[q], f->stf[q]);
-        if (se > c) {
-          const double r = c / se;
-          if (tn > 0.0)
-            jn *= r;
-          jt *= r;
-        }
-      } else { /* no line in the node's support: compression only */
-        jn = fmin(jn, 0.0);
-        jt = 0.0;
-      }
+    if (!f->stuck[q]) { /* SOFT: the segment's mean traction held to the surface, every
+                         * node's impulse scaled alike (tension and shear) */
+      if (jn > 0.0)
+        jn *= f->r[q];
+      jt *= f->r[q];
     }
     const double ex = jn * nx + jt * tx, ey = jn * ny + jt * ty; /* the impulse on field 1 */
     const double ca[2] = {ex / a->m, ey / a->m}, cb[2] = {-ex / b->m, -ey / b->m};

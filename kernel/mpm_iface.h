@@ -31,6 +31,7 @@ struct mpm_iface {
   double *lam;             /* per segment: lambda (eq. 10's, here of the segment)        */
   uint8_t *state;          /* per segment: MPM_SEG_*                                     */
   uint8_t *stuck;          /* per segment: stuck this step (MUSL shares v' there)        */
+  double *r;               /* per segment: this step's scale of the stick impulses (1 stuck) */
   double *sn, *st, *sv;    /* per segment (scratch): sum An tn, An tt, An at the nodes    */
   double *wn;              /* per segment (scratch): the traction's work this step      */
   double *Tn, *Tt;         /* per segment (scratch): the stick impulses' sums            */
