@@ -43,7 +43,7 @@ typedef struct {
 
 /* The overrides ("section.key=value") that turn any scene file's method into the
  * paper's (scene_bar.c). */
-#define VER_PAPER_NSETS 12
+#define VER_PAPER_NSETS 13
 extern const char *const ver_paper_sets[VER_PAPER_NSETS];
 
 /* Reads and validates a scene file.  Returns 0, or 2 with one line in err. */

@@ -69,7 +69,7 @@ check opt-set-junk "command line: material.E: '10x' is not a number" "$fig6" --s
 check opt-set-empty "command line: material.E: empty value" "$fig6" --set material.E=
 check opt-set-damping-from "command line: time.damping_from: 'later' is not allowed (start" "$scenes/fig8.ini" --set time.damping_from=later
 check opt-set-imp-size "command line: imperfection.size: 'big' is not allowed (particle" "$scenes/fig7.ini" --set imperfection.size=big
-check opt-set-damping-limited "time.damping: 1.0472 needs grid.node_mass = lumped" "$scenes/fig8.ini" --set grid.shape=linear --set time.scheme=usl --set grid.node_mass=limited --set time.damping_beta=0
+check opt-set-damping-limited "time.damping: 1.0472 needs grid.node_mass = lumped" "$scenes/fig8.ini" --set decohesion.path=line --set grid.shape=linear --set time.scheme=usl --set grid.node_mass=limited --set time.damping_beta=0
 check opt-set-beta-usl "time.damping_beta: 0.0625 needs time.scheme = musl" "$scenes/fig8.ini" --set time.scheme=usl
 check opt-set-newline "a control character" "$fig6" --set "material.E=1
 2"
