@@ -4,11 +4,12 @@ load gpdir.'/common.gp'
 set multiplot layout 1,2 title "Update scheme: USL (paper) against modified USL, h = 4, 1 ppc"
 labs = '"USL" "MUSL"'  # fig8: USL without the file's damping_beta (it needs MUSL)
 set title "fig7, Mode I, {/Symbol a} = 60"
-ids = id_fig7_h4_ppc1_u1_schemeusl.' '.id_fig7_h4_ppc1_u1_schememusl
+ids = scheme_fig7_usl.' '.scheme_fig7_musl
 sc = 'fig7'; xmax = 1.0
 load gpdir.'/loadcurves.gp'
-set title "fig8, Mode II, {/Symbol a} = 60"
-ids = id_fig8_h4_ppc1_u1_schemeusl_damping_beta0.' '.id_fig8_h4_ppc1_u1_schememusl
+# fig8: where its file runs the interface (MUSL only), the band method's pair
+set title "fig8, Mode II, {/Symbol a} = 60".(strstrt(scheme_fig8_usl, 'pathline') > 0 ? ", band method" : "")
+ids = scheme_fig8_usl.' '.scheme_fig8_musl
 sc = 'fig8'; xmax = 1.0
 load gpdir.'/loadcurves.gp'
 unset multiplot

@@ -329,6 +329,12 @@ void ver_report_write_data(report *R)
         fprintf(vars, "%s = \"%s\"\n", key, k >= 0 && r->c[k].have ? r->c[k].id : "");
         write_note(vars, key, k >= 0 ? &r->c[k] : NULL);
       }
+  /* the scheme pair of each inclined picture scene, whatever overrides made its id */
+  for (int i = 0; i < r->n; i++) {
+    const rep_case *c = &r->c[i];
+    if ((c->role & REP_SCHEME) && (!strcmp(c->scene, "fig7") || !strcmp(c->scene, "fig8")))
+      fprintf(vars, "scheme_%s_%s = \"%s\"\n", c->scene, c->tag == 1 ? "musl" : "usl", c->have ? c->id : "");
+  }
   for (int i = 0; i < r->n; i++) {
     const rep_case *c = &r->c[i];
     if (c->role & (REP_SNAP | REP_SEP | REP_SCHEME)) {

@@ -165,9 +165,23 @@ static void pic_vars(report *R)
     snprintf(key, sizeof key, "paper_%s", sc[i]);
     const rep_case *pc = ver_report_first(r, REP_PAPER, sc[i]);
     case_vars(R, key, pc ? pc : ver_report_first(r, REP_PIC, sc[i]));
-    if (i > 0) { /* the interface beside the scene file's method (report_cases.c) */
+    if (i > 0) { /* the interface beside the scene file's method (report_cases.c), or the file's own */
       snprintf(key, sizeof key, "iface_%s", sc[i]);
-      case_vars(R, key, ver_report_first(r, REP_IFACE, sc[i]));
+      const rep_case *ic = ver_report_first(r, REP_IFACE, sc[i]), *own = ver_report_first(r, REP_PIC, sc[i]);
+      char s[600], m[192] = "";
+      if (ic && ic->have) {
+        ver_report_method(ic, m, sizeof m);
+        snprintf(s, sizeof s, "With the crack as a cohesive interface (%s, %s; docs/interface.md, the scene file "
+                 "otherwise as written): peak %.4g (%+.1f %% against the analytic %.4g), softening slope %.4g, "
+                 "dissipation %.4g (%+.1f %% against the analytic).", ic->id, m, ic->peak_P,
+                 100.0 * (ic->peak_P / ic->bar.Pmax - 1.0), ic->bar.Pmax, ic->k_soft, ic->D_final, 100.0 * ic->diss_err);
+      } else if (own && !strcmp(own->path, "interface")) {
+        snprintf(s, sizeof s, "The scene file's own method is the cohesive interface (docs/interface.md): its curves "
+                 "above are the interface's.");
+      } else {
+        snprintf(s, sizeof s, "The cohesive interface did not run here (the scene file does not take it).");
+      }
+      word(R, key, "para", s);
     }
     snprintf(key, sizeof key, "pic_%s", sc[i]);
     const rep_case *c = ver_report_first(r, REP_PIC, sc[i]);
