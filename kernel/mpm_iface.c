@@ -65,6 +65,7 @@ void mpm_iface_free(mpm_iface *f)
     return;
   free(f->seg);
   free(f->owner);
+  free(f->node);
   double *d[] = {f->r, f->An, f->jx, f->jy, f->A, f->snf, f->stf, f->lam, f->sn, f->st, f->sv,
                  f->wn, f->Tn, f->Tt, f->md, f->ns};
   for (size_t i = 0; i < sizeof d / sizeof *d; i++)
@@ -170,8 +171,16 @@ mpm_iface *mpm_iface_alloc(mpm_sim *s, double lx, double ly)
   fl->split[s->fixy] = 0;
   fl->nsplit = 0;
   for (size_t n = 0; n < nn; n++)
+    fl->nsplit += fl->split[n];
+  /* the split nodes in node order: fixed for the run, so each step walks this list */
+  if (!(f->node = malloc((size_t)(fl->nsplit > 0 ? fl->nsplit : 1) * sizeof(size_t)))) {
+    free(lf);
+    mpm_iface_free(f);
+    return NULL;
+  }
+  for (size_t n = 0; n < nn; n++)
     if (fl->split[n]) {
-      fl->nsplit++;
+      f->node[f->nnode++] = n;
       f->A[f->seg[n]] += f->An[n];
     }
   /* a segment with under a quarter of its length of line joins its larger neighbour,
@@ -242,8 +251,11 @@ static void onset(mpm_sim *s, mpm_iface *f)
   const mpm_grid *g = s->g;
   const mpm_fields *fl = g->fld;
   const mpm_particles *p = s->p;
-  const size_t nn = (size_t)g->nnx * (size_t)g->nny, nny = (size_t)g->nny;
-  memset(f->ns, 0, 3 * nn * sizeof(double));
+  const size_t nny = (size_t)g->nny;
+  for (int i = 0; i < f->nnode; i++) { /* only split nodes are summed into */
+    double *ns = f->ns + 3 * f->node[i];
+    ns[0] = ns[1] = ns[2] = 0.0;
+  }
   double lcx = 0.0, lcy = 0.0;
   mpm_gimp_lc(s, &lcx, &lcy);
   const double nx = f->nx, ny = f->ny, far = MPM_IFACE_REACH * s->sc.h * (fabs(nx) + fabs(ny)) + 2.0 * s->sc.h;
@@ -267,13 +279,15 @@ static void onset(mpm_sim *s, mpm_iface *f)
         f->ns[3 * n[q] + 2] += wv;
       }
   }
-  for (size_t k = 0; k < nn; k++)
-    if (fl->split[k] && f->ns[3 * k + 2] > 0.0) {
+  for (int i = 0; i < f->nnode; i++) {
+    const size_t k = f->node[i];
+    if (f->ns[3 * k + 2] > 0.0) {
       const int b = f->seg[k];
       f->sn[b] += f->An[k] * f->ns[3 * k] / f->ns[3 * k + 2];
       f->st[b] += f->An[k] * f->ns[3 * k + 1] / f->ns[3 * k + 2];
       f->sv[b] += f->An[k];
     }
+  }
   for (int b = 0; b < f->nseg; b++)
     if (f->state[b] == MPM_SEG_STUCK && f->sv[b] > 0.0 &&
         eff(f->sn[b] / f->sv[b], f->st[b] / f->sv[b], f->snf[b], f->stf[b]) >= 1.0)
@@ -300,7 +314,6 @@ void mpm_iface_grid(mpm_sim *s, double bfac)
   mpm_fields *fl = g->fld;
   mpm_iface *f = fl->ifc;
   mpm_ledger *L = &s->led;
-  const size_t nn = (size_t)g->nnx * (size_t)g->nny;
   const double dt = s->sc.dt, mmin = MPM_MASS_EPS * s->mat[MPM_MAT_BAR].mp;
   const double nx = f->nx, ny = f->ny, tx = f->tx, ty = f->ty;
   onset(s, f);
@@ -308,9 +321,10 @@ void mpm_iface_grid(mpm_sim *s, double bfac)
    * v^L after the node update), and their sums per segment */
   for (int b = 0; b < f->nseg; b++)
     f->Tn[b] = f->Tt[b] = f->wn[b] = 0.0;
-  for (size_t k = 0; k < nn; k++) {
+  for (int i = 0; i < f->nnode; i++) {
+    const size_t k = f->node[i];
     f->jx[k] = f->jy[k] = 0.0;
-    if (!fl->split[k] || f->state[f->seg[k]] == MPM_SEG_OPEN)
+    if (f->state[f->seg[k]] == MPM_SEG_OPEN)
       continue;
     const mpm_node *a = &g->nd[k], *b = &fl->nd2[k];
     if (!(a->m > mmin) || !(b->m > mmin))
@@ -331,8 +345,9 @@ void mpm_iface_grid(mpm_sim *s, double bfac)
     f->r[b] = f->stuck[b] ? 1.0 : (1.0 - f->lam[b]) / se;
   }
   double work = 0.0;
-  for (size_t k = 0; k < nn; k++) {
-    if (!fl->split[k] || f->state[f->seg[k]] == MPM_SEG_OPEN)
+  for (int i = 0; i < f->nnode; i++) {
+    const size_t k = f->node[i];
+    if (f->state[f->seg[k]] == MPM_SEG_OPEN)
       continue;
     mpm_node *a = &g->nd[k], *b = &fl->nd2[k];
     double *md = f->md + 4 * k;
@@ -395,11 +410,11 @@ void mpm_iface_musl(mpm_sim *s)
   mpm_grid *g = s->g;
   mpm_fields *fl = g->fld;
   const mpm_iface *f = fl->ifc;
-  const size_t nn = (size_t)g->nnx * (size_t)g->nny;
   const double mmin = MPM_MASS_EPS * s->mat[MPM_MAT_BAR].mp;
   double B = 0.0;
-  for (size_t k = 0; k < nn; k++) {
-    if (!fl->split[k] || !f->stuck[f->seg[k]])
+  for (int i = 0; i < f->nnode; i++) {
+    const size_t k = f->node[i];
+    if (!f->stuck[f->seg[k]])
       continue;
     mpm_node *a = &g->nd[k], *b = &fl->nd2[k];
     if (!(a->m > mmin) || !(b->m > mmin))

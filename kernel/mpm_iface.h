@@ -23,6 +23,8 @@ struct mpm_iface {
   double s0, s1;           /* the line on the bar: from y = 0 to y = H, along it         */
   int *owner;              /* per segment's place on the line: the segment it joined     */
   int nseg;
+  int nnode;               /* split nodes (fixed for the run)                           */
+  size_t *node;            /* their indices, in node order: what every step walks       */
   int *seg;                /* per node: its segment                                     */
   double *An;              /* per node: the line's length weighted by the node's uGIMP N */
   double *jx, *jy;         /* per node: the impulse that sticks the fields, this step    */

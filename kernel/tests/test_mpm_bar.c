@@ -61,26 +61,6 @@ static mpm_scene fig6_scene(void)
   return sc;
 }
 
-static mpm_sim *make_sim(const mpm_scene *sc, int nthreads)
-{
-  mpm_sim *s = NULL;
-  char err[256] = "";
-  const mpm_status st = mpm_sim_alloc(sc, nthreads, &s, err, sizeof err);
-  if (st != MPM_OK || !s)
-    fail_msg("mpm_sim_alloc: %s: %s", mpm_strerror(st), err);
-  return s;
-}
-
-static void run_steps(mpm_sim *s, long n)
-{
-  char err[256] = "";
-  for (long k = 0; k < n; k++) {
-    const mpm_status st = mpm_sim_step(s, err, sizeof err);
-    if (st != MPM_OK)
-      fail_msg("step %ld: %s: %s", k, mpm_strerror(st), err);
-  }
-}
-
 /* (a) Without boundary conditions the grid forces sum to zero, so the particles' total
  * momentum is that of the start, to rounding (scale: sum m |v|), under a translating,
  * rotating and random velocity field that also shears and stresses the bar. */
@@ -111,7 +91,7 @@ static void momentum_case(int scheme, int shape)
   sc.scheme = scheme;
   sc.shape = shape;
   sc.dt = 0.2 * sqrt(2.0) * mpm_scene_dt_crit(&sc); /* 0.2 h / c, as written for */
-  mpm_sim *s = make_sim(&sc, 1);
+  mpm_sim *s = tu_make_sim(&sc, 1);
   mpm_particles *p = s->p;
   uint64_t seed = 2024 + (uint64_t)scheme;
   const double cx = 8.0, cy = 4.0, om = 0.002; /* slow: a momentum test, not a cell-crossing one */
@@ -126,7 +106,7 @@ static void momentum_case(int scheme, int shape)
     scale += p->m[k] * hypot(p->vx[k], p->vy[k]);
   double smax = 0.0;
   for (int k = 0; k < 200; k++) {
-    run_steps(s, 1);
+    tu_run_steps(s, 1);
     assert_true(s->g->nd[0].m == 0.0);
     double px, py;
     mpm_particles_momentum(s->p, &px, &py);
@@ -178,7 +158,7 @@ static void run_elastic(int scheme, int ppc, int shape, elastic_run *r)
   sc.scheme = scheme;
   sc.shape = shape;
   sc.ppc = ppc;
-  mpm_sim *s = make_sim(&sc, 1);
+  mpm_sim *s = tu_make_sim(&sc, 1);
   mpm_energy e0;
   mpm_sim_energy(s, &e0);
   r->KE0 = e0.KE;
@@ -186,7 +166,7 @@ static void run_elastic(int scheme, int ppc, int shape, elastic_run *r)
   for (int w = 0; w < NWIN; w++) {
     double sg = 0.0, sf = 0.0, sd = 0.0;
     for (long k = 0; k < per; k++) {
-      run_steps(s, 1);
+      tu_run_steps(s, 1);
       sg += s->P_grip;
       sf += s->P_fixed;
       sd += mpm_sim_delta(s);
@@ -266,13 +246,13 @@ static void fig6_decohesion_case(int scheme, int shape, int le_mode)
   sc.end_delta = 0.45;
   sc.scheme = scheme;
   sc.shape = shape;
-  mpm_sim *s = make_sim(&sc, 1);
+  mpm_sim *s = tu_make_sim(&sc, 1);
   mpm_energy e0, e;
   mpm_sim_energy(s, &e0);
   const long nsteps = lround(sc.end_delta / (sc.speed * sc.dt));
   double Pmax = 0.0, Pend = 0.0;
   for (long k = 0; k < nsteps; k++) {
-    run_steps(s, 1);
+    tu_run_steps(s, 1);
     Pmax = fmax(Pmax, s->P_grip);
     if (k >= nsteps - 100)
       Pend += s->P_grip / 100.0; /* averaged over the last 100 steps */
@@ -327,7 +307,7 @@ static double node_mass_case(int node_mass)
   mpm_scene sc = block_scene(1, 8.0);
   sc.dt = 0.025; /* fig6.ini's dt at h 2: c dt / h = 0.41 */
   sc.node_mass = node_mass;
-  mpm_sim *s = make_sim(&sc, 1);
+  mpm_sim *s = tu_make_sim(&sc, 1);
   release_block(s);
   mpm_particles *p = s->p;
   uint64_t seed = 77;
@@ -386,11 +366,11 @@ static void test_mpm_bar_inclined_row_energy(void **state)
   (void)state;
   mpm_scene sc = band_scene();
   sc.end_delta = 0.6;
-  mpm_sim *s = make_sim(&sc, 1);
+  mpm_sim *s = tu_make_sim(&sc, 1);
   const long nsteps = lround(sc.end_delta / (sc.speed * sc.dt));
   double Pmax = 0.0, Pend = 0.0;
   for (long k = 0; k < nsteps; k++) {
-    run_steps(s, 1);
+    tu_run_steps(s, 1);
     Pmax = fmax(Pmax, s->P_grip);
     if (k >= nsteps - 500)
       Pend += s->P_grip / 500.0;
@@ -432,8 +412,8 @@ static void test_mpm_bar_inclined_zone_energy(void **state)
   (void)state;
   mpm_scene sc = a45_scene(9);
   sc.end_delta = 0.5;
-  mpm_sim *s = make_sim(&sc, 1);
-  run_steps(s, lround(sc.end_delta / (sc.speed * sc.dt)));
+  mpm_sim *s = tu_make_sim(&sc, 1);
+  tu_run_steps(s, lround(sc.end_delta / (sc.speed * sc.dt)));
   mpm_energy e;
   mpm_sim_energy(s, &e);
   const double a = sc.alpha_deg * (3.14159265358979323846 / 180.0);
@@ -453,8 +433,8 @@ static void test_mpm_bar_path_line(void **state)
   sc.path = MPM_PATH_LINE;
   sc.path_reach = 1.0;
   sc.end_delta = 0.55;
-  mpm_sim *s = make_sim(&sc, 1);
-  run_steps(s, lround(sc.end_delta / (sc.speed * sc.dt)));
+  mpm_sim *s = tu_make_sim(&sc, 1);
+  tu_run_steps(s, lround(sc.end_delta / (sc.speed * sc.dt)));
   assert_true(s->cut);
   const mpm_particles *p = s->p;
   const double a = sc.alpha_deg * (3.14159265358979323846 / 180.0);
@@ -519,10 +499,10 @@ static void test_mpm_bar_snapback_control(void **state)
   sc.end_delta = 1.0;
   sc.control = MPM_CONTROL_DISSIPATION;
   sc.eta = 4.0;
-  mpm_sim *s = make_sim(&sc, 1);
+  mpm_sim *s = tu_make_sim(&sc, 1);
   double Pmax = 0.0, dpeak = 0.0, dmin = 1e9;
   for (long k = 0; k < 40000 && !s->cut; k++) {
-    run_steps(s, 1);
+    tu_run_steps(s, 1);
     const double d = mpm_sim_delta(s);
     if (s->P_grip > Pmax) {
       Pmax = s->P_grip;
@@ -546,13 +526,13 @@ static void test_mpm_bar_snapback_control(void **state)
  * the bracketed solver run inside the threaded pass). */
 static void threads_case(const mpm_scene *sc, long nsteps, const char *what, long *n_soften, long *n_separate)
 {
-  mpm_sim *a = make_sim(sc, 1), *b = make_sim(sc, 2);
+  mpm_sim *a = tu_make_sim(sc, 1), *b = tu_make_sim(sc, 2);
   assert_int_equal(a->nthreads, 1);
 #ifdef _OPENMP
   assert_int_equal(b->nthreads, 2);
 #endif
-  run_steps(a, nsteps);
-  run_steps(b, nsteps);
+  tu_run_steps(a, nsteps);
+  tu_run_steps(b, nsteps);
   assert_int_equal(a->p->n, b->p->n);
   const size_t nb = a->p->n * sizeof(double);
   if (memcmp(a->p->x, b->p->x, nb) || memcmp(a->p->y, b->p->y, nb))
@@ -614,7 +594,7 @@ static void test_mpm_bar_threads_switch(void **state)
   sc.imp_factor = 0.9;
   sc.end_delta = 0.45;
   sc.speed = 0.004;
-  mpm_sim *a = make_sim(&sc, 1), *b = make_sim(&sc, 2);
+  mpm_sim *a = tu_make_sim(&sc, 1), *b = tu_make_sim(&sc, 2);
   b->thr.automatic = 0;
   char err[256] = "";
   for (long k = 0; k < 1125; k++) {
@@ -722,7 +702,7 @@ static void test_mpm_bar_imperfection_size(void **state)
       sc.imp_y = 17.0;
       sc.imp_size = size;
       sc.ppc = ppc;
-      mpm_sim *s = make_sim(&sc, 1);
+      mpm_sim *s = tu_make_sim(&sc, 1);
       const mpm_particles *p = s->p;
       int n = 0;
       double area = 0.0;
@@ -742,7 +722,7 @@ static void test_mpm_bar_leaves_grid(void **state)
 {
   (void)state;
   const mpm_scene sc = fig6_scene();
-  mpm_sim *s = make_sim(&sc, 1);
+  mpm_sim *s = tu_make_sim(&sc, 1);
   s->p->vx[s->p->n / 2] = 1e6;
   char err[256] = "";
   mpm_status st = MPM_OK;
@@ -752,7 +732,7 @@ static void test_mpm_bar_leaves_grid(void **state)
   assert_non_null(strstr(err, "left the grid"));
   mpm_sim_free(s);
 
-  s = make_sim(&sc, 1);
+  s = tu_make_sim(&sc, 1);
   s->p->y[3] = NAN;
   assert_int_equal(mpm_sim_step(s, err, sizeof err), MPM_ENOTFINITE);
   mpm_sim_free(s);

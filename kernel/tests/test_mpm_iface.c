@@ -73,29 +73,11 @@ static mpm_scene iface_scene(double snf, double stf, double h, int ppc)
   return sc;
 }
 
-static mpm_sim *make_sim(const mpm_scene *sc, int nthreads)
-{
-  mpm_sim *s = NULL;
-  char err[256] = "";
-  const mpm_status st = mpm_sim_alloc(sc, nthreads, &s, err, sizeof err);
-  if (st != MPM_OK || !s)
-    fail_msg("mpm_sim_alloc: %s: %s", mpm_strerror(st), err);
-  return s;
-}
-
-static void step(mpm_sim *s)
-{
-  char err[256] = "";
-  const mpm_status st = mpm_sim_step(s, err, sizeof err);
-  if (st != MPM_OK)
-    fail_msg("step %ld: %s: %s", s->step, mpm_strerror(st), err);
-}
-
 /* Runs to the cut plus `after` of grip travel, and checks every closed form above. */
 static void bar_case(double snf, double stf, const char *mode)
 {
   const mpm_scene sc = iface_scene(snf, stf, 8.0, 4);
-  mpm_sim *s = make_sim(&sc, 1);
+  mpm_sim *s = tu_make_sim(&sc, 1);
   mpm_energy e0, e;
   mpm_sim_energy(s, &e0);
   const double a = sc.alpha_deg * (PI / 180.0), sa = sin(a), ca = cos(a);
@@ -106,7 +88,7 @@ static void bar_case(double snf, double stf, const char *mode)
   double Wcut = NAN;
   const long nmax = lround(sc.end_delta / (sc.speed * sc.dt));
   for (long k = 0; k < nmax; k++) {
-    step(s);
+    tu_run_steps(s, 1);
     const double d = mpm_sim_delta(s), P = s->P_grip;
     peak = fmax(peak, P);
     if (peak < 0.6 * Pmax && P > 0.1 * Pmax && P == peak) {
@@ -171,11 +153,11 @@ static void test_mpm_iface_threads(void **state)
 {
   (void)state;
   mpm_scene sc = iface_scene(1.0, 10.0, 8.0, 4);
-  mpm_sim *a = make_sim(&sc, 1), *b = make_sim(&sc, 2);
+  mpm_sim *a = tu_make_sim(&sc, 1), *b = tu_make_sim(&sc, 2);
   const long nmax = lround(0.45 / (sc.speed * sc.dt));
   for (long k = 0; k < nmax; k++) {
-    step(a);
-    step(b);
+    tu_run_steps(a, 1);
+    tu_run_steps(b, 1);
   }
   assert_true(a->cut); /* the run went through every phase */
   tu_assert_same_bits(a, b, "interface, h 8, 4 ppc");
@@ -198,7 +180,7 @@ static void test_mpm_iface_scene_check(void **state)
 {
   (void)state;
   mpm_scene sc = iface_scene(1.0, 10.0, 8.0, 1);
-  mpm_sim *s = make_sim(&sc, 1); /* the base is accepted */
+  mpm_sim *s = tu_make_sim(&sc, 1); /* the base is accepted */
   mpm_sim_free(s);
   sc.shape = MPM_SHAPE_LINEAR;
   expect_einval(&sc, "linear shapes");

@@ -50,6 +50,28 @@ static inline void tu_assert_same_bits(const mpm_sim *a, const mpm_sim *b, const
     fail_msg("%s: energies or ledger differ between 1 and 2 threads", what);
 }
 
+/* mpm_sim_alloc, failing the test with the kernel's message if it refuses. */
+static inline mpm_sim *tu_make_sim(const mpm_scene *sc, int nthreads)
+{
+  mpm_sim *s = NULL;
+  char err[256] = "";
+  const mpm_status st = mpm_sim_alloc(sc, nthreads, &s, err, sizeof err);
+  if (st != MPM_OK || !s)
+    fail_msg("mpm_sim_alloc: %s: %s", mpm_strerror(st), err);
+  return s;
+}
+
+/* n steps, failing the test with the kernel's message at the first that fails. */
+static inline void tu_run_steps(mpm_sim *s, long n)
+{
+  char err[256] = "";
+  for (long k = 0; k < n; k++) {
+    const mpm_status st = mpm_sim_step(s, err, sizeof err);
+    if (st != MPM_OK)
+      fail_msg("step %ld: %s: %s", s->step, mpm_strerror(st), err);
+  }
+}
+
 /* The bar of data/scenes/vibration.ini at spacing h (elastic, held in x at both ends, no
  * head, first axial mode), for the kernel tests that need it (include mpm.h first). */
 static inline mpm_scene tu_vib_scene(double h, int scheme, int bc)
