@@ -25,15 +25,20 @@
  *    scatters from node to node there, every node above the surface was cut at once, and
  *    the load fell from the peak to a quarter within half a wave transit: fig7 h 4,
  *    k_soft -5346 against the analytic -563; docs/interface.md.)  lambda grows by the traction's work on the
- *    opening, dW per unit area (the impulse times the fields' relative velocity after
- *    it, summed over the segment's nodes): dlambda = dW / (U0 (1 - lambda)), Model 1's
+ *    opening, dW per unit area (the impulse times the fields' relative velocity v'2 - v'1,
+ *    MUSL's re-projected velocities that the particles' strain takes, summed over the
+ *    segment's nodes; mpm_iface_musl): dlambda = dW / (U0 (1 - lambda)), Model 1's
  *    power s . d up = U0 se dlambda with se = 1 - lambda on the surface, so a segment
  *    that opens to lambda = 1 has taken UF = U0 / 2 per unit area whatever the mode.
  *    (lambda from an effective opening, sqrt((snf un)^2 + (stf ut)^2) / U0, counts the
  *    slip that Mode I's inclined opening makes ten times over with stf = 10 snf, and
  *    separated fig7 early: h 4, 4 ppc, W_ext 0.75 UF area; docs/interface.md);
+ *    (The fields' velocity after the impulse, v^L, instead: that opening rate runs ahead
+ *    of the one the particles take, lambda outran the work, and at 1 ppc the softening
+ *    was steep and short of UF: fig7 h 2, k_soft -716 against -563 and W_ext -3.2 %.)
  *  - OPEN: at lambda >= the separation threshold, frictionless contact only
- *    (mpm_fields.c).  The bar is cut when every segment is open (s->cut).
+ *    (mpm_fields.c), and lambda = 1: no traction is left.  The bar is cut when every
+ *    segment is open (s->cut).
  * The flaw: the segment holding the flaw's square (its particle, or its cell with
  * imperfection.size = cell) loses strength in proportion to the share of its length that
  * lies in the square.  A segment with less than a quarter of the segment length of line
@@ -66,7 +71,7 @@ void mpm_iface_free(mpm_iface *f)
   free(f->seg);
   free(f->owner);
   free(f->node);
-  double *d[] = {f->r, f->An, f->jx, f->jy, f->A, f->snf, f->stf, f->lam, f->sn, f->st, f->sv,
+  double *d[] = {f->r, f->An, f->jx, f->jy, f->A, f->snf, f->stf, f->lam, f->wp, f->sn, f->st, f->sv,
                  f->wn, f->Tn, f->Tt, f->md, f->ns};
   for (size_t i = 0; i < sizeof d / sizeof *d; i++)
     free(d[i]);
@@ -126,7 +131,7 @@ mpm_iface *mpm_iface_alloc(mpm_sim *s, double lx, double ly)
     *nodal[i] = calloc(nn, sizeof(double));
   f->md = calloc(4 * nn, sizeof(double));
   f->ns = calloc(3 * nn, sizeof(double));
-  double **segs[] = {&f->r, &f->A, &f->snf, &f->stf, &f->lam, &f->sn, &f->st, &f->sv, &f->wn, &f->Tn, &f->Tt};
+  double **segs[] = {&f->r, &f->A, &f->snf, &f->stf, &f->lam, &f->wp, &f->sn, &f->st, &f->sv, &f->wn, &f->Tn, &f->Tt};
   int ok = f->seg && f->An && f->jx && f->jy && f->md && f->ns;
   for (size_t i = 0; i < sizeof segs / sizeof *segs; i++)
     ok &= (*segs[i] = calloc(ns, sizeof(double))) != NULL;
@@ -296,16 +301,45 @@ static void onset(mpm_sim *s, mpm_iface *f)
 
 /* The ledger at one record that the interface's impulse changes by c (a velocity): with
  * v its projected velocity and dv its free increment, as the contact's (mpm_fields.c)
- * with c a vector; returns the impulse's work on the record over the step, at the mean
- * of the start and end velocities. */
-static double record_ledger(mpm_ledger *L, double m, const double v[2], const double dv[2], const double c[2],
-                            double bfac)
+ * with c a vector.  The impulse's work on the record, m c . (v + v + dv + c) / 2, is not
+ * booked here: the interface's work is taken at the opening the particles take
+ * (mpm_iface_musl), and the ledger's L_scheme holds what the nodal fields did beyond it. */
+static void record_ledger(mpm_ledger *L, double m, const double v[2], const double dv[2], const double c[2],
+                          double bfac)
 {
   const double cv = c[0] * v[0] + c[1] * v[1], cd = c[0] * dv[0] + c[1] * dv[1], cc = c[0] * c[0] + c[1] * c[1];
   L->s_A += m * cv;
   L->s_K += m * (2.0 * cd + cc);
   L->s_B -= bfac * m * cd;
-  return m * (cv + 0.5 * (cd + cc)); /* m c . (v + v + dv + c) / 2 */
+}
+
+/* lambda from the work, and the segments that open.  On the surface se = 1 - lambda,
+ * Model 1's power U0 se dlambda = dW integrates in closed form: W = U0 (lambda -
+ * lambda^2 / 2) per unit area, so lambda = 1 - sqrt(1 - 2 W / U0) of the work taken so
+ * far (steps that took work; the traction's work never lowers lambda).  (The explicit
+ * update dlambda = dW / (U0 (1 - lambda)) overcounts the work of a large step: a release
+ * at the snapback of Mode II took 1.036 UF area by the cut, h 8, 4 ppc.) */
+static void advance(mpm_sim *s, mpm_iface *f)
+{
+  int open = 1;
+  for (int b = 0; b < f->nseg; b++) {
+    if (f->state[b] == MPM_SEG_SOFT) {
+      const double dw = f->wn[b] / f->A[b];
+      if (dw > 0.0) {
+        f->wp[b] += dw;
+        f->lam[b] = 1.0 - sqrt(fmax(0.0, 1.0 - 2.0 * f->wp[b] / s->sc.U0));
+      }
+      if (f->lam[b] >= s->sc.sep_threshold) { /* open: no traction is left, the surface
+                                                * se <= 1 - lambda of lambda = 1 (the band's
+                                                * separated particle reaches it by its opening) */
+        f->state[b] = MPM_SEG_OPEN;
+        f->lam[b] = 1.0;
+      }
+    }
+    open &= f->state[b] == MPM_SEG_OPEN;
+  }
+  if (open)
+    s->cut = 1;
 }
 
 void mpm_iface_grid(mpm_sim *s, double bfac)
@@ -344,7 +378,6 @@ void mpm_iface_grid(mpm_sim *s, double bfac)
     f->stuck[b] = f->state[b] == MPM_SEG_STUCK || (f->state[b] == MPM_SEG_SOFT && se <= 1.0 - f->lam[b]);
     f->r[b] = f->stuck[b] ? 1.0 : (1.0 - f->lam[b]) / se;
   }
-  double work = 0.0;
   for (int i = 0; i < f->nnode; i++) {
     const size_t k = f->node[i];
     if (f->state[f->seg[k]] == MPM_SEG_OPEN)
@@ -366,7 +399,8 @@ void mpm_iface_grid(mpm_sim *s, double bfac)
     const double ca[2] = {ex / a->m, ey / a->m}, cb[2] = {-ex / b->m, -ey / b->m};
     const double dva[2] = {a->fx, a->fy}, dvb[2] = {b->fx, b->fy};
     const double va[2] = {a->px - a->fx, a->py - a->fy}, vb[2] = {b->px - b->fx, b->py - b->fy};
-    work -= record_ledger(L, a->m, va, dva, ca, bfac) + record_ledger(L, b->m, vb, dvb, cb, bfac);
+    record_ledger(L, a->m, va, dva, ca, bfac);
+    record_ledger(L, b->m, vb, dvb, cb, bfac);
     /* MUSL's B needs each record's m dv (mpm_iface_musl) */
     md[0] = a->m * dva[0];
     md[1] = a->m * dva[1];
@@ -385,32 +419,37 @@ void mpm_iface_grid(mpm_sim *s, double bfac)
     b->py += cb[1];
     b->fx += cb[0];
     b->fy += cb[1];
-    if (f->state[q] == MPM_SEG_SOFT) /* the traction's work on the opening this step */
-      f->wn[q] += ex * (b->px - a->px) + ey * (b->py - a->py);
   }
-  L->s_I += work;
-  /* the segments' opening and lambda: the largest effective opening over U0 */
-  int open = 1;
-  for (int b = 0; b < f->nseg; b++) {
-    if (f->state[b] == MPM_SEG_SOFT) {
-      const double dw = f->wn[b] / f->A[b], l0 = f->lam[b];
-      if (dw > 0.0)
-        f->lam[b] = fmin(1.0, l0 + dw / (s->sc.U0 * fmax(1.0 - l0, 1e-3)));
-      if (f->lam[b] >= s->sc.sep_threshold)
-        f->state[b] = MPM_SEG_OPEN;
-    }
-    open &= f->state[b] == MPM_SEG_OPEN;
-  }
-  if (open)
-    s->cut = 1;
 }
 
 void mpm_iface_musl(mpm_sim *s)
 {
   mpm_grid *g = s->g;
   mpm_fields *fl = g->fld;
-  const mpm_iface *f = fl->ifc;
+  mpm_iface *f = fl->ifc;
   const double mmin = MPM_MASS_EPS * s->mat[MPM_MAT_BAR].mp;
+  /* the traction's work on the opening this step, at the softening segments' nodes: the
+   * impulse on field 1 (m1 c1) times the fields' relative velocity v'2 - v'1, the
+   * opening rate the particles' strain takes (mpm_fields_musl has just set both v') */
+  for (int b = 0; b < f->nseg; b++)
+    f->wn[b] = 0.0;
+  for (int i = 0; i < f->nnode; i++) {
+    const size_t k = f->node[i];
+    const int q = f->seg[k];
+    if (f->state[q] != MPM_SEG_SOFT || f->stuck[q])
+      continue;
+    const mpm_node *a = &g->nd[k], *b = &fl->nd2[k];
+    if (!(a->m > mmin) || !(b->m > mmin))
+      continue;
+    const double *dc = fl->dc + 4 * k;
+    f->wn[q] += a->m * (dc[0] * (b->fx - a->fx) + dc[1] * (b->fy - a->fy));
+  }
+  double work = 0.0;
+  for (int b = 0; b < f->nseg; b++)
+    work += f->wn[b];
+  s->led.s_I += work; /* W_coh; what the impulse did to the nodal fields beyond it is the
+                       * scheme's (L_scheme, mpm_step.c's ledger_step) */
+  advance(s, f);
   double B = 0.0;
   for (int i = 0; i < f->nnode; i++) {
     const size_t k = f->node[i];

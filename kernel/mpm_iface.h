@@ -31,6 +31,7 @@ struct mpm_iface {
   double *A;               /* per segment: the line's length in it (sum of An)          */
   double *snf, *stf;       /* per segment: strengths (the flaw by its length on the line) */
   double *lam;             /* per segment: lambda (eq. 10's, here of the segment)        */
+  double *wp;              /* per segment: the traction's work so far per unit area (steps that took work) */
   uint8_t *state;          /* per segment: MPM_SEG_*                                     */
   uint8_t *stuck;          /* per segment: stuck this step (MUSL shares v' there)        */
   double *r;               /* per segment: this step's scale of the stick impulses (1 stuck) */
@@ -45,10 +46,12 @@ struct mpm_iface {
  * NULL when out of memory. */
 mpm_iface *mpm_iface_alloc(mpm_sim *s, double lx, double ly);
 void mpm_iface_free(mpm_iface *f);
-/* After the second field's eq. 4 at every split node (mpm_fields_grid): the law, its
- * impulses, the ledger, the segments' lambda and the cut. */
+/* After the second field's eq. 4 at every split node (mpm_fields_grid): the onset, the
+ * law's impulses and the ledger. */
 void mpm_iface_grid(mpm_sim *s, double bfac);
-/* MUSL (mpm_fields_musl): the ledger's B at split nodes, and v' shared where stuck. */
+/* MUSL (mpm_fields_musl): the softening segments' work on the opening v'2 - v'1, their
+ * lambda, the segments that open and the cut; then the ledger's B at split nodes, and v'
+ * shared where stuck. */
 void mpm_iface_musl(mpm_sim *s);
 /* sum U0 A min(lambda, 1) over the segments: eq. 10 on the line */
 double mpm_iface_D(const mpm_sim *s);
