@@ -27,9 +27,10 @@
  *    k_soft -5346 against the analytic -563; docs/interface.md.)  lambda grows by the traction's work on the
  *    opening, dW per unit area (the impulse times the fields' relative velocity v'2 - v'1,
  *    MUSL's re-projected velocities that the particles' strain takes, summed over the
- *    segment's nodes; mpm_iface_musl): dlambda = dW / (U0 (1 - lambda)), Model 1's
- *    power s . d up = U0 se dlambda with se = 1 - lambda on the surface, so a segment
- *    that opens to lambda = 1 has taken UF = U0 / 2 per unit area whatever the mode.
+ *    segment's nodes; mpm_iface_musl): Model 1's power s . d up = U0 se dlambda with
+ *    se = 1 - lambda on the surface, integrated in closed form, lambda = 1 - sqrt(1 -
+ *    2 W / U0) of the work W taken so far, so a segment that opens to lambda = 1 has
+ *    taken UF = U0 / 2 per unit area whatever the mode.
  *    (lambda from an effective opening, sqrt((snf un)^2 + (stf ut)^2) / U0, counts the
  *    slip that Mode I's inclined opening makes ten times over with stf = 10 snf, and
  *    separated fig7 early: h 4, 4 ppc, W_ext 0.75 UF area; docs/interface.md);

@@ -1,6 +1,6 @@
 # Work-precision: RMS load error against CPU seconds, one line per ppc, one point per h;
-# for the inclined scenes also the paper's method and the cohesive interface at 1 ppc where
-# the scene file uses another
+# for the inclined scenes also one line per other method at 1 ppc: the paper's method, and
+# the cohesive interface or the band method, whichever the scene file does not run
 W = 1500; Hgt = 560
 load gpdir.'/common.gp'
 scs = "fig6 fig7 fig8"
@@ -10,25 +10,19 @@ set xlabel "CPU time of the run, s"
 set ylabel "RMS load error / P_{max}"
 set key below
 set bmargin 8
+pt_line = " u 4:($5 > 0.5 ? $2 : 1/0) w lp"
 do for [i=1:3] {
   sc = word(scs, i)
   set title sprintf("%s.ini", sc)
   pf = sprintf('data/sweep-%s-paper.dat', sc)
   fi = sprintf('data/sweep-%s-iface.dat', sc)
-  if (exists_file(pf) && exists_file(fi)) {
-    plot for [p in "1 4 9"] sprintf('data/sweep-%s-ppc%s.dat', sc, p) u 4:($5 > 0.5 ? $2 : 1/0) w lp pt 7 ps 1.3 lw 2 \
-         title sprintf("scene file's method, %s ppc", p), \
-         pf u 4:($5 > 0.5 ? $2 : 1/0) w lp pt 5 ps 1.3 lw 2 dt 2 lc rgb '#333333' title "paper's method, 1 ppc", \
-         fi u 4:($5 > 0.5 ? $2 : 1/0) w lp pt 9 ps 1.5 lw 2 dt 4 lc rgb '#8b0000' title "interface, 1 ppc"
-  } else {
-  if (exists_file(pf)) {
-    plot for [p in "1 4 9"] sprintf('data/sweep-%s-ppc%s.dat', sc, p) u 4:($5 > 0.5 ? $2 : 1/0) w lp pt 7 ps 1.3 lw 2 \
-         title sprintf("scene file's method, %s ppc", p), \
-         pf u 4:($5 > 0.5 ? $2 : 1/0) w lp pt 5 ps 1.3 lw 2 dt 2 lc rgb '#333333' title "paper's method, 1 ppc"
-  } else {
-    plot for [p in "1 4 9"] sprintf('data/sweep-%s-ppc%s.dat', sc, p) u 4:($5 > 0.5 ? $2 : 1/0) w lp pt 7 ps 1.3 lw 2 \
-         title sprintf("%s ppc", p)
-  }
-  }
+  fb = sprintf('data/sweep-%s-band.dat', sc)
+  own = exists_file(pf) ? "scene file's method, " : ""
+  cmd = "plot for [p in \"1 4 9\"] sprintf('data/sweep-%s-ppc%s.dat', sc, p)".pt_line. \
+        " pt 7 ps 1.3 lw 2 title sprintf(\"".own."%s ppc\", p)"
+  if (exists_file(pf)) { cmd = cmd.", pf".pt_line." pt 5 ps 1.3 lw 2 dt 2 lc rgb '#333333' title \"paper's method, 1 ppc\"" }
+  if (exists_file(fi)) { cmd = cmd.", fi".pt_line." pt 9 ps 1.5 lw 2 dt 4 lc rgb '#8b0000' title \"interface, 1 ppc\"" }
+  if (exists_file(fb)) { cmd = cmd.", fb".pt_line." pt 11 ps 1.5 lw 2 dt 4 lc rgb '#006400' title \"band method, 1 ppc\"" }
+  eval cmd
 }
 unset multiplot

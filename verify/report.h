@@ -29,6 +29,7 @@ enum {
   REP_SCHEME = 32,  /* usl vs musl                                            */
   REP_PAPER = 64,   /* a paper scene with the paper's method (bilinear, one field, Le = cell) */
   REP_IFACE = 128,  /* an inclined paper scene with decohesion.path = interface (docs/interface.md) */
+  REP_BAND = 256,   /* an inclined paper scene whose file runs the interface, with the band method */
 };
 
 /* Outcome of a time-step sweep point. */

@@ -161,13 +161,37 @@ static int needs_iface_run(const rep_ctx *r, const char *scene)
          ver_scene_validate(&vs, err, sizeof err) == 0;
 }
 
-/* decohesion.path of a scene file (MPM_PATH_FREE if it does not load). */
-static int scene_path(const rep_ctx *r, const char *scene)
+/* The band method as the paper scene files ran it until they took the interface (docs/
+ * interface.md, "The band method"): the line path with the paper's flaw on snf (fig8:
+ * on stf too, shear governs) and fig7's grid that follows the bar's stretch; the files'
+ * band keys (Le, path_reach, reversed_shear) stay as written. */
+static const struct {
+  const char *scene;
+  int n;
+  const char *sets[3];
+} band_method[] = {
+    {"fig7", 3, {"decohesion.path=line", "imperfection.snf_factor=0.9", "grid.motion=stretch"}},
+    {"fig8", 3, {"decohesion.path=line", "imperfection.snf_factor=0.9", "imperfection.stf_factor=0.9"}},
+};
+
+/* The band method's overrides of a scene file whose own path is the interface, into sets
+ * (3 at most); returns how many, 0 where the file does not run the interface, the scene
+ * has no band method above or it does not validate. */
+static int band_sets(const rep_ctx *r, const char *scene, const char *sets[3])
 {
   char path[REP_PATH + 64], err[256];
   ver_scene vs;
   snprintf(path, sizeof path, "%.900s/%.60s.ini", r->scenes, scene);
-  return ver_scene_load(path, &vs, err, sizeof err) == 0 ? vs.sc.path : MPM_PATH_FREE;
+  if (ver_scene_load(path, &vs, err, sizeof err) != 0 || vs.sc.path != MPM_PATH_IFACE)
+    return 0;
+  for (size_t m = 0; m < sizeof band_method / sizeof band_method[0]; m++)
+    if (!strcmp(band_method[m].scene, scene)) {
+      for (int i = 0; i < band_method[m].n; i++)
+        if (ver_scene_set(&vs, sets[i] = band_method[m].sets[i], err, sizeof err) != 0)
+          return 0;
+      return ver_scene_validate(&vs, err, sizeof err) == 0 ? band_method[m].n : 0;
+    }
+  return 0;
 }
 
 /* The grid of a scene file (h 8, 1 ppc if it does not load). */
@@ -226,6 +250,14 @@ void ver_report_build_cases(report *R)
     if (needs_iface_run(r, rep_sweep_scene[s]))
       for (double h = 8; h >= 2; h /= 2)
         ver_report_add(r, rep_sweep_scene[s], h, 1, 0, rep_sweep_until[s], "decohesion.path=interface", NULL, REP_IFACE, 1);
+  /* and, where the file runs the interface, with the band method (tag 1: its line) */
+  for (int s = 1; s < REP_NSWEEP; s++) {
+    const char *bs[3];
+    const int nb = band_sets(r, rep_sweep_scene[s], bs);
+    if (nb > 0)
+      for (double h = 8; h >= 2; h /= 2)
+        ver_report_add_sets(r, rep_sweep_scene[s], h, 1, 0, rep_sweep_until[s], bs, nb, REP_BAND, 1);
+  }
   /* time-step sweep: fig6, h = 8, 1 ppc, to delta 0.5 */
   const double crit = ver_report_dt_crit(r, "fig6", 8);
   for (int i = 0; i < NSTAB; i++)
@@ -238,21 +270,22 @@ void ver_report_build_cases(report *R)
   /* separation threshold */
   ver_report_add(r, "fig6", 8, 4, 0, 0.6, "decohesion.separation=0.98", NULL, REP_SEP, 0.98);
   ver_report_add(r, "fig6", 8, 4, 0, 0.6, "decohesion.separation=0.8", NULL, REP_SEP, 0.8);
-  /* usl vs musl on an inclined scene, if the option exists */
+  /* usl vs musl on an inclined scene, if the option exists.  The interface is MUSL's
+   * only (mpm_iface.c): where a scene file runs it, the pair is the band method's
+   * (band_sets).  time.damping_beta needs MUSL (mpm_sim.c): USL runs the file's damping
+   * without it. */
   r->have_musl = knows_musl(r);
   if (r->have_musl) {
-    ver_report_add(r, "fig7", 4, 1, 0, 1.0, "time.scheme=usl", NULL, REP_SCHEME, 0);
-    ver_report_add(r, "fig7", 4, 1, 0, 1.0, "time.scheme=musl", NULL, REP_SCHEME, 1);
-    /* time.damping_beta needs MUSL (mpm_sim.c): USL runs the file's damping without it.
-     * The interface is MUSL's only (mpm_iface.c): where fig8.ini runs it, the pair is
-     * the band method's (decohesion.path = line with the paper's flaw on both strengths) */
-    static const char *const usl8[5] = {"time.scheme=usl", "time.damping_beta=0", "decohesion.path=line",
-                                        "imperfection.snf_factor=0.9", "imperfection.stf_factor=0.9"};
-    static const char *const musl8[4] = {"time.scheme=musl", "decohesion.path=line", "imperfection.snf_factor=0.9",
-                                         "imperfection.stf_factor=0.9"};
-    const int band8 = scene_path(r, "fig8") == MPM_PATH_IFACE;
-    ver_report_add_sets(r, "fig8", 4, 1, 0, 1.0, usl8, band8 ? 5 : 2, REP_SCHEME, 0);
-    ver_report_add_sets(r, "fig8", 4, 1, 0, 1.0, musl8, band8 ? 4 : 1, REP_SCHEME, 1);
+    static const char *const pair[2] = {"fig7", "fig8"}; /* at h 4, 1 ppc, to delta 1 */
+    for (int i = 0; i < 2; i++) {
+      const char *sc = pair[i], *usl[5] = {"time.scheme=usl", "time.damping_beta=0"}, *musl[4] = {"time.scheme=musl"};
+      const char *bs[3];
+      const int nb = band_sets(r, sc, bs);
+      for (int k = 0; k < nb; k++)
+        usl[2 + k] = musl[1 + k] = bs[k];
+      ver_report_add_sets(r, sc, 4, 1, 0, 1.0, usl, 2 + nb, REP_SCHEME, 0);
+      ver_report_add_sets(r, sc, 4, 1, 0, 1.0, musl, 1 + nb, REP_SCHEME, 1);
+    }
   }
 }
 

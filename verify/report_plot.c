@@ -112,8 +112,8 @@ static void write_fig3(const rep_ctx *r, FILE *vars)
     }
 }
 
-/* The paper-method or interface sweep of an inclined scene (report_cases.c, tag 1, role
- * REP_PAPER or REP_IFACE): sweep-<scene>-<what>.dat, the columns of the other sweep tables. */
+/* The paper-method, interface or band-method sweep of an inclined scene (report_cases.c,
+ * tag 1, role REP_PAPER, REP_IFACE or REP_BAND): sweep-<scene>-<what>.dat, the columns of the other sweep tables. */
 static void write_method_sweep(const rep_ctx *r, const char *scene, int role, const char *what)
 {
   char name[64];
@@ -141,6 +141,7 @@ static void write_sweeps(const rep_ctx *r, rep_fit *fits, FILE *vars)
   for (int s = 1; s < REP_NSWEEP; s++) {
     write_method_sweep(r, rep_sweep_scene[s], REP_PAPER, "paper");
     write_method_sweep(r, rep_sweep_scene[s], REP_IFACE, "iface");
+    write_method_sweep(r, rep_sweep_scene[s], REP_BAND, "band");
   }
   for (int s = 0; s < REP_NSWEEP; s++) {
     double hh[8], ec[8], ed[8];
