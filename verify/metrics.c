@@ -82,14 +82,24 @@ double ver_softening_slope(const double *delta, const double *P, size_t n, doubl
   size_t *idx = malloc((n + 1) * sizeof *idx), m = 0;
   if (!idx)
     return NAN;
+  size_t above = ipk, below = n; /* the last row over the window, the first under it */
   for (size_t i = ipk + 1; i < n; i++) {
-    if (P[i] < lo_frac * peak)
+    if (P[i] < lo_frac * peak) {
+      below = i;
       break;
+    }
     if (P[i] <= hi_frac * peak)
       idx[m++] = i;
+    else
+      above = i;
   }
-  const double s = fit_rows(delta, P, idx, m);
+  double s = fit_rows(delta, P, idx, m);
   free(idx);
+  /* a drop that crosses the window within too few rows to fit (a snapback's release): the
+   * secant from the last row over the window to the first under it, the shallowest slope
+   * the rows allow */
+  if (!isfinite(s) && below < n && delta[below] > delta[above])
+    s = (P[below] - P[above]) / (delta[below] - delta[above]);
   return s;
 }
 

@@ -31,7 +31,9 @@ double ver_elastic_slope(const double *delta, const double *P, size_t n, double 
 
 /* Softening slope dP/ddelta: least-squares line through the rows after the (first)
  * largest P whose P lies in [lo_frac, hi_frac] * peak, up to the first row below
- * lo_frac * peak.  NaN if fewer than 3 rows qualify. */
+ * lo_frac * peak.  Where fewer than 3 rows qualify but the load does fall under the
+ * window (a drop within a row or two), the secant from the last row above the window to
+ * the first under it; NaN if the load never falls under it. */
 double ver_softening_slope(const double *delta, const double *P, size_t n, double hi_frac, double lo_frac);
 
 /* How far past the detected separation ver_load_after starts: 0.1 of delta, the scene

@@ -67,6 +67,13 @@ static void test_ver_metrics_softening_slope_bar(void **state)
     Pe[i] = k * d[i];
   assert_true(isnan(ver_softening_slope(d, Pe, N, 0.8, 0.2)));
   assert_true(isnan(ver_softening_slope(d, P, 0, 0.8, 0.2)));
+  /* a drop from the peak to zero between two rows (a snapback's release): the secant
+   * across it, -32 / 0.001 */
+  double Ps[N];
+  for (int i = 0; i < N; i++)
+    Ps[i] = d[i] <= dp ? k * d[i] : 0.0;
+  const int ipk = (int)(dp / 0.001) - 1; /* the last row at or before dp */
+  assert_rel(ver_softening_slope(d, Ps, N, 0.8, 0.2), -Ps[ipk] / (d[ipk + 1] - d[ipk]), 1e-9, "softening secant");
 }
 
 /* A grid of particles on [0,192]x[0,32], h = 4, ppc = 4 (offsets h/4, 3h/4); the band
