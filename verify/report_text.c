@@ -141,7 +141,10 @@ static int line_lambda(const rep_case *c, double delta, double *lo, double *hi)
   if (!c || !c->have)
     return 0;
   char p[REP_PATH + 48];
-  snprintf(p, sizeof p, "%s/snap-d%.3f-line.csv", c->dir, delta);
+  if (delta < 0.0) /* the end of the run */
+    snprintf(p, sizeof p, "%s/final-line.csv", c->dir);
+  else
+    snprintf(p, sizeof p, "%s/snap-d%.3f-line.csv", c->dir, delta);
   static const char *const col[1] = {"lambda"};
   double *v[1];
   const long n = ver_csv_read(p, col, 1, v);
@@ -192,6 +195,19 @@ static void pic_vars(report *R)
     snapshot_stats(c, -1, VER_BAND_LAMBDA, &band, &uy, &ml);
     num(R, key, "band_final", band);
     num(R, key, "uy_final", uy);
+    { /* what failed at the end: a band of particles, or the interface's line */
+      double lo, hi;
+      char s[300];
+      if (line_lambda(c, -1.0, &lo, &hi) && lo == hi)
+        snprintf(s, sizeof s, "no particle fails (decohesion.path = interface): every segment of the line ends at "
+                 "lambda %.3g", lo);
+      else if (line_lambda(c, -1.0, &lo, &hi))
+        snprintf(s, sizeof s, "no particle fails (decohesion.path = interface): the line's segments end at lambda "
+                 "%.3g to %.3g", lo, hi);
+      else
+        snprintf(s, sizeof s, "the failed particles (lambda > 0.5) form a band %.3g cells wide", band);
+      word(R, key, "failed_final", s);
+    }
     char pkey[32]; /* the paper's method's left quarter, beside */
     snprintf(pkey, sizeof pkey, "paper_%s", sc[i]);
     snapshot_stats(pc ? pc : c, -1, VER_BAND_LAMBDA, &band, &uy, &ml);
