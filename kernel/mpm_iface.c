@@ -72,7 +72,7 @@ void mpm_iface_free(mpm_iface *f)
   free(f->seg);
   free(f->owner);
   free(f->node);
-  double *d[] = {f->r, f->An, f->jx, f->jy, f->A, f->snf, f->stf, f->lam, f->wp, f->sn, f->st, f->sv,
+  double *d[] = {f->r, f->An, f->jx, f->jy, f->A, f->snf, f->stf, f->lam, f->sn, f->st, f->sv,
                  f->wn, f->Tn, f->Tt, f->md, f->ns};
   for (size_t i = 0; i < sizeof d / sizeof *d; i++)
     free(d[i]);
@@ -132,7 +132,7 @@ mpm_iface *mpm_iface_alloc(mpm_sim *s, double lx, double ly)
     *nodal[i] = calloc(nn, sizeof(double));
   f->md = calloc(4 * nn, sizeof(double));
   f->ns = calloc(3 * nn, sizeof(double));
-  double **segs[] = {&f->r, &f->A, &f->snf, &f->stf, &f->lam, &f->wp, &f->sn, &f->st, &f->sv, &f->wn, &f->Tn, &f->Tt};
+  double **segs[] = {&f->r, &f->A, &f->snf, &f->stf, &f->lam, &f->sn, &f->st, &f->sv, &f->wn, &f->Tn, &f->Tt};
   int ok = f->seg && f->An && f->jx && f->jy && f->md && f->ns;
   for (size_t i = 0; i < sizeof segs / sizeof *segs; i++)
     ok &= (*segs[i] = calloc(ns, sizeof(double))) != NULL;
@@ -317,7 +317,8 @@ static void record_ledger(mpm_ledger *L, double m, const double v[2], const doub
 /* lambda from the work, and the segments that open.  On the surface se = 1 - lambda,
  * Model 1's power U0 se dlambda = dW integrates in closed form: W = U0 (lambda -
  * lambda^2 / 2) per unit area, so lambda = 1 - sqrt(1 - 2 W / U0) of the work taken so
- * far (steps that took work; the traction's work never lowers lambda).  (The explicit
+ * far (steps that took work; the traction's work never lowers lambda), and a step's dW
+ * takes (1 - lambda)^2 to (1 - lambda)^2 - 2 dW / U0.  (The explicit
  * update dlambda = dW / (U0 (1 - lambda)) overcounts the work of a large step: a release
  * at the snapback of Mode II took 1.036 UF area by the cut, h 8, 4 ppc.) */
 static void advance(mpm_sim *s, mpm_iface *f)
@@ -325,11 +326,9 @@ static void advance(mpm_sim *s, mpm_iface *f)
   int open = 1;
   for (int b = 0; b < f->nseg; b++) {
     if (f->state[b] == MPM_SEG_SOFT) {
-      const double dw = f->wn[b] / f->A[b];
-      if (dw > 0.0) {
-        f->wp[b] += dw;
-        f->lam[b] = 1.0 - sqrt(fmax(0.0, 1.0 - 2.0 * f->wp[b] / s->sc.U0));
-      }
+      const double dw = f->wn[b] / f->A[b], r = 1.0 - f->lam[b];
+      if (dw > 0.0)
+        f->lam[b] = 1.0 - sqrt(fmax(0.0, r * r - 2.0 * dw / s->sc.U0));
       if (f->lam[b] >= s->sc.sep_threshold) { /* open: no traction is left, the surface
                                                 * se <= 1 - lambda of lambda = 1 (the band's
                                                 * separated particle reaches it by its opening) */
@@ -355,7 +354,7 @@ void mpm_iface_grid(mpm_sim *s, double bfac)
   /* the stick impulses J = m1 (vc - v1), vc the pair's centre-of-mass velocity (p holds
    * v^L after the node update), and their sums per segment */
   for (int b = 0; b < f->nseg; b++)
-    f->Tn[b] = f->Tt[b] = f->wn[b] = 0.0;
+    f->Tn[b] = f->Tt[b] = 0.0;
   for (int i = 0; i < f->nnode; i++) {
     const size_t k = f->node[i];
     f->jx[k] = f->jy[k] = 0.0;

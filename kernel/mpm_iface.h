@@ -31,7 +31,6 @@ struct mpm_iface {
   double *A;               /* per segment: the line's length in it (sum of An)          */
   double *snf, *stf;       /* per segment: strengths (the flaw by its length on the line) */
   double *lam;             /* per segment: lambda (eq. 10's, here of the segment)        */
-  double *wp;              /* per segment: the traction's work so far per unit area (steps that took work) */
   uint8_t *state;          /* per segment: MPM_SEG_*                                     */
   uint8_t *stuck;          /* per segment: stuck this step (MUSL shares v' there)        */
   double *r;               /* per segment: this step's scale of the stick impulses (1 stuck) */

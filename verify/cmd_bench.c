@@ -35,31 +35,30 @@ typedef struct {
   const char *method; /* label in the case id                                   */
   const char *sets;   /* the method: overrides, separated by spaces              */
   int cut;            /* 1: start with a separated band across the bar (cut_band) */
-  int paper;          /* 1: the paper's method (ver_paper_sets) before sets      */
+  int base;           /* what goes before sets: BENCH_FILE, BENCH_PAPER
+                         (ver_paper_sets) or BENCH_BAND (ver_band_sets)          */
 } bench_case;
 
-/* fig7.ini's band method (its default until session 16, when it took the cohesive
- * interface): the band on its line, the paper's flaw, the grid that follows the stretch */
-#define FIG7_BAND "decohesion.path=line imperfection.snf_factor=0.9 grid.motion=stretch "
+enum { BENCH_FILE = 0, BENCH_PAPER = 1, BENCH_BAND = 2 };
 
 static const bench_case cases[] = {
   /* the paper's step (lumped v^L); fig6.ini's nodal mass limit in a case of its own */
   {"fig6", 2.0, 4, 4000, "linear", "grid.shape=linear grid.fields=one grid.node_mass=lumped", 0, 0},
   {"fig6", 1.0, 4, 2000, "linear", "grid.shape=linear grid.fields=one grid.node_mass=lumped", 0, 0},
   {"fig6", 2.0, 4, 4000, "limited", "grid.shape=linear grid.fields=one grid.node_mass=limited", 0, 0},
-  {"fig7", 2.0, 4, 4000, "paper", "", 0, 1},
+  {"fig7", 2.0, 4, 4000, "paper", "", 0, BENCH_PAPER},
   {"fig6", 2.0, 4, 4000, "gimp", "grid.shape=gimp grid.fields=one", 0, 0},
-  {"fig7", 2.0, 4, 4000, "gimp", FIG7_BAND "grid.shape=gimp grid.fields=one decohesion.Le=cell", 0, 0},
-  {"fig7", 2.0, 4, 4000, "gimp-two", FIG7_BAND "grid.shape=gimp grid.fields=two decohesion.Le=staircase", 1, 0},
+  {"fig7", 2.0, 4, 4000, "gimp", "grid.shape=gimp grid.fields=one decohesion.Le=cell", 0, BENCH_BAND},
+  {"fig7", 2.0, 4, 4000, "gimp-two", "grid.shape=gimp grid.fields=two decohesion.Le=staircase", 1, BENCH_BAND},
   /* the fig7 file's method, timed through the softening, where the rows measure Le */
-  {"fig7", 2.0, 4, 4000, "gimp-row", FIG7_BAND "grid.shape=gimp grid.fields=two decohesion.Le=row decohesion.path=free", 0,
-   0},
+  {"fig7", 2.0, 4, 4000, "gimp-row", "grid.shape=gimp grid.fields=two decohesion.Le=row decohesion.path=free", 0,
+   BENCH_BAND},
   /* fig7.ini's band method (sessions 8 to 15): the lead's zone, the band held to its line */
-  {"fig7", 2.0, 4, 4000, "gimp-zone-line", FIG7_BAND "grid.shape=gimp grid.fields=two decohesion.Le=zone", 0, 0},
+  {"fig7", 2.0, 4, 4000, "gimp-zone-line", "grid.shape=gimp grid.fields=two decohesion.Le=zone", 0, BENCH_BAND},
   /* the crack as a cohesive interface (docs/interface.md; fig7.ini's since session 16):
    * every particle elastic, the split nodes' two fields from the first step, the law on
    * the line's segments */
-  {"fig7", 2.0, 4, 4000, "interface", "", 0, 0},
+  {"fig7", 2.0, 4, 4000, "interface", "", 0, BENCH_FILE},
   /* fig8's file (uGIMP, two fields, Rayleigh damping from the cut), after the cut: the
    * viscous stress in the gather and the scatter, with the mass half about each part's
    * held end (the file's since session 13: a serial particle pass) or about each node's
@@ -180,8 +179,12 @@ static int bench_scene(const bench_case *bc, ver_scene *vs, ana_bar *bar)
   ver_scene_set(vs, set, err, sizeof err);
   snprintf(set, sizeof set, "grid.ppc=%d", bc->ppc);
   ver_scene_set(vs, set, err, sizeof err);
-  for (int i = 0; bc->paper && i < VER_PAPER_NSETS; i++)
+  const char *const *band = NULL;
+  const int nband = bc->base == BENCH_BAND ? ver_band_sets(bc->scene, &band) : 0;
+  for (int i = 0; bc->base == BENCH_PAPER && i < VER_PAPER_NSETS; i++)
     ver_scene_set(vs, ver_paper_sets[i], err, sizeof err);
+  for (int i = 0; i < nband; i++)
+    ver_scene_set(vs, band[i], err, sizeof err);
   if (apply_sets(vs, bc->sets, err, sizeof err)) {
     fprintf(stderr, "delam bench: %s\n", err);
     return 2;

@@ -161,37 +161,22 @@ static int needs_iface_run(const rep_ctx *r, const char *scene)
          ver_scene_validate(&vs, err, sizeof err) == 0;
 }
 
-/* The band method as the paper scene files ran it until they took the interface (docs/
- * interface.md, "The band method"): the line path with the paper's flaw on snf (fig8:
- * on stf too, shear governs) and fig7's grid that follows the bar's stretch; the files'
- * band keys (Le, path_reach, reversed_shear) stay as written. */
-static const struct {
-  const char *scene;
-  int n;
-  const char *sets[3];
-} band_method[] = {
-    {"fig7", 3, {"decohesion.path=line", "imperfection.snf_factor=0.9", "grid.motion=stretch"}},
-    {"fig8", 3, {"decohesion.path=line", "imperfection.snf_factor=0.9", "imperfection.stf_factor=0.9"}},
-};
-
-/* The band method's overrides of a scene file whose own path is the interface, into sets
- * (3 at most); returns how many, 0 where the file does not run the interface, the scene
- * has no band method above or it does not validate. */
-static int band_sets(const rep_ctx *r, const char *scene, const char *sets[3])
+/* The band method's overrides (ver_band_sets) of a scene file whose own path is the
+ * interface, into sets; returns how many, 0 where the file does not run the interface,
+ * the scene has no band method or it does not validate. */
+static int band_sets(const rep_ctx *r, const char *scene, const char *sets[VER_BAND_NSETS])
 {
   char path[REP_PATH + 64], err[256];
   ver_scene vs;
   snprintf(path, sizeof path, "%.900s/%.60s.ini", r->scenes, scene);
   if (ver_scene_load(path, &vs, err, sizeof err) != 0 || vs.sc.path != MPM_PATH_IFACE)
     return 0;
-  for (size_t m = 0; m < sizeof band_method / sizeof band_method[0]; m++)
-    if (!strcmp(band_method[m].scene, scene)) {
-      for (int i = 0; i < band_method[m].n; i++)
-        if (ver_scene_set(&vs, sets[i] = band_method[m].sets[i], err, sizeof err) != 0)
-          return 0;
-      return ver_scene_validate(&vs, err, sizeof err) == 0 ? band_method[m].n : 0;
-    }
-  return 0;
+  const char *const *bs;
+  const int n = ver_band_sets(scene, &bs);
+  for (int i = 0; i < n; i++)
+    if (ver_scene_set(&vs, sets[i] = bs[i], err, sizeof err) != 0)
+      return 0;
+  return n > 0 && ver_scene_validate(&vs, err, sizeof err) == 0 ? n : 0;
 }
 
 /* The grid of a scene file (h 8, 1 ppc if it does not load). */
@@ -252,7 +237,7 @@ void ver_report_build_cases(report *R)
         ver_report_add(r, rep_sweep_scene[s], h, 1, 0, rep_sweep_until[s], "decohesion.path=interface", NULL, REP_IFACE, 1);
   /* and, where the file runs the interface, with the band method (tag 1: its line) */
   for (int s = 1; s < REP_NSWEEP; s++) {
-    const char *bs[3];
+    const char *bs[VER_BAND_NSETS];
     const int nb = band_sets(r, rep_sweep_scene[s], bs);
     if (nb > 0)
       for (double h = 8; h >= 2; h /= 2)
@@ -278,8 +263,8 @@ void ver_report_build_cases(report *R)
   if (r->have_musl) {
     static const char *const pair[2] = {"fig7", "fig8"}; /* at h 4, 1 ppc, to delta 1 */
     for (int i = 0; i < 2; i++) {
-      const char *sc = pair[i], *usl[5] = {"time.scheme=usl", "time.damping_beta=0"}, *musl[4] = {"time.scheme=musl"};
-      const char *bs[3];
+      const char *sc = pair[i], *usl[2 + VER_BAND_NSETS] = {"time.scheme=usl", "time.damping_beta=0"}, *musl[1 + VER_BAND_NSETS] = {"time.scheme=musl"};
+      const char *bs[VER_BAND_NSETS];
       const int nb = band_sets(r, sc, bs);
       for (int k = 0; k < nb; k++)
         usl[2 + k] = musl[1 + k] = bs[k];

@@ -198,10 +198,11 @@ static void pic_vars(report *R)
     { /* what failed at the end: a band of particles, or the interface's line */
       double lo, hi;
       char s[300];
-      if (line_lambda(c, -1.0, &lo, &hi) && lo == hi)
+      const int line = line_lambda(c, -1.0, &lo, &hi);
+      if (line && lo == hi)
         snprintf(s, sizeof s, "no particle fails (decohesion.path = interface): every segment of the line ends at "
                  "lambda %.3g", lo);
-      else if (line_lambda(c, -1.0, &lo, &hi))
+      else if (line)
         snprintf(s, sizeof s, "no particle fails (decohesion.path = interface): the line's segments end at lambda "
                  "%.3g to %.3g", lo, hi);
       else

@@ -46,6 +46,13 @@ typedef struct {
 #define VER_PAPER_NSETS 13
 extern const char *const ver_paper_sets[VER_PAPER_NSETS];
 
+/* The overrides that turn an inclined paper scene file (fig7, fig8) back to the band
+ * method it ran until it took the cohesive interface (scene_bar.c; docs/interface.md).
+ * Returns how many (at most VER_BAND_NSETS) and points *sets at them; 0 for a scene
+ * without one. */
+#define VER_BAND_NSETS 3
+int ver_band_sets(const char *scene, const char *const **sets);
+
 /* Reads and validates a scene file.  Returns 0, or 2 with one line in err. */
 int ver_scene_load(const char *path, ver_scene *vs, char *err, size_t errlen);
 /* Parses it without the final validation, so that overrides can follow.  Files

@@ -2,8 +2,11 @@
  * scene_bar.c - what the paper fixes about a scene, in one place: the conversion to the
  * closed-form bar of analytic/ (ver_scene_bar; verify, report and bench all take their
  * analytic numbers from here) and the overrides that give the paper's method
- * (ver_paper_sets; the report's and the bench's paper runs).
+ * (ver_paper_sets; the report's and the bench's paper runs) and the band method the
+ * inclined files ran before the interface (ver_band_sets; the report's and the bench's).
  */
+#include <string.h>
+
 #include "scene.h"
 
 int ver_scene_bar(const mpm_scene *sc, ana_bar *bar, char *err, size_t len)
@@ -35,3 +38,17 @@ const char *const ver_paper_sets[VER_PAPER_NSETS] = {
     "imperfection.stf_factor=1", "time.scheme=usl", "grid.node_mass=limited", "time.damping=0", "time.damping_beta=0",
     "imperfection.size=particle", "decohesion.path=free", "grid.motion=fixed", "decohesion.reversed_shear=even",
     "imperfection.snf_factor=0.9"};
+
+/* The band method as fig7.ini and fig8.ini ran it until session 16: the band held to its
+ * line with the paper's flaw on snf (fig8: on stf too, shear governs), and fig7 on the grid
+ * that follows the bar's stretch; the files' band keys (Le, path_reach, reversed_shear)
+ * stay as written. */
+int ver_band_sets(const char *scene, const char *const **sets)
+{
+  static const char *const fig7[VER_BAND_NSETS] = {"decohesion.path=line", "imperfection.snf_factor=0.9",
+                                                   "grid.motion=stretch"};
+  static const char *const fig8[VER_BAND_NSETS] = {"decohesion.path=line", "imperfection.snf_factor=0.9",
+                                                   "imperfection.stf_factor=0.9"};
+  *sets = !strcmp(scene, "fig7") ? fig7 : !strcmp(scene, "fig8") ? fig8 : NULL;
+  return *sets ? VER_BAND_NSETS : 0;
+}
