@@ -70,4 +70,34 @@ double ana_bar_load_at(const ana_bar *bar, double delta);
 /* External work to end displacement delta_end (quadrature of the curve, GSL). */
 double ana_bar_work(const ana_bar *bar, double delta_end);
 
+/* The same bar at a finite grip speed (ana_wave.c, docs/model.md sec. 5a): the exact
+ * 1-D wave solution from the kernel's start (the steady velocity field), with the plane
+ * as the interface's cohesive line.  90 deg only (uniaxial waves), q = 1, s0 = snf. */
+typedef struct {
+  double speed; /* grip speed (> 0)                                              */
+  double rho;   /* density (> 0); c = sqrt(E / rho)                              */
+  double xg;    /* distance of the plane from the grip, (0, L)                   */
+  double thr;   /* separation threshold on lambda, (0, 1]: the plane opens there */
+} ana_wave_params;
+
+typedef struct {
+  double *P;      /* grip load at delta = i ddelta, i < n                         */
+  long n;
+  double ddelta;  /* sample spacing in delta                                     */
+  double t_onset; /* when the plane starts to soften (snf L / (E speed))         */
+  double Tg, Tf;  /* transit times plane-grip and plane-fixed end                */
+} ana_wave;
+
+/* Solves to delta_end; ANA_EINVAL (message in err) for a bar or parameters outside the
+ * above, ANA_EFAIL if out of memory.  *out owns its samples: ana_wave_free. */
+int ana_wave_init(const ana_bar *bar, const ana_wave_params *wp, double delta_end, ana_wave *out, char *err,
+                  int errlen);
+void ana_wave_free(ana_wave *w);
+
+/* Grip load at delta (linear between samples); NaN outside [0, delta_end]. */
+double ana_wave_load_at(const ana_wave *w, double delta);
+
+/* The largest grip load of the samples, and (if delta_at) its delta. */
+double ana_wave_peak(const ana_wave *w, double *delta_at);
+
 #endif

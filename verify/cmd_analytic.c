@@ -1,7 +1,9 @@
 /*
  * cmd_analytic.c - `delam analytic`: the closed-form uniaxial bar of analytic/ana.h
  * (paper sec. 3.2, eqs. 28-37): r0, g, slopes, snapback, energies, and optionally
- * the load-deflection curve as CSV.
+ * the load-deflection curve as CSV.  With --speed, the same bar at that grip speed
+ * (analytic/ana_wave.c: the exact 1-D wave solution, alpha 90 only) for the peak and the
+ * curve.
  *
  * Options are parsed by hand (no getopt state): `--name value` or `--name=value`.
  * Every bad option gives one line on stderr naming it and its allowed range, and
@@ -36,7 +38,7 @@ typedef struct {
 /* Order matches the slots of the values[] array in ver_cmd_analytic. */
 enum {
   O_ALPHA, O_SNF, O_STF, O_U0, O_S0, O_Q, O_E, O_NU, O_L, O_H, O_MODEL,
-  O_JSON, O_CURVE, O_POINTS, O_DEND, O_HELP, O_COUNT
+  O_JSON, O_CURVE, O_POINTS, O_DEND, O_SPEED, O_RHO, O_HELP, O_COUNT
 };
 
 static const opt_spec specs[O_COUNT] = {
@@ -56,6 +58,9 @@ static const opt_spec specs[O_COUNT] = {
     [O_POINTS] = {"points", OPT_INT, R_POINTS, "integer in [4, 10000000]", "number of curve points"},
     [O_DEND] = {"delta-end", OPT_DBL, R_NONNEG, "finite, >= 0",
                 "end displacement of the curve"},
+    [O_SPEED] = {"speed", OPT_DBL, R_POS, "finite, > 0",
+                 "grip speed: the bar's wave solution at this speed (alpha 90, q 1, s0 = snf)"},
+    [O_RHO] = {"rho", OPT_DBL, R_POS, "finite, > 0", "density, for --speed (wave speed sqrt(E / rho))"},
     [O_HELP] = {"help", OPT_FLAG, R_NONE, "", "this text"},
 };
 
@@ -103,6 +108,10 @@ static void print_help(FILE *f)
       snprintf(def, sizeof def, "default none");
     else if (i == O_DEND)
       snprintf(def, sizeof def, "default 1.5 x the largest delta of the curve");
+    else if (i == O_SPEED)
+      snprintf(def, sizeof def, "default none: the quasi-static bar");
+    else if (i == O_RHO)
+      snprintf(def, sizeof def, "default 1");
     fprintf(f, "  %-16s %s\n", lhs, s->help);
     if (s->kind != OPT_FLAG)
       fprintf(f, "  %-16s   %s; allowed %s\n", "", def, s->allowed);
@@ -192,7 +201,7 @@ static void print_summary(const ana_bar *b)
 
 /* Writes the curve to path.tmp and renames it over path, so a reader never sees a
  * half-written file. */
-static int write_curve(const ana_bar *b, const char *path, int n, double delta_end, int *written)
+static int write_curve(const ana_bar *b, const ana_wave *w, const char *path, int n, double delta_end, int *written)
 {
   double *d = malloc((size_t)n * sizeof *d), *P = malloc((size_t)n * sizeof *P);
   const size_t len = strlen(path) + 5;
@@ -202,7 +211,14 @@ static int write_curve(const ana_bar *b, const char *path, int n, double delta_e
     fprintf(stderr, PROG ": out of memory for %d curve points\n", n);
     goto out;
   }
-  const int k = ana_bar_curve(b, delta_end, n, d, P);
+  int k = n;
+  if (w) /* evenly in delta, from 0 */
+    for (int i = 0; i < n; i++) {
+      d[i] = delta_end * i / (n - 1);
+      P[i] = ana_wave_load_at(w, d[i]);
+    }
+  else
+    k = ana_bar_curve(b, delta_end, n, d, P);
   if (k <= 0) {
     fprintf(stderr, PROG ": no curve for delta_end %g with %d points\n", delta_end, n);
     goto out;
@@ -244,6 +260,7 @@ int ver_cmd_analytic(int argc, char **argv)
   int json = 0, points = 401;
   const char *curve = NULL;
   double delta_end = -1.0; /* < 0: the default, set once the bar is known */
+  double speed = 0.0, rho = 1.0;
 
   for (int i = 1; i < argc; i++) {
     const char *a = argv[i];
@@ -291,6 +308,10 @@ int ver_cmd_analytic(int argc, char **argv)
       p.model = (int)v;
     else if (o == O_POINTS)
       points = (int)v;
+    else if (o == O_SPEED)
+      speed = v;
+    else if (o == O_RHO)
+      rho = v;
     else
       delta_end = v;
   }
@@ -313,8 +334,27 @@ int ver_cmd_analytic(int argc, char **argv)
     delta_end *= 1.5;
   }
 
+  /* the bar at the grip speed: the plane at L / 2, as the scene files' flaw */
+  ana_wave wave = {0};
+  double wpeak = -INFINITY, wdpeak = 0.0;
+  if (speed > 0.0) {
+    const ana_wave_params wp = {speed, rho, 0.5 * p.L, 0.98};
+    const int rc = ana_wave_init(&bar, &wp, delta_end, &wave, err, sizeof err);
+    if (rc != ANA_OK) {
+      fprintf(stderr, PROG ": --speed: %s\n", err);
+      return rc == ANA_EINVAL ? 2 : 1;
+    }
+    wpeak = ana_wave_peak(&wave, &wdpeak);
+  }
   if (json) {
     cJSON *o = to_json(&bar);
+    if (o && speed > 0.0) {
+      cJSON_AddNumberToObject(o, "speed", speed);
+      cJSON_AddNumberToObject(o, "rho", rho);
+      cJSON_AddNumberToObject(o, "wave_Pmax", wpeak);
+      cJSON_AddNumberToObject(o, "wave_delta_peak", wdpeak);
+      cJSON_AddNumberToObject(o, "wave_transit", wave.Tg);
+    }
     char *txt = o ? cJSON_Print(o) : NULL;
     cJSON_Delete(o);
     if (!txt) {
@@ -325,13 +365,21 @@ int ver_cmd_analytic(int argc, char **argv)
     cJSON_free(txt);
   } else {
     print_summary(&bar);
+    if (speed > 0.0)
+      printf("  at speed   %g (rho %g, plane at L / 2, wave transit to the grip %.6g): peak %.6g at delta %.6g,\n"
+             "             %+.3g %% of Pmax: the grip's load rises until the plane's unloading reaches it\n",
+             speed, rho, wave.Tg, wpeak, wdpeak, 100.0 * (wpeak / bar.Pmax - 1.0));
   }
   if (curve) {
     int k = 0;
-    if (write_curve(&bar, curve, points, delta_end, &k))
+    const int rc = write_curve(&bar, speed > 0.0 ? &wave : NULL, curve, points, delta_end, &k);
+    ana_wave_free(&wave);
+    if (rc)
       return 1;
     if (!json)
-      printf("  curve      %d points to delta %.6g written to %s\n", k, delta_end, curve);
+      printf("  curve      %d points to delta %.6g written to %s%s\n", k, delta_end, curve,
+             speed > 0.0 ? " (the wave solution)" : "");
   }
+  ana_wave_free(&wave);
   return 0;
 }

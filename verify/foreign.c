@@ -150,6 +150,7 @@ void ver_foreign_measure(ver_case *c, const ver_table *ld, const ver_table *en, 
   c->k_soft = ver_softening_slope(d, P, n, VER_SOFT_HI, VER_SOFT_LO);
   if (c->have_ana)
     c->curve_l2 = ver_curve_err_bar(&c->ana, d, P, n, ver_curve_end(&c->ana, sc->sep_threshold), NULL);
+  ver_case_wave(c, d, P, n);
   /* separation by the load, with the run's window of 4 L / c in delta */
   const double cw = sqrt(sc->E / (1.0 - sc->nu * sc->nu) / sc->rho);
   const double step = (d[n - 1] - d[0]) / (double)(n - 1);

@@ -334,6 +334,29 @@ double ver_curve_err_bar(const ana_bar *b, const double *delta, const double *P,
   return ver_curve_l2(delta, P, n, delta_end, b->Pmax, bar_load, b, maxdev);
 }
 
+static double wave_load(const void *ctx, double delta)
+{
+  return ana_wave_load_at(ctx, delta);
+}
+
+double ver_curve_err_wave(const ana_bar *b, double speed, double rho, double xg, double thr, const double *delta,
+                          const double *P, size_t n, double delta_end, double *maxdev, double *peak)
+{
+  const ana_wave_params wp = {speed, rho, xg, thr};
+  ana_wave w;
+  if (maxdev)
+    *maxdev = NAN;
+  if (peak)
+    *peak = NAN;
+  if (ana_wave_init(b, &wp, delta_end * 1.01, &w, NULL, 0) != ANA_OK)
+    return NAN;
+  if (peak)
+    *peak = ana_wave_peak(&w, NULL);
+  const double e = ver_curve_l2(delta, P, n, delta_end, b->Pmax, wave_load, &w, maxdev);
+  ana_wave_free(&w);
+  return e;
+}
+
 double ver_sep_ref(const ana_bar *b, double thr)
 {
   double d = b->delta_sep, P;

@@ -132,6 +132,14 @@ double ver_curve_l2(const double *delta, const double *P, size_t n, double delta
 double ver_curve_err_bar(const ana_bar *b, const double *delta, const double *P, size_t n, double delta_end,
                          double *maxdev);
 
+/* The same against the bar at the run's own grip speed (ana_wave: the 1-D wave solution
+ * with the plane as a cohesive line xg from the grip; docs/verification.md "The exact
+ * solution at the grip speed"), to delta_end.  NaN where that solution does not apply
+ * (alpha other than 90, q other than 1, s0 other than snf) or cannot be built.  *peak (if
+ * not NULL) gets that solution's peak load (NaN where it does not apply). */
+double ver_curve_err_wave(const ana_bar *b, double speed, double rho, double xg, double thr, const double *delta,
+                          const double *P, size_t n, double delta_end, double *maxdev, double *peak);
+
 /* Where the curve error stops: the analytic end displacement at which lambda reaches the
  * separation threshold thr (eqs. 31, 34) - where the model is told to separate;
  * delta_sep itself for a threshold of 1. */

@@ -106,10 +106,19 @@ static void check_peak_elastic(ver_case *c, const case_class *q)
   ver_check *k;
   /* one particle per cell samples the stress at the cell centre only; the peak is
    * reached a little early (paper, Fig. 6c: 4 per cell clearly better than 1) */
-  k = add_check(c, "peak_P", c->peak_P, a->Pmax, 1);
+  /* the interface at 90 deg: its model's exact peak at the run's grip speed, which is
+   * the quasi-static one plus the load the grip adds while the plane's unloading travels
+   * to it (+1.6 % at the paper's 0.001; ana_wave.c) */
+  const int wave = sc->path == MPM_PATH_IFACE && isfinite(c->wave_peak);
+  k = add_check(c, "peak_P", c->peak_P, wave ? c->wave_peak : a->Pmax, 1);
   k->tol = ppc1 ? 0.03 : 0.01;
-  snprintf(k->note, sizeof k->note, "peak grip load vs Pmax = r0 H (eq. 30); tol %g %% (ppc %d)", 100 * k->tol,
-           sc->ppc);
+  if (wave)
+    snprintf(k->note, sizeof k->note, "peak grip load vs the exact solution's at grip speed %g (Pmax = r0 H %g, "
+             "eq. 30, plus the grip's load during the unloading wave's transit); tol %g %% (ppc %d)", sc->speed,
+             a->Pmax, 100 * k->tol, sc->ppc);
+  else
+    snprintf(k->note, sizeof k->note, "peak grip load vs Pmax = r0 H (eq. 30); tol %g %% (ppc %d)", 100 * k->tol,
+             sc->ppc);
 
   k = add_check(c, "k_elastic", c->k_elastic, a->k_elastic, 1);
   k->tol = 0.01;
@@ -297,6 +306,18 @@ static void check_band(ver_case *c, const case_class *q)
     known(k, 0.0, 0.35);
   snprintf(k->note, sizeof k->note, "RMS of P - P_ana(delta) / Pmax over rows up to lambda = %g or the peak "
            "(delta %.4g)", sc->sep_threshold, ver_curve_end(a, sc->sep_threshold));
+  /* the interface at 90 deg is the model the exact solution at the grip speed solves
+   * (ana_wave: a cohesive plane in an elastic bar): the run must follow it, ringing and
+   * all, within 1 % of the peak (RMS).  The band method is another model there (every
+   * particle may soften, and the overshoot softens the whole bar a little), so it is
+   * not judged by it.  Measured: 0.0035-0.0085 (iface90.ini, h 8-1, 1 and 4 ppc); the
+   * quasi-static curve itself is 0.0157 from it at the paper's speed 0.001. */
+  if (sc->path == MPM_PATH_IFACE && isfinite(c->curve_wave)) {
+    k = add_check(c, "curve_wave", c->curve_wave, 0.0, 0);
+    k->tol = 0.01;
+    snprintf(k->note, sizeof k->note, "RMS of P - P_wave(delta) / Pmax, the exact 1-D solution at grip speed %g "
+             "(the plane at x %g), over the same rows", sc->speed, sc->imp_x);
+  }
 
   /* once separated the grip carries under 2 % of the peak (issue 13), at every load
    * row from VER_LOAD_SETTLE past separation on (the release's ringing has that long

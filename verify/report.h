@@ -30,6 +30,7 @@ enum {
   REP_PAPER = 64,   /* a paper scene with the paper's method (bilinear, one field, Le = cell) */
   REP_IFACE = 128,  /* an inclined paper scene with decohesion.path = interface (docs/interface.md) */
   REP_BAND = 256,   /* an inclined paper scene whose file runs the interface, with the band method */
+  REP_WAVE = 512,   /* iface90.ini: Fig. 6's bar on the interface, against the exact solution at the grip speed */
 };
 
 /* Outcome of a time-step sweep point. */
@@ -78,6 +79,10 @@ typedef struct {
   int bar_ok;
   double curve_err;     /* RMS (P - P_ana) / Pmax over (0, cmp_end] (ver_curve_l2; NaN if no rows) */
   double max_dev;       /* max |P - P_ana| / Pmax over the same range                         */
+  double curve_wave;    /* RMS (P - P_wave) / Pmax over the same range, against the exact solution at
+                           the grip speed (ver_curve_err_wave; NaN where it does not apply)    */
+  double wave_peak;     /* that solution's peak load (NaN where it does not apply)            */
+  double rho, imp_x;    /* the scene file's density and flaw x (the exact solution's plane)   */
   double cmp_end;       /* the range of the comparison: ver_sep_ref at the run's threshold    */
   double diss_err;      /* D_final / D_sep(analytic) - 1                                      */
   double k_soft;        /* softening slope (ver_softening_slope, 0.8 to 0.2 of the peak)      */
@@ -138,6 +143,8 @@ double ver_report_dt_crit(const rep_ctx *r, const char *scene, double h);
 int ver_report_find_sweep(const rep_ctx *r, const char *scene, double h, int ppc);
 const rep_case *ver_report_first(const rep_ctx *r, int role, const char *scene);
 const rep_case *ver_report_sweep(const rep_ctx *r, const char *scene, double h, int ppc); /* with results */
+/* The case with a role in mask at (h, ppc) that has a result (the last added), or NULL. */
+const rep_case *ver_report_role_at(const rep_ctx *r, int mask, double h, int ppc);
 const rep_case *ver_report_case(const rep_ctx *r, const char *id);                     /* with results */
 void ver_report_build_cases(report *R);
 

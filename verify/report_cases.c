@@ -120,6 +120,7 @@ static int scan_from(report *R)
       snprintf(c->scene, sizeof c->scene, "%.31s", sd.scene);
       c->h = sd.h;
       c->ppc = sd.ppc;
+      c->speed = sd.speed;
       c->role = REP_SWEEP;
       c->have = c->reused = 1;
       c->exit_status = 0;
@@ -177,6 +178,15 @@ static int band_sets(const rep_ctx *r, const char *scene, const char *sets[VER_B
     if (ver_scene_set(&vs, sets[i] = bs[i], err, sizeof err) != 0)
       return 0;
   return n > 0 && ver_scene_validate(&vs, err, sizeof err) == 0 ? n : 0;
+}
+
+/* 1 if the scene file loads. */
+static int has_scene(const rep_ctx *r, const char *scene)
+{
+  char path[REP_PATH + 64], err[256];
+  ver_scene vs;
+  snprintf(path, sizeof path, "%.900s/%.60s.ini", r->scenes, scene);
+  return ver_scene_load(path, &vs, err, sizeof err) == 0;
 }
 
 /* The grid of a scene file (h 8, 1 ppc if it does not load). */
@@ -243,6 +253,11 @@ void ver_report_build_cases(report *R)
       for (double h = 8; h >= 2; h /= 2)
         ver_report_add_sets(r, rep_sweep_scene[s], h, 1, 0, rep_sweep_until[s], bs, nb, REP_BAND, 1);
   }
+  /* Fig. 6's bar on the interface (iface90.ini), the model with an exact solution at the
+   * grip speed, beside fig6.ini's 1-ppc sweep (report_text.c, figure "rate") */
+  if (has_scene(r, "iface90"))
+    for (double h = 8; h >= 1; h /= 2)
+      ver_report_add(r, "iface90", h, 1, 0, rep_sweep_until[0], NULL, NULL, REP_WAVE, 0);
   /* time-step sweep: fig6, h = 8, 1 ppc, to delta 0.5 */
   const double crit = ver_report_dt_crit(r, "fig6", 8);
   for (int i = 0; i < NSTAB; i++)
@@ -286,6 +301,15 @@ const rep_case *ver_report_case(const rep_ctx *r, const char *id)
 {
   const int k = ver_report_find(r, id);
   return k >= 0 && r->c[k].have ? &r->c[k] : NULL;
+}
+
+const rep_case *ver_report_role_at(const rep_ctx *r, int mask, double h, int ppc)
+{
+  const rep_case *q = NULL;
+  for (int i = 0; i < r->n; i++)
+    if ((r->c[i].role & mask) && r->c[i].have && r->c[i].h == h && r->c[i].ppc == ppc)
+      q = &r->c[i];
+  return q;
 }
 
 const rep_case *ver_report_sweep(const rep_ctx *r, const char *scene, double h, int ppc)

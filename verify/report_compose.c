@@ -98,6 +98,26 @@ static void table_runs(report *R)
   }
 }
 
+/* The figure "rate": fig6.ini's 1-ppc sweep and iface90.ini's runs, each against the
+ * quasi-static curve and against the exact solution at the grip speed. */
+static void table_rate(report *R)
+{
+  static const char *const head[7] = {"case", "method", "h", "peak P (exact at the speed)",
+                                      "RMS load error / Pmax: quasi-static", "against the exact solution", "D"};
+  rep_table *t = rep_doc_table(&R->doc, 7, head);
+  for (int k = 0; k < 2; k++)
+    for (double h = 8; h >= 1; h /= 2) {
+      const rep_case *c = k ? ver_report_role_at(&R->r, REP_WAVE, h, 1) : ver_report_sweep(&R->r, "fig6", h, 1);
+      if (!c)
+        continue;
+      char a[32], b[32], d[32], e[32], f[32], m[192];
+      ver_report_method(c, m, sizeof m);
+      rep_table_row(t, c->complete ? REP_ROW_PLAIN : REP_ROW_FAIL, "%s\t%s\t%g\t%s (%s)\t%s\t%s\t%s", c->id, m, h,
+                    num(c->peak_P, a, sizeof a), num(c->wave_peak, b, sizeof b), num(c->curve_err, d, sizeof d),
+                    num(c->curve_wave, e, sizeof e), num(c->D_final, f, sizeof f));
+    }
+}
+
 /* The data table that goes with a figure, if any. */
 static void fig_table(report *R, const char *name)
 {
@@ -108,6 +128,8 @@ static void fig_table(report *R, const char *name)
       table_sweep(R, rep_sweep_scene[s]);
   else if (!strcmp(name, "stab"))
     table_stab(R);
+  else if (!strcmp(name, "rate"))
+    table_rate(R);
   else if (!strcmp(name, "snapback"))
     table_role(R, REP_SNAP);
   else if (!strcmp(name, "scheme"))

@@ -64,20 +64,25 @@ int ver_report_load(const rep_case *c, double **delta, double **P)
   return n > 0 ? (int)n : 0;
 }
 
-/* The analytic bar of a scene file (overrides do not change it). */
-static int scene_bar(const rep_ctx *r, const char *scene, ana_bar *bar)
+/* The analytic bar of a scene file (overrides do not change it), with the density and
+ * the flaw's x (where the plane of the exact solution at the grip speed lies). */
+static int scene_bar(const rep_ctx *r, const char *scene, ana_bar *bar, double *rho, double *imp_x)
 {
   char path[REP_PATH + 64], err[256];
   ver_scene vs;
   snprintf(path, sizeof path, "%s/%s.ini", r->scenes, scene);
   if (ver_scene_load(path, &vs, err, sizeof err) != 0)
     return -1;
+  *rho = vs.sc.rho;
+  *imp_x = vs.sc.imp_x;
   return ver_scene_bar(&vs.sc, bar, err, sizeof err) == 0 ? 0 : -1;
 }
 
 void ver_report_measure(const rep_ctx *r, rep_case *c)
 {
-  c->bar_ok = scene_bar(r, c->scene, &c->bar) == 0;
+  c->rho = c->imp_x = NAN;
+  c->bar_ok = scene_bar(r, c->scene, &c->bar, &c->rho, &c->imp_x) == 0;
+  c->curve_wave = c->wave_peak = NAN;
   if (!c->have || !c->bar_ok)
     return;
   const ana_bar *b = &c->bar;
@@ -93,6 +98,8 @@ void ver_report_measure(const rep_ctx *r, rep_case *c)
   c->max_absP = mabs;
   if (n > 0) {
     c->curve_err = ver_curve_err_bar(b, d, P, (size_t)n, c->cmp_end, &c->max_dev);
+    c->curve_wave = ver_curve_err_wave(b, c->speed, c->rho, c->imp_x, isfinite(c->sep_threshold) ? c->sep_threshold : 0.98,
+                                       d, P, (size_t)n, c->cmp_end, NULL, &c->wave_peak);
     c->k_soft = ver_softening_slope(d, P, (size_t)n, VER_SOFT_HI, VER_SOFT_LO);
     c->drop_width = ver_drop_width(d, P, (size_t)n);
   }

@@ -75,6 +75,46 @@ static void write_ana_curve(const rep_ctx *r, const char *name, const ana_bar *b
   fclose(f);
 }
 
+/* The figure "rate": the exact solution at the grip speed of iface90.ini's bar (Fig. 6's)
+ * as wave.csv, and rate.dat, the curve errors of fig6.ini's 1-ppc sweep and of
+ * iface90.ini's runs against the quasi-static curve and against that solution by h;
+ * vars rate_fig6_h<h>, rate_iface_h<h> (case ids). */
+static void write_rate(const rep_ctx *r, FILE *vars)
+{
+  const rep_case *w = NULL;
+  for (int i = 0; i < r->n && !w; i++)
+    if ((r->c[i].role & REP_WAVE) && r->c[i].have && r->c[i].bar_ok && isfinite(r->c[i].wave_peak))
+      w = &r->c[i];
+  fprintf(vars, "have_rate = %d\n", w != NULL);
+  if (!w)
+    return;
+  char err[200];
+  const ana_wave_params wp = {w->speed, w->rho, w->imp_x, isfinite(w->sep_threshold) ? w->sep_threshold : 0.98};
+  ana_wave a;
+  if (ana_wave_init(&w->bar, &wp, 0.6, &a, err, sizeof err) == ANA_OK) {
+    FILE *f = open_data(r, "wave.csv");
+    if (f) {
+      fprintf(f, "delta,P\n");
+      for (int i = 0; i <= 1200; i++)
+        fprintf(f, "%.10g,%.10g\n", 0.0005 * i, ana_wave_load_at(&a, 0.0005 * i));
+      fclose(f);
+    }
+    ana_wave_free(&a);
+  }
+  FILE *f = open_data(r, "rate.dat");
+  if (f)
+    fprintf(f, "# h fig6_static fig6_exact iface90_static iface90_exact\n");
+  for (double h = 8; h >= 1; h /= 2) {
+    const rep_case *p = ver_report_sweep(r, "fig6", h, 1), *q = ver_report_role_at(r, REP_WAVE, h, 1);
+    if (f)
+      fprintf(f, "%g %.6g %.6g %.6g %.6g\n", h, p ? p->curve_err : NAN, p ? p->curve_wave : NAN, q ? q->curve_err : NAN,
+              q ? q->curve_wave : NAN);
+    fprintf(vars, "rate_fig6_h%g = \"%s\"\nrate_iface_h%g = \"%s\"\n", h, p ? p->id : "", h, q ? q->id : "");
+  }
+  if (f)
+    fclose(f);
+}
+
 /* Fig. 3: sigma* against E e_ave / r0 for q = 0.8, 1, 1.2 and g = 0.75, 1.25, 2 (L chosen
  * for g: with r0 = 1 and alpha = 90, g = E U0 / L). */
 const double rep_fig3_q[3] = {0.8, 1.0, 1.2}, rep_fig3_g[3] = {0.75, 1.25, 2.0};
@@ -310,6 +350,7 @@ void ver_report_write_data(report *R)
   write_fig3(r, vars);
   write_sweeps(r, R->fits, vars);
   write_stab(r, vars);
+  write_rate(r, vars);
   write_vars_case(vars, "pic_fig6", ver_report_first(r, REP_PIC, "fig6"));
   write_vars_case(vars, "pic_fig7", ver_report_first(r, REP_PIC, "fig7"));
   write_vars_case(vars, "pic_fig8", ver_report_first(r, REP_PIC, "fig8"));

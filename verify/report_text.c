@@ -16,7 +16,7 @@
 
 /* The figures, in order; "scheme" only where time.scheme=musl exists. */
 static const char *const FIGS[] = {"fig3", "fig6a", "fig6b", "fig6c", "fig7a", "fig7b", "fig7c", "fig7d",
-                                   "fig8a", "fig8b", "fig8c", "energy", "conv", "workprec", "stab",
+                                   "fig8a", "fig8b", "fig8c", "energy", "conv", "rate", "workprec", "stab",
                                    "snapback", "separation", "scheme"};
 
 void ver_report_plan_figs(report *R)
@@ -79,6 +79,8 @@ static void case_vars(report *R, const char *key, const rep_case *c)
   num(R, key, "k_soft", c->k_soft);
   num(R, key, "D_final", c->D_final);
   num(R, key, "curve_err", c->curve_err);
+  num(R, key, "curve_wave", c->curve_wave);
+  num(R, key, "wave_peak", c->wave_peak);
   num(R, key, "drop_width", c->drop_width);
   num(R, key, "delta_end", c->delta_end);
   num(R, key, "cpu_s", c->cpu_s);
@@ -296,6 +298,39 @@ static void sweep_vars(report *R)
   rep_vars_set(&R->vars, "run:from", "%s", R->r.from[0] ? R->r.from : "(none)");
 }
 
+/* The figure "rate": iface90.ini's runs by h (rate_iface_h<h>), and how far the exact
+ * solution at the grip speed itself lies from the quasi-static curve (rate:static). */
+static void rate_vars(report *R)
+{
+  const rep_ctx *r = &R->r;
+  const rep_case *w = NULL;
+  for (double h = 8; h >= 1; h /= 2) {
+    const rep_case *q = ver_report_role_at(r, REP_WAVE, h, 1);
+    char key[64];
+    snprintf(key, sizeof key, "rate_iface_h%g", h);
+    case_vars(R, key, q);
+    if (q && q->have && q->bar_ok && isfinite(q->wave_peak))
+      w = q;
+  }
+  double e = NAN;
+  if (w) {
+    const ana_wave_params wp = {w->speed, w->rho, w->imp_x, isfinite(w->sep_threshold) ? w->sep_threshold : 0.98};
+    ana_wave a;
+    if (ana_wave_init(&w->bar, &wp, w->cmp_end + 0.01, &a, NULL, 0) == ANA_OK) {
+      enum { N = 2000 };
+      static double d[N], P[N];
+      for (int i = 0; i < N; i++) {
+        d[i] = w->cmp_end * (i + 1) / N;
+        P[i] = ana_wave_load_at(&a, d[i] - 0.5 * w->cmp_end / N); /* at the interval's midpoint */
+      }
+      e = ver_curve_err_bar(&w->bar, d, P, N, w->cmp_end, NULL);
+      ana_wave_free(&a);
+    }
+    num(R, "rate", "speed", w->speed);
+  }
+  num(R, "rate", "static", e);
+}
+
 /* The time-step sweep's bounds. */
 static void stab_vars(report *R)
 {
@@ -340,4 +375,5 @@ void ver_report_set_vars(report *R)
   ppc_vars(R);
   sweep_vars(R);
   stab_vars(R);
+  rate_vars(R);
 }

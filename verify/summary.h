@@ -53,7 +53,7 @@ typedef struct {
                                taken out of L_scheme (two velocity fields) */
 #define VER_SCHEMA_PARTICLES 1
 #define VER_SCHEMA_LINE 1 /* <snapshot>-line.csv: decohesion.path = interface */
-#define VER_SCHEMA_VERIFY 2     /* verify.json and verify.csv                       */
+#define VER_SCHEMA_VERIFY 3     /* verify.json and verify.csv                       */
 #define VER_SCHEMA_CHECK 1      /* check.json                                        */
 /* scene.ini: VER_SCHEMA_SCENE in scene.h */
 

@@ -57,6 +57,8 @@ typedef struct {
   double peak_P, delta_peak, delta_sep, k_elastic, D_final, W_ext_final, energy_residual, delta_end;
   double energy_unbooked;      /* the balance without the booked losses (summary.json) */
   double k_soft, curve_l2, band_width, band_extent, angle;
+  double curve_wave; /* the curve error against the bar at the run's grip speed (ver_case_wave) */
+  double wave_peak;  /* that solution's peak load (ver_case_wave; NaN where it does not apply) */
   double D_diffuse;  /* dissipation outside the band, over U0 x area (ver_diffuse_share) */
   double P_after;    /* largest |P| past separation, over the peak (ver_load_after)       */
   double P_after_t, P_after_c; /* its largest tension and compression, over the peak   */
@@ -81,6 +83,12 @@ typedef struct {
 /* sweep_cases.c */
 /* 1 if the case's plane is at 90 deg (along a grid line). */
 int ver_case_a90(const ver_case *c);
+
+/* The exact solution at the case's own grip speed (ver_curve_err_wave, the plane at
+ * imperfection.x from the grip): c->curve_wave, the load-curve error against it over the
+ * same rows as curve_l2, and c->wave_peak, its peak; NaN where that solution does not
+ * apply (not alpha 90, q 1, s0 = snf) or without an analytic bar. */
+void ver_case_wave(ver_case *c, const double *delta, const double *P, size_t n);
 /* Sets up case c of scene file path (name scene) at h, ppc with variant v: id,
  * overrides, analytic bar, end displacement.  0, or 2 with err. */
 int ver_case_init(ver_case *c, const char *path, const char *scene, double h, int ppc, ver_variant v, char *err,

@@ -74,6 +74,15 @@ int ver_case_a90(const ver_case *c)
   return fabs(c->vs.sc.alpha_deg - 90.0) < 1e-9;
 }
 
+void ver_case_wave(ver_case *c, const double *delta, const double *P, size_t n)
+{
+  const mpm_scene *sc = &c->vs.sc;
+  c->curve_wave = c->wave_peak = NAN;
+  if (c->have_ana)
+    c->curve_wave = ver_curve_err_wave(&c->ana, sc->speed, sc->rho, sc->imp_x, sc->sep_threshold, delta, P, n,
+                                       ver_curve_end(&c->ana, sc->sep_threshold), NULL, &c->wave_peak);
+}
+
 /* Sets up case c: id, overrides, the analytic bar and the end displacement.
  * end_delta covers separation with margin (the run stops itself stop_margin past
  * separation, and the grid is sized to end_delta, so it is kept as small as is safe):
@@ -269,7 +278,7 @@ void ver_case_read(const ver_verify_opts *o, ver_case *c)
   ver_case_dir(o, c, dir, sizeof dir);
   c->peak_P = c->delta_peak = c->delta_sep = c->k_elastic = NAN;
   c->D_final = c->W_ext_final = c->energy_residual = c->energy_unbooked = c->delta_end = NAN;
-  c->k_soft = c->curve_l2 = c->band_width = c->band_extent = c->angle = c->D_diffuse = c->P_after = c->P_after_t = c->P_after_c = NAN;
+  c->k_soft = c->curve_l2 = c->curve_wave = c->wave_peak = c->band_width = c->band_extent = c->angle = c->D_diffuse = c->P_after = c->P_after_t = c->P_after_c = NAN;
   ver_summary_doc sd;
   if (ver_summary_read(dir, &sd) == 0) {
     const ver_summary *u = &sd.u;
@@ -318,6 +327,7 @@ void ver_case_read(const ver_verify_opts *o, ver_case *c)
   if (nl > 0 && c->have_ana) {
     c->k_soft = ver_softening_slope(lc[0], lc[1], (size_t)nl, VER_SOFT_HI, VER_SOFT_LO);
     c->curve_l2 = ver_curve_err_bar(&c->ana, lc[0], lc[1], (size_t)nl, ver_curve_end(&c->ana, c->vs.sc.sep_threshold), NULL);
+    ver_case_wave(c, lc[0], lc[1], (size_t)nl);
   }
   if (nl > 0)
     c->P_after = ver_load_after(lc[0], lc[1], (size_t)nl, c->delta_sep, c->peak_P, &c->P_after_t, &c->P_after_c);

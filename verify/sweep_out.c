@@ -159,7 +159,8 @@ int ver_sweep_write_csv(const ver_verify_opts *o, const ver_case *cs, int n)
                           "# delam verify.csv schema %d\n"
                           "case,scene,variant,h,ppc,verdict,complete,exit_status,wall_s,peak_P,peak_err,"
                           "k_elastic_err,k_soft,k_soft_err,delta_sep,delta_sep_err,D_final,D_err,D_diffuse,W_ext_final,"
-                          "W_err,energy_residual,band_width,band_extent,crack_angle,curve_l2,load_after_sep,n_fail,n_known,error\n",
+                          "W_err,energy_residual,band_width,band_extent,crack_angle,curve_l2,curve_wave,load_after_sep,n_fail,n_known,"
+                          "error\n",
                           VER_SCHEMA_VERIFY);
   for (int i = 0; i < n; i++) {
     const ver_case *c = &cs[i];
@@ -175,13 +176,13 @@ int ver_sweep_write_csv(const ver_verify_opts *o, const ver_case *cs, int n)
         *p = ' ';
     len += (size_t)snprintf(buf + len, cap - len,
                             "%s,%s,%s,%g,%d,%s,%d,%d,%.4g,%.9g,%.6g,%.6g,%.9g,%.6g,%.6g,%.6g,%.9g,%.6g,%.4g,%.9g,%.6g,"
-                            "%.6g,%.4g,%.4g,%.4g,%.6g,%.4g,%d,%d,%s\n",
+                            "%.6g,%.4g,%.4g,%.4g,%.6g,%.6g,%.4g,%d,%d,%s\n",
                             c->id, c->scene, c->var.suffix, c->vs.sc.h, c->vs.sc.ppc, ver_verdict_name(c->verdict),
                             c->complete, c->exit_code, c->wall_s, c->peak_P, chk_err(c, "peak_P"),
                             chk_err(c, "k_elastic"), c->k_soft, chk_err(c, "k_soft"), c->delta_sep,
                             chk_err(c, "delta_sep"), c->D_final, chk_err(c, "D_final"), c->D_diffuse, c->W_ext_final,
                             chk_err(c, "W_ext_final"), c->energy_residual, c->band_width, c->band_extent, c->angle,
-                            c->curve_l2, c->P_after, nf, nk, err);
+                            c->curve_l2, c->curve_wave, c->P_after, nf, nk, err);
     if (len >= cap - 1)
       break;
   }
@@ -233,12 +234,12 @@ void ver_sweep_print_check(const char *id, const ver_check *k)
 
 void ver_sweep_print_table(const ver_case *cs, int n, const ver_cross *x, int nx)
 {
-  printf("\n%-28s %9s %9s %9s %9s %9s %7s  %s\n", "case", "peak err", "D err", "D diffuse", "E resid",
-         "curve L2", "wall s", "verdict");
+  printf("\n%-28s %9s %9s %9s %9s %9s %9s %7s  %s\n", "case", "peak err", "D err", "D diffuse", "E resid",
+         "curve L2", "wave L2", "wall s", "verdict");
   for (int i = 0; i < n; i++) {
     const ver_case *c = &cs[i];
-    printf("%-28s %+8.2f%% %+8.2f%% %8.2f%% %9.2e %9.4f %7.1f  %s%s%s\n", c->id, 100 * chk_err(c, "peak_P"),
-           100 * chk_err(c, "D_final"), 100 * c->D_diffuse, c->energy_residual, c->curve_l2, c->wall_s,
+    printf("%-28s %+8.2f%% %+8.2f%% %8.2f%% %9.2e %9.4f %9.4f %7.1f  %s%s%s\n", c->id, 100 * chk_err(c, "peak_P"),
+           100 * chk_err(c, "D_final"), 100 * c->D_diffuse, c->energy_residual, c->curve_l2, c->curve_wave, c->wall_s,
            VNAME[c->verdict],
            c->error[0] ? ": " : "", c->error);
   }
