@@ -196,6 +196,8 @@ int ver_sweep_cases(const ver_verify_opts *o, ver_case **out, int *nout)
       {"fig7", 8, 1, &V_BASE}, {"fig7", 4, 1, &V_BASE}, {"fig7", 2, 1, &V_BASE},
       /* the rate: h 8, 4, 2 at v = 0.001 h / 8, and h 4 at v 0.001, 0.0005, 0.00025 (1 ppc) */
       {"fig6", 4, 1, &V_V2}, {"fig6", 2, 1, &V_V4}, {"fig6", 4, 1, &V_V4},
+      /* Fig. 6's bar on the interface against the exact solution at its grip speed */
+      {"iface90", 4, 1, &V_BASE},
     };
     const int nq = (int)(sizeof q / sizeof q[0]);
     cs = calloc((size_t)nq, sizeof *cs);
