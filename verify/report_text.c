@@ -14,7 +14,8 @@
 #include "metrics.h"
 #include "report.h"
 
-/* The figures, in order; "scheme" only where time.scheme=musl exists. */
+/* The figures, in order; "scheme" only where time.scheme=musl exists, "rate" only where
+ * the scene folder has iface90.ini (its cases, REP_WAVE). */
 static const char *const FIGS[] = {"fig3", "fig6a", "fig6b", "fig6c", "fig7a", "fig7b", "fig7c", "fig7d",
                                    "fig8a", "fig8b", "fig8c", "energy", "conv", "rate", "workprec", "stab",
                                    "snapback", "separation", "scheme"};
@@ -24,6 +25,11 @@ void ver_report_plan_figs(report *R)
   R->nfig = 0;
   for (size_t i = 0; i < sizeof FIGS / sizeof FIGS[0] && R->nfig < REP_MAX_FIGS; i++) {
     if (!strcmp(FIGS[i], "scheme") && !R->r.have_musl)
+      continue;
+    int wave = 0;
+    for (int k = 0; k < R->r.n; k++)
+      wave |= (R->r.c[k].role & REP_WAVE) != 0;
+    if (!strcmp(FIGS[i], "rate") && !wave)
       continue;
     rep_fig *f = &R->fig[R->nfig++];
     snprintf(f->name, sizeof f->name, "%s", FIGS[i]);
