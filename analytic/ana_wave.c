@@ -59,11 +59,11 @@ static int bad(char *err, int errlen, const char *msg)
   return ANA_EINVAL;
 }
 
-/* history value at (fractional) step s, zero before the onset (s < 0) */
+/* history value at (fractional) step s; zero up to the onset (s <= 0, where h[0] = 0) */
 static double hist(const double *h, long n, double s)
 {
-  if (s <= 0.0)
-    return s < -1.0 || n == 0 ? 0.0 : (1.0 + s) * h[0];
+  if (s <= 0.0 || n == 0)
+    return 0.0;
   const long i = (long)s;
   if (i + 1 >= n)
     return h[n - 1];
@@ -152,8 +152,7 @@ int ana_wave_init(const ana_bar *bar, const ana_wave_params *wp, double delta_en
       B[k + 1] = Rp1 + 2.0 * (T1 - sh1) / Z;
       k++;
     }
-    const double sh = kh * t;
-    P[i] = tau < Tg ? p->H * sh : p->H * (sh - Z * hist(A, k + 1, (tau - Tg) / dt));
+    P[i] = p->H * (kh * t - Z * hist(A, k + 1, (tau - Tg) / dt)); /* 0 until the unloading reaches the grip */
   }
   free(A);
   free(B);

@@ -372,10 +372,10 @@ int ver_cmd_analytic(int argc, char **argv)
   }
   if (curve) {
     int k = 0;
-    const int rc = write_curve(&bar, speed > 0.0 ? &wave : NULL, curve, points, delta_end, &k);
-    ana_wave_free(&wave);
-    if (rc)
+    if (write_curve(&bar, speed > 0.0 ? &wave : NULL, curve, points, delta_end, &k)) {
+      ana_wave_free(&wave);
       return 1;
+    }
     if (!json)
       printf("  curve      %d points to delta %.6g written to %s%s\n", k, delta_end, curve,
              speed > 0.0 ? " (the wave solution)" : "");

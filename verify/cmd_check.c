@@ -249,10 +249,7 @@ static void print_verdict(const char *label, const ver_case *c, const check_info
            in->D_after_cut, in->D_ref, in->D_cut / in->D_ref, in->D_after_cut / in->D_ref);
   else if (have_en)
     printf("%-11s %s D_cut: left out (%s)\n", "info", label, in->why);
-  int judged = 0;
-  for (int j = 0; j < c->nchk; j++)
-    judged |= !strcmp(c->chk[j].name, "curve_wave");
-  if (!judged && isfinite(c->curve_wave))
+  if (!ver_case_check(c, "curve_wave") && isfinite(c->curve_wave))
     printf("%-11s %s curve_wave: %.4g, RMS of P - P_wave / Pmax against the exact solution at grip speed %g of a "
            "bar whose only weak plane is at x %g (a cohesive line; this run's path is another model there) -- "
            "informational, never judged\n",

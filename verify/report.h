@@ -143,6 +143,9 @@ double ver_report_dt_crit(const rep_ctx *r, const char *scene, double h);
 int ver_report_find_sweep(const rep_ctx *r, const char *scene, double h, int ppc);
 const rep_case *ver_report_first(const rep_ctx *r, int role, const char *scene);
 const rep_case *ver_report_sweep(const rep_ctx *r, const char *scene, double h, int ppc); /* with results */
+/* report_data.c: the exact solution at case c's grip speed (its scene's density, flaw x
+ * and the run's separation threshold, 0.98 if the summary has none). */
+ana_wave_params ver_report_wave_params(const rep_case *c);
 /* The case with a role in mask at (h, ppc) that has a result (the last added), or NULL. */
 const rep_case *ver_report_role_at(const rep_ctx *r, int mask, double h, int ppc);
 const rep_case *ver_report_case(const rep_ctx *r, const char *id);                     /* with results */

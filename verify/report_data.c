@@ -78,6 +78,12 @@ static int scene_bar(const rep_ctx *r, const char *scene, ana_bar *bar, double *
   return ver_scene_bar(&vs.sc, bar, err, sizeof err) == 0 ? 0 : -1;
 }
 
+ana_wave_params ver_report_wave_params(const rep_case *c)
+{
+  const ana_wave_params wp = {c->speed, c->rho, c->imp_x, isfinite(c->sep_threshold) ? c->sep_threshold : 0.98};
+  return wp;
+}
+
 void ver_report_measure(const rep_ctx *r, rep_case *c)
 {
   c->rho = c->imp_x = NAN;
@@ -98,8 +104,9 @@ void ver_report_measure(const rep_ctx *r, rep_case *c)
   c->max_absP = mabs;
   if (n > 0) {
     c->curve_err = ver_curve_err_bar(b, d, P, (size_t)n, c->cmp_end, &c->max_dev);
-    c->curve_wave = ver_curve_err_wave(b, c->speed, c->rho, c->imp_x, isfinite(c->sep_threshold) ? c->sep_threshold : 0.98,
-                                       d, P, (size_t)n, c->cmp_end, NULL, &c->wave_peak);
+    const ana_wave_params wp = ver_report_wave_params(c);
+    c->curve_wave = ver_curve_err_wave(b, wp.speed, wp.rho, wp.xg, wp.thr, d, P, (size_t)n, c->cmp_end, NULL,
+                                       &c->wave_peak);
     c->k_soft = ver_softening_slope(d, P, (size_t)n, VER_SOFT_HI, VER_SOFT_LO);
     c->drop_width = ver_drop_width(d, P, (size_t)n);
   }

@@ -89,7 +89,7 @@ static void write_rate(const rep_ctx *r, FILE *vars)
   if (!w)
     return;
   char err[200];
-  const ana_wave_params wp = {w->speed, w->rho, w->imp_x, isfinite(w->sep_threshold) ? w->sep_threshold : 0.98};
+  const ana_wave_params wp = ver_report_wave_params(w);
   ana_wave a;
   if (ana_wave_init(&w->bar, &wp, 0.6, &a, err, sizeof err) == ANA_OK) {
     FILE *f = open_data(r, "wave.csv");

@@ -23,12 +23,12 @@ static const char *const FIGS[] = {"fig3", "fig6a", "fig6b", "fig6c", "fig7a", "
 void ver_report_plan_figs(report *R)
 {
   R->nfig = 0;
+  int wave = 0;
+  for (int k = 0; k < R->r.n; k++)
+    wave |= (R->r.c[k].role & REP_WAVE) != 0;
   for (size_t i = 0; i < sizeof FIGS / sizeof FIGS[0] && R->nfig < REP_MAX_FIGS; i++) {
     if (!strcmp(FIGS[i], "scheme") && !R->r.have_musl)
       continue;
-    int wave = 0;
-    for (int k = 0; k < R->r.n; k++)
-      wave |= (R->r.c[k].role & REP_WAVE) != 0;
     if (!strcmp(FIGS[i], "rate") && !wave)
       continue;
     rep_fig *f = &R->fig[R->nfig++];
@@ -320,7 +320,7 @@ static void rate_vars(report *R)
   }
   double e = NAN;
   if (w) {
-    const ana_wave_params wp = {w->speed, w->rho, w->imp_x, isfinite(w->sep_threshold) ? w->sep_threshold : 0.98};
+    const ana_wave_params wp = ver_report_wave_params(w);
     ana_wave a;
     if (ana_wave_init(&w->bar, &wp, w->cmp_end + 0.01, &a, NULL, 0) == ANA_OK) {
       enum { N = 2000 };

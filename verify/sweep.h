@@ -89,6 +89,9 @@ int ver_case_a90(const ver_case *c);
  * same rows as curve_l2, and c->wave_peak, its peak; NaN where that solution does not
  * apply (not alpha 90, q 1, s0 = snf) or without an analytic bar. */
 void ver_case_wave(ver_case *c, const double *delta, const double *P, size_t n);
+
+/* The case's check of that name, or NULL if it has none. */
+const ver_check *ver_case_check(const ver_case *c, const char *name);
 /* Sets up case c of scene file path (name scene) at h, ppc with variant v: id,
  * overrides, analytic bar, end displacement.  0, or 2 with err. */
 int ver_case_init(ver_case *c, const char *path, const char *scene, double h, int ppc, ver_variant v, char *err,

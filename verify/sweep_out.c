@@ -135,7 +135,7 @@ int ver_sweep_write_json(const ver_verify_opts *o, const ver_case *cs, int n, co
   return r;
 }
 
-static const ver_check *find_chk(const ver_case *c, const char *name)
+const ver_check *ver_case_check(const ver_case *c, const char *name)
 {
   for (int i = 0; i < c->nchk; i++)
     if (!strcmp(c->chk[i].name, name))
@@ -145,7 +145,7 @@ static const ver_check *find_chk(const ver_case *c, const char *name)
 
 static double chk_err(const ver_case *c, const char *name)
 {
-  const ver_check *k = find_chk(c, name);
+  const ver_check *k = ver_case_check(c, name);
   return k ? k->error : NAN;
 }
 

@@ -124,8 +124,8 @@ static void bar_case(double snf, double stf, const char *mode)
   /* every segment is open, lambda 1, and the segments' lengths (the line integrals of
    * the nodes' uGIMP weights, a partition of unity) sum to the crack's length */
   assert_rel(e.D, sc.U0 * area, 1e-3, what);
-  /* the law's work to lambda = 0.98 is UF x area x (1 - 0.02^2); the explicit lambda
-   * update and the steps whose traction took no work leave a little more */
+  /* the law's work to lambda = 0.98 is UF x area x (1 - 0.02^2), lambda taken in closed
+   * form from the work (mpm_iface.c advance) */
   snprintf(what, sizeof what, "%s: cohesive work at the cut vs UF area", mode);
   assert_rel(Wcut, 0.5 * sc.U0 * area, 0.01, what);
   snprintf(what, sizeof what, "%s: load after the cut vs the peak", mode);

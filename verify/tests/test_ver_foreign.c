@@ -93,10 +93,8 @@ static void test_ver_foreign_triangle(void **state)
 /* The verdict of a check by name; -1 if the case has none. */
 static int verdict_of(const ver_case *c, const char *name)
 {
-  for (int j = 0; j < c->nchk; j++)
-    if (!strcmp(c->chk[j].name, name))
-      return c->chk[j].verdict;
-  return -1;
+  const ver_check *k = ver_case_check(c, name);
+  return k ? k->verdict : -1;
 }
 
 /* Another code's result for iface90.ini (the crack as one cohesive line at 90 deg),
