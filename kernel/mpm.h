@@ -109,6 +109,13 @@ enum { MPM_PATH_FREE = 0, MPM_PATH_LINE = 1, MPM_PATH_IFACE = 2 };
  * neither starts nor drives decohesion, as <sn> keeps normal compression out of eq. 23
  * (mpm_decohesion.c; docs/bands.md sec. 5j). */
 enum { MPM_SHEAR_EVEN = 0, MPM_SHEAR_CLOSING = 1 };
+/* decohesion.share (path = interface): how a softening segment's traction is shared among
+ * its nodes (mpm_iface.c).  STICK: each node's own stick impulse, scaled by the segment's
+ * factor.  LINE: the segment's traction times the node's length of line An (the consistent
+ * nodal force of a traction on the line), never more than sticks the node; built for a
+ * line along a node column that the grid follows (alpha 90, grid.motion = stretch; the
+ * crack on a node column, mpm_sim.c), docs/interface.md, "The column on the line". */
+enum { MPM_SHARE_STICK = 0, MPM_SHARE_LINE = 1 };
 
 /* ---- scene: everything a run needs, as plain numbers (filled by verify/scene.c) ---- */
 typedef struct {
@@ -130,6 +137,7 @@ typedef struct {
   int imp_size;          /* MPM_IMP_PARTICLE (the paper) or MPM_IMP_CELL               */
   int path;              /* MPM_PATH_FREE (the paper) or MPM_PATH_LINE                 */
   int reversed_shear;    /* MPM_SHEAR_EVEN (the paper) or MPM_SHEAR_CLOSING            */
+  int share;             /* path = interface: MPM_SHARE_STICK (default) or MPM_SHARE_LINE */
   double path_reach;     /* LINE: the band's half-width beyond the crossed cells, in cells */
   double h;              /* grid spacing                                               */
   int ppc;               /* particles per cell, a perfect square (1, 4, 9, ...)        */

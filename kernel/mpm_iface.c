@@ -8,7 +8,9 @@
  * The paper's decohesion law (Model 1 with q = 1, eqs. 8-10) acts on the line itself:
  *  - the two fields (mpm_fields.c) exist from the first step.  Every node within
  *    MPM_IFACE_REACH h (|sin a| + |cos a|) of the line at alpha through the flaw is split,
- *    and a particle's side is fixed by its reference centre (mpm_iface_side);
+ *    and a particle's side is fixed by its reference centre (mpm_iface_side; a centre
+ *    on the line takes the first side, so at alpha 90 the crack runs along the edge of
+ *    the flaw's particle column);
  *  - the line is cut into segments of MPM_IFACE_SEG h.  A node belongs to the segment of
  *    its projection on the line and carries An, the line's length weighted by the node's
  *    uGIMP weight for a particle centred on it, so a segment's nodes share its length;
@@ -24,8 +26,14 @@
  *    traction J / (dt An) to the surface released the bar at 1 ppc: the stick traction
  *    scatters from node to node there, every node above the surface was cut at once, and
  *    the load fell from the peak to a quarter within half a wave transit: fig7 h 4,
- *    k_soft -5346 against the analytic -563; docs/interface.md.)  lambda grows by the traction's work on the
- *    opening, dW per unit area (the impulse times the fields' relative velocity v'2 - v'1,
+ *    k_soft -5346 against the analytic -563; docs/interface.md.)
+ *    decohesion.share = line instead gives each node the segment's traction times its
+ *    length of line An (of the length at the nodes holding both fields), capped at its
+ *    stick impulse: with a line along a node column (alpha 90, the grid following the
+ *    bar) the scaled stick impulses leave the traction's spread among a segment's rows
+ *    free, and a mode grew in it (iface90 h 1, 4 ppc: L_flip 2.5; docs/interface.md,
+ *    "The column on the line").  lambda grows by the traction's work on the opening,
+ *    dW per unit area (the impulse times the fields' relative velocity v'2 - v'1,
  *    MUSL's re-projected velocities that the particles' strain takes, summed over the
  *    segment's nodes; mpm_iface_musl): Model 1's power s . d up = U0 se dlambda with
  *    se = 1 - lambda on the surface, integrated in closed form, lambda = 1 - sqrt(1 -
@@ -72,7 +80,7 @@ void mpm_iface_free(mpm_iface *f)
   free(f->seg);
   free(f->owner);
   free(f->node);
-  double *d[] = {f->r, f->An, f->jx, f->jy, f->A, f->snf, f->stf, f->lam, f->sn, f->st, f->sv,
+  double *d[] = {f->Ab, f->r, f->An, f->jx, f->jy, f->A, f->snf, f->stf, f->lam, f->sn, f->st, f->sv,
                  f->wn, f->Tn, f->Tt, f->md, f->ns};
   for (size_t i = 0; i < sizeof d / sizeof *d; i++)
     free(d[i]);
@@ -114,6 +122,8 @@ mpm_iface *mpm_iface_alloc(mpm_sim *s, double lx, double ly)
   const double a = sc->alpha_deg * (3.14159265358979323846 / 180.0), sa = sin(a), ca = cos(a), h = sc->h;
   f->lx = lx;
   f->ly = ly;
+  f->on = 1e-9 * h;
+  f->share = sc->share;
   f->nx = fl->nx;
   f->ny = fl->ny;
   f->tx = ca;
@@ -132,7 +142,7 @@ mpm_iface *mpm_iface_alloc(mpm_sim *s, double lx, double ly)
     *nodal[i] = calloc(nn, sizeof(double));
   f->md = calloc(4 * nn, sizeof(double));
   f->ns = calloc(3 * nn, sizeof(double));
-  double **segs[] = {&f->r, &f->A, &f->snf, &f->stf, &f->lam, &f->sn, &f->st, &f->sv, &f->wn, &f->Tn, &f->Tt};
+  double **segs[] = {&f->Ab, &f->r, &f->A, &f->snf, &f->stf, &f->lam, &f->sn, &f->st, &f->sv, &f->wn, &f->Tn, &f->Tt};
   int ok = f->seg && f->An && f->jx && f->jy && f->md && f->ns;
   for (size_t i = 0; i < sizeof segs / sizeof *segs; i++)
     ok &= (*segs[i] = calloc(ns, sizeof(double))) != NULL;
@@ -354,7 +364,7 @@ void mpm_iface_grid(mpm_sim *s, double bfac)
   /* the stick impulses J = m1 (vc - v1), vc the pair's centre-of-mass velocity (p holds
    * v^L after the node update), and their sums per segment */
   for (int b = 0; b < f->nseg; b++)
-    f->Tn[b] = f->Tt[b] = 0.0;
+    f->Tn[b] = f->Tt[b] = f->Ab[b] = 0.0;
   for (int i = 0; i < f->nnode; i++) {
     const size_t k = f->node[i];
     f->jx[k] = f->jy[k] = 0.0;
@@ -368,6 +378,7 @@ void mpm_iface_grid(mpm_sim *s, double bfac)
     f->jy[k] = a->m * b->m * (b->py - a->py) / mt;
     f->Tn[f->seg[k]] += f->jx[k] * nx + f->jy[k] * ny;
     f->Tt[f->seg[k]] += f->jx[k] * tx + f->jy[k] * ty;
+    f->Ab[f->seg[k]] += f->An[k];
   }
   /* a softening segment sticks whole this step when its mean traction is inside the
    * surface se <= 1 - lambda */
@@ -389,11 +400,21 @@ void mpm_iface_grid(mpm_sim *s, double bfac)
       continue;
     const int q = f->seg[k];
     double jn = f->jx[k] * nx + f->jy[k] * ny, jt = f->jx[k] * tx + f->jy[k] * ty;
-    if (!f->stuck[q]) { /* SOFT: the segment's mean traction held to the surface, every
-                         * node's impulse scaled alike (tension and shear) */
+    if (!f->stuck[q] && f->share == MPM_SHARE_STICK) { /* SOFT: the segment's mean traction
+                                                       * held to the surface, every node's
+                                                       * impulse scaled alike (tension, shear) */
       if (jn > 0.0)
         jn *= f->r[q];
       jt *= f->r[q];
+    } else if (!f->stuck[q]) { /* SOFT, share = line: the segment's traction on the surface
+                                * times the node's length of line, of the length at nodes
+                                * holding both fields; never more than sticks the node
+                                * (between 0 and its stick impulse), compression never capped */
+      const double w = f->Ab[q] > 0.0 ? f->r[q] * f->An[k] / f->Ab[q] : 0.0;
+      if (jn > 0.0)
+        jn = f->Tn[q] > 0.0 ? fmin(jn, w * f->Tn[q]) : 0.0;
+      const double lt = w * f->Tt[q];
+      jt = jt > 0.0 ? fmax(0.0, fmin(jt, lt)) : fmin(0.0, fmax(jt, lt));
     }
     const double ex = jn * nx + jt * tx, ey = jn * ny + jt * ty; /* the impulse on field 1 */
     const double ca[2] = {ex / a->m, ey / a->m}, cb[2] = {-ex / b->m, -ey / b->m};

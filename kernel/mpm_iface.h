@@ -19,6 +19,8 @@ enum { MPM_SEG_STUCK = 0, MPM_SEG_SOFT = 1, MPM_SEG_OPEN = 2 };
 struct mpm_iface {
   double lx, ly;           /* the line's point: the flaw particle's reference centre    */
   double nx, ny, tx, ty;   /* its normal (sin a, -cos a) and direction (cos a, sin a)    */
+  double on;               /* a reference centre within this of the line lies on it     */
+  int share;               /* decohesion.share: MPM_SHARE_STICK or MPM_SHARE_LINE        */
   double smin, sw;         /* the first segment's start along the line, and the length  */
   double s0, s1;           /* the line on the bar: from y = 0 to y = H, along it         */
   int *owner;              /* per segment's place on the line: the segment it joined     */
@@ -29,6 +31,7 @@ struct mpm_iface {
   double *An;              /* per node: the line's length weighted by the node's uGIMP N */
   double *jx, *jy;         /* per node: the impulse that sticks the fields, this step    */
   double *A;               /* per segment: the line's length in it (sum of An)          */
+  double *Ab;              /* per segment (scratch): sum An at its nodes holding both fields */
   double *snf, *stf;       /* per segment: strengths (the flaw by its length on the line) */
   double *lam;             /* per segment: lambda (eq. 10's, here of the segment)        */
   uint8_t *state;          /* per segment: MPM_SEG_*                                     */
@@ -58,10 +61,13 @@ double mpm_iface_D(const mpm_sim *s);
 double mpm_iface_x_at(const mpm_iface *f, double y);
 
 /* The side of a particle: 1 (the second field) when its reference centre is on the
- * normal's side of the line.  A particle keeps its side for the whole run. */
+ * normal's side of the line, 0 when it is on the other side or on the line (within
+ * f->on, far above the rounding of the normal: at alpha 90, cos a = 6e-17 split the
+ * column on the line between the sides at the flaw's height).  A particle keeps its side
+ * for the whole run. */
 static inline int mpm_iface_side(const mpm_iface *f, double x0, double y0)
 {
-  return f->nx * (x0 - f->lx) + f->ny * (y0 - f->ly) > 0.0;
+  return f->nx * (x0 - f->lx) + f->ny * (y0 - f->ly) > f->on;
 }
 
 #endif

@@ -69,6 +69,9 @@ mpm_status mpm_scene_check(const mpm_scene *sc, char *err, size_t errlen)
     if (!(sc->imp_stf_factor > 0.0 && sc->imp_stf_factor <= 1.0)) BAD("imperfection.stf_factor must be in (0, 1]");
     if (sc->imp_size != MPM_IMP_PARTICLE && sc->imp_size != MPM_IMP_CELL) BAD("imperfection.size must be particle or cell");
     if (sc->path < MPM_PATH_FREE || sc->path > MPM_PATH_IFACE) BAD("decohesion.path must be free, line or interface");
+    if (sc->share != MPM_SHARE_STICK && sc->share != MPM_SHARE_LINE) BAD("decohesion.share must be stick or line");
+    if (sc->share == MPM_SHARE_LINE && (sc->path != MPM_PATH_IFACE || sc->alpha_deg != 90.0 || sc->grid_motion != MPM_GRID_STRETCH))
+      BAD("decohesion.share = line needs decohesion.path = interface, alpha = 90 and grid.motion = stretch");
   }
   if (sc->model && sc->path == MPM_PATH_IFACE) { /* what mpm_iface.c implements, no more */
     if (sc->fields != MPM_FIELDS_TWO || sc->shape != MPM_SHAPE_GIMP || sc->scheme != MPM_SCHEME_MUSL)
@@ -311,6 +314,18 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
       p->mat[q] = MPM_MAT_ELASTIC;
     ifx = p->x0[imp];
     ify = p->y0[imp];
+    /* share = line: the crack, the edge between the two sides' particles, must lie on a
+     * node column.  At alpha 90 the flaw's particle column lies on the line and joins the
+     * first side (mpm_iface_side), so the crack runs along that column's far edge. */
+    const double xc = ifx + 0.5 * d, col = xc / h;
+    if (sc->share == MPM_SHARE_LINE && fabs(col - round(col)) > 1e-9) {
+      snprintf(err, errlen,
+               "decohesion.share = line: the interface's crack at x = %g (the edge of the flaw's particle column at x = %g) is "
+               "not on a node column of h = %g; move imperfection.x (now %g) so that it is, or use share = stick",
+               xc, ifx, h, sc->imp_x);
+      mpm_sim_free(s);
+      return MPM_EINVAL;
+    }
   }
   /* The head: the same lattice continued MPM_HEAD_CELLS cells beyond x = 0, moving with
    * the grip. */

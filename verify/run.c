@@ -453,21 +453,25 @@ int ver_run(const ver_scene *vs, const ver_run_opts *o, ver_summary *u, char *er
 {
   memset(u, 0, sizeof *u);
   u->delta_sep = u->delta_sep_cut = u->delta_sep_load = -1;
-  if (o->write_files && clear_outdir(o->outdir, err, errlen))
-    return 2;
-  if (o->write_files && write_scene_ini(vs, o->outdir) != 0) {
-    snprintf(err, errlen, "%s/scene.ini: cannot write: %s", o->outdir, strerror(errno));
-    return 1;
-  }
   run_state r;
   memset(&r, 0, sizeof r);
   r.vs = vs;
   r.o = o;
+  /* the kernel's refusal (a scene it cannot lay out) leaves the folder as it was */
   char kerr[512];
   const mpm_status st = mpm_sim_alloc(&vs->sc, o->threads, &r.s, kerr, sizeof kerr);
   if (st != MPM_OK) {
     snprintf(err, errlen, "%s: %s", vs->path, kerr);
     return st == MPM_EINVAL ? 2 : 1;
+  }
+  if (o->write_files && clear_outdir(o->outdir, err, errlen)) {
+    mpm_sim_free(r.s);
+    return 2;
+  }
+  if (o->write_files && write_scene_ini(vs, o->outdir) != 0) {
+    snprintf(err, errlen, "%s/scene.ini: cannot write: %s", o->outdir, strerror(errno));
+    mpm_sim_free(r.s);
+    return 1;
   }
   int rc = run_setup(&r, err, errlen);
   if (!rc) {

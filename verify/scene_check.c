@@ -211,6 +211,16 @@ int ver_scene_validate(ver_scene *vs, char *err, size_t errlen)
              sc->model, sc->q, sc->s0, sc->snf, sc->eta);
     return 2;
   }
+  /* share = line is built for a line along a node column that the grid follows
+   * (kernel/mpm_iface.c; the crack's column is checked when the particles are laid) */
+  if (sc->model && sc->share == MPM_SHARE_LINE &&
+      (sc->path != MPM_PATH_IFACE || sc->alpha_deg != 90.0 || sc->grid_motion != MPM_GRID_STRETCH)) {
+    snprintf(err, errlen, "%s: decohesion.share: line needs decohesion.path = interface, alpha = 90 and grid.motion = "
+             "stretch (here: path %s, alpha %g, motion %s; allowed otherwise: share = stick)",
+             ver_scene_key_at(vs, ver_scene_key_idx("decohesion", "share"), at, sizeof at),
+             ver_scene_word(vs, "decohesion", "path"), sc->alpha_deg, ver_scene_word(vs, "grid", "motion"));
+    return 2;
+  }
   if (sc->damping > 0.0 && sc->node_mass == MPM_NODEMASS_LIMITED && sc->shape == MPM_SHAPE_LINEAR &&
       (sc->scheme == MPM_SCHEME_USL || sc->scheme == MPM_SCHEME_USAVG)) {
     snprintf(err, errlen, "%s: time.damping: %g needs grid.node_mass = lumped with usl or usavg on linear shapes "

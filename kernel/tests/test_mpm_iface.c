@@ -12,7 +12,11 @@
  *    booked terms, to 1e-6 of W_ext);
  *  - no particle softens (every one stays elastic: lambda 0);
  *  - results do not depend on the number of threads (bit for bit);
- *  - the scene check refuses what the interface does not implement.
+ *  - the scene check refuses what the interface does not implement;
+ *  - at alpha 90 (Fig. 6's bar, iface90.ini's method) the flaw's particle column lies on
+ *    the line and goes to one part whole, at 1 and 4 ppc and either decohesion.share:
+ *    after the cut its particles all move with one of its neighbour columns (the
+ *    rounding of cos 90 deg once split it at the flaw's height), and D is U0 H.
  */
 #include <math.h>
 #include <setjmp.h>
@@ -169,6 +173,88 @@ static void test_mpm_iface_threads(void **state)
   mpm_sim_free(b);
 }
 
+/* Fig. 6's bar with the interface at alpha 90 (iface90.ini): the line through the flaw's
+ * particle, no flaw, the grid following the bar's stretch. */
+static mpm_scene iface90_scene(double h, int ppc, int share)
+{
+  mpm_scene sc = iface_scene(1.0, 10.0, h, ppc);
+  sc.alpha_deg = 90.0;
+  sc.imp_factor = 1.0;
+  sc.imp_size = MPM_IMP_PARTICLE;
+  sc.grid_motion = MPM_GRID_STRETCH;
+  sc.share = share;
+  sc.dt = 0.0125 * h;
+  sc.end_delta = 0.5;
+  return sc;
+}
+
+/* The flaw's column (x0 = lx, on the line) against its neighbours at lx -+ d, by the mean
+ * and the spread of their x displacements after the cut: the column must move whole with
+ * one of them (the two parts are apart by the opening, about U0 / snf = 0.375). */
+static void column_case(double h, int ppc, int share, const char *what)
+{
+  const mpm_scene sc = iface90_scene(h, ppc, share);
+  mpm_sim *s = tu_make_sim(&sc, 1);
+  const long nmax = lround(sc.end_delta / (sc.speed * sc.dt));
+  for (long k = 0; k < nmax && !(s->cut && mpm_sim_delta(s) > 0.45); k++)
+    tu_run_steps(s, 1);
+  if (!s->cut)
+    fail_msg("%s: the bar is not cut by delta %g", what, mpm_sim_delta(s));
+  const mpm_particles *p = s->p;
+  /* the flaw's particle: the one nearest (96, 16), ties to the lowest index, as laid */
+  size_t imp = 0;
+  double best = INFINITY;
+  for (size_t k = 0; k < p->n; k++) {
+    const double r2 = (p->x0[k] - 96.0) * (p->x0[k] - 96.0) + (p->y0[k] - 16.0) * (p->y0[k] - 16.0);
+    if (p->mat[k] != MPM_MAT_HEAD && r2 < best - 1e-12) {
+      best = r2;
+      imp = k;
+    }
+  }
+  const double lx = p->x0[imp], d = h / sqrt((double)ppc);
+  double lo[3], hi[3], sum[3] = {0, 0, 0};
+  int n[3] = {0, 0, 0};
+  for (int c = 0; c < 3; c++) {
+    lo[c] = INFINITY;
+    hi[c] = -INFINITY;
+  }
+  for (size_t k = 0; k < p->n; k++) {
+    if (p->mat[k] == MPM_MAT_HEAD)
+      continue;
+    for (int c = 0; c < 3; c++)
+      if (fabs(p->x0[k] - (lx + (c - 1) * d)) < 1e-9 * h) {
+        const double u = p->x[k] - p->x0[k];
+        lo[c] = fmin(lo[c], u);
+        hi[c] = fmax(hi[c], u);
+        sum[c] += u;
+        n[c]++;
+      }
+  }
+  const double gap = sum[2] / n[2] - sum[0] / n[0], mid = sum[1] / n[1];
+  if (!(gap > 0.3))
+    fail_msg("%s: the parts are not apart at the line (%g)", what, gap);
+  /* the column whole: its spread is far below the opening */
+  if (!(hi[1] - lo[1] < 0.05 * gap))
+    fail_msg("%s: the column on the line is split: x displacements %g to %g, the opening %g", what, lo[1], hi[1], gap);
+  /* and with one part: its mean within a tenth of the opening of one neighbour's */
+  if (!(fmin(fabs(mid - sum[0] / n[0]), fabs(mid - sum[2] / n[2])) < 0.1 * gap))
+    fail_msg("%s: the column on the line (mean u %g) moves with neither part (%g, %g)", what, mid, sum[0] / n[0],
+             sum[2] / n[2]);
+  mpm_energy e;
+  mpm_sim_energy(s, &e);
+  assert_rel(e.D, sc.U0 * sc.H, 1e-6, what);
+  mpm_sim_free(s);
+}
+
+static void test_mpm_iface_column_on_line(void **state)
+{
+  (void)state;
+  column_case(8.0, 1, MPM_SHARE_LINE, "alpha 90, h 8, 1 ppc, share line");
+  column_case(8.0, 4, MPM_SHARE_LINE, "alpha 90, h 8, 4 ppc, share line");
+  column_case(8.0, 4, MPM_SHARE_STICK, "alpha 90, h 8, 4 ppc, share stick");
+  column_case(4.0, 4, MPM_SHARE_LINE, "alpha 90, h 4, 4 ppc, share line");
+}
+
 static void expect_einval(const mpm_scene *sc, const char *what)
 {
   mpm_sim *s = NULL;
@@ -200,6 +286,18 @@ static void test_mpm_iface_scene_check(void **state)
   sc = iface_scene(1.0, 10.0, 8.0, 1);
   sc.alpha_deg = 5.0; /* the line leaves the bar through its ends */
   expect_einval(&sc, "alpha 5");
+  /* share = line: a line along a node column that the grid follows, no other */
+  sc = iface90_scene(8.0, 4, MPM_SHARE_LINE);
+  s = tu_make_sim(&sc, 1); /* accepted: the crack at x 96 */
+  mpm_sim_free(s);
+  sc.alpha_deg = 60.0;
+  expect_einval(&sc, "share line at alpha 60");
+  sc = iface90_scene(8.0, 4, MPM_SHARE_LINE);
+  sc.grid_motion = MPM_GRID_FIXED;
+  expect_einval(&sc, "share line on the fixed grid");
+  sc = iface90_scene(8.0, 4, MPM_SHARE_LINE);
+  sc.imp_x = 99.0; /* the flaw's column at x 98, its edge at 100: a cell's centre */
+  expect_einval(&sc, "share line, the crack inside a cell");
 }
 
 int main(void)
@@ -209,6 +307,7 @@ int main(void)
       cmocka_unit_test(test_mpm_iface_mode_one),
       cmocka_unit_test(test_mpm_iface_mode_two),
       cmocka_unit_test(test_mpm_iface_threads),
+      cmocka_unit_test(test_mpm_iface_column_on_line),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
