@@ -9,7 +9,7 @@ set logscale xy
 set xlabel "CPU time of the run, s"
 set ylabel "RMS load error / P_{max}"
 set key below
-set bmargin 8
+set bmargin 10
 pt_line = " u 4:($5 > 0.5 ? $2 : 1/0) w lp"
 do for [i=1:3] {
   sc = word(scs, i)

@@ -398,8 +398,10 @@ static void finish(const run_state *r, ver_summary *u, double w0, double c0)
   const double E0 = r->e0.KE + r->e0.SE;
   u->energy_residual = energy_residual(r->rows, r->nrow, E0, &u->energy_unbooked);
   u->energy_start = E0;
-  u->energy_kept = E0 > 0 ? (e.KE + e.SE) / E0 : NAN;
   const mpm_scene *sc = &r->vs->sc;
+  /* what a free vibration kept; a loaded run's KE + SE is not a kept energy (the brittle
+   * release read 6.99) */
+  u->energy_kept = sc->vib_mode > 0 && E0 > 0 ? (e.KE + e.SE) / E0 : NAN;
   u->period = r->ncross >= 3 ? 2.0 * (r->cross_last - r->cross_first) / (double)(r->ncross - 1) : NAN;
   u->period_exact = sc->vib_mode > 0 ? ver_scene_vib_period(sc) : NAN;
   u->period_error = u->period / u->period_exact - 1.0;

@@ -28,7 +28,7 @@ typedef struct {
   double L_debris_final;         /* ... and what debris carried off the grid (mpm_step.c)        */
   long n_debris;                 /* separated particles that left the grid as debris     */
   double energy_start;           /* E0 = KE + SE at the start                        */
-  double energy_kept;            /* (KE + SE) at the end over E0                     */
+  double energy_kept;            /* free vibration: (KE + SE) at the end over E0; NaN otherwise */
   double period, period_exact, period_error; /* vibration: measured, 2 L / (m c) corrected, error */
   double delta_end;              /* where the run stopped                            */
   long steps;
