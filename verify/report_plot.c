@@ -377,9 +377,11 @@ void ver_report_write_data(report *R)
     if ((c->role & REP_SCHEME) && (!strcmp(c->scene, "fig7") || !strcmp(c->scene, "fig8")))
       fprintf(vars, "scheme_%s_%s = \"%s\"\n", c->scene, c->tag == 1 ? "musl" : "usl", c->have ? c->id : "");
   }
+  /* the snapshot and separation cases by id (the scheme pair has its names above: its
+   * ids, with every override in them, passed gnuplot's length for a variable name) */
   for (int i = 0; i < r->n; i++) {
     const rep_case *c = &r->c[i];
-    if (c->role & (REP_SNAP | REP_SEP | REP_SCHEME)) {
+    if (c->role & (REP_SNAP | REP_SEP)) {
       char key[128];
       snprintf(key, sizeof key, "id_%s", c->id);
       for (char *q = key; *q; q++)
