@@ -16,7 +16,12 @@
  *  - at alpha 90 (Fig. 6's bar, iface90.ini's method) the flaw's particle column lies on
  *    the line and goes to one part whole, at 1 and 4 ppc and either decohesion.share:
  *    after the cut its particles all move with one of its neighbour columns (the
- *    rounding of cos 90 deg once split it at the flaw's height), and D is U0 H.
+ *    rounding of cos 90 deg once split it at the flaw's height), and D is U0 H;
+ *  - with decohesion.share = line, in the softening the crack's traction is even along
+ *    the line: sigma_xx in the four particle columns beside a crack on a node column
+ *    (h 1, 4 ppc, a short bar) varies along y, away from the free edges, by under 5 % of
+ *    its mean (the bar in uniaxial tension with a uniform cohesive plane: 0; share =
+ *    stick grows a mode there, 17-48 %, docs/interface.md "The column on the line").
  */
 #include <math.h>
 #include <setjmp.h>
@@ -246,6 +251,48 @@ static void column_case(double h, int ppc, int share, const char *what)
   mpm_sim_free(s);
 }
 
+/* share = line: the traction even along the crack, late in the softening (delta 0.3 of the
+ * opening's 0.375): a 48 x 16 bar at h 1, 4 ppc, the crack on the node column x = 24. */
+static void test_mpm_iface_share_line_even(void **state)
+{
+  (void)state;
+  mpm_scene sc = iface90_scene(1.0, 4, MPM_SHARE_LINE);
+  sc.L = 48.0;
+  sc.H = 16.0;
+  sc.imp_x = 24.0;
+  sc.imp_y = 8.0;
+  sc.bc = MPM_BC_CONSISTENT; /* iface90.ini's */
+  mpm_sim *s = tu_make_sim(&sc, 1);
+  while (mpm_sim_delta(s) < 0.3 && !s->cut)
+    tu_run_steps(s, 1);
+  if (s->cut)
+    fail_msg("share line: the bar is cut by delta %g, before the softening's end", mpm_sim_delta(s));
+  const mpm_particles *p = s->p;
+  double lo[4], hi[4], sum[4];
+  int n[4] = {0, 0, 0, 0};
+  const double xs[4] = {23.25, 23.75, 24.25, 24.75}; /* the columns within one cell of x = 24 */
+  for (int c = 0; c < 4; c++) {
+    lo[c] = INFINITY;
+    hi[c] = -INFINITY;
+    sum[c] = 0.0;
+  }
+  for (size_t k = 0; k < p->n; k++)
+    for (int c = 0; c < 4; c++)
+      if (p->mat[k] != MPM_MAT_HEAD && fabs(p->x0[k] - xs[c]) < 1e-9 && p->y0[k] > 2.0 && p->y0[k] < sc.H - 2.0) {
+        lo[c] = fmin(lo[c], p->sxx[k]);
+        hi[c] = fmax(hi[c], p->sxx[k]);
+        sum[c] += p->sxx[k];
+        n[c]++;
+      }
+  for (int c = 0; c < 4; c++) {
+    const double mean = sum[c] / n[c];
+    if (!(n[c] == 24 && mean > 0.1 && (hi[c] - lo[c]) < 0.05 * mean))
+      fail_msg("share line: sigma_xx at x0 %g varies along the crack from %g to %g (mean %g over %d particles; "
+               "at most 5 %% of the mean)", xs[c], lo[c], hi[c], mean, n[c]);
+  }
+  mpm_sim_free(s);
+}
+
 static void test_mpm_iface_column_on_line(void **state)
 {
   (void)state;
@@ -308,6 +355,7 @@ int main(void)
       cmocka_unit_test(test_mpm_iface_mode_two),
       cmocka_unit_test(test_mpm_iface_threads),
       cmocka_unit_test(test_mpm_iface_column_on_line),
+      cmocka_unit_test(test_mpm_iface_share_line_even),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
