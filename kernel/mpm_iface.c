@@ -400,21 +400,21 @@ void mpm_iface_grid(mpm_sim *s, double bfac)
       continue;
     const int q = f->seg[k];
     double jn = f->jx[k] * nx + f->jy[k] * ny, jt = f->jx[k] * tx + f->jy[k] * ty;
-    if (!f->stuck[q] && f->share == MPM_SHARE_STICK) { /* SOFT: the segment's mean traction
-                                                       * held to the surface, every node's
-                                                       * impulse scaled alike (tension, shear) */
-      if (jn > 0.0)
-        jn *= f->r[q];
-      jt *= f->r[q];
-    } else if (!f->stuck[q]) { /* SOFT, share = line: the segment's traction on the surface
-                                * times the node's length of line, of the length at nodes
-                                * holding both fields; never more than sticks the node
-                                * (between 0 and its stick impulse), compression never capped */
+    if (!f->stuck[q] && f->share == MPM_SHARE_LINE) {
+      /* SOFT, share = line: the segment's traction on the surface times the node's length
+       * of line, of the length at nodes holding both fields; never more than sticks the
+       * node (between 0 and its stick impulse), compression never capped */
       const double w = f->Ab[q] > 0.0 ? f->r[q] * f->An[k] / f->Ab[q] : 0.0;
       if (jn > 0.0)
         jn = f->Tn[q] > 0.0 ? fmin(jn, w * f->Tn[q]) : 0.0;
       const double lt = w * f->Tt[q];
       jt = jt > 0.0 ? fmax(0.0, fmin(jt, lt)) : fmin(0.0, fmax(jt, lt));
+    } else if (!f->stuck[q]) {
+      /* SOFT, share = stick: the segment's mean traction held to the surface, every
+       * node's impulse scaled alike (tension and shear) */
+      if (jn > 0.0)
+        jn *= f->r[q];
+      jt *= f->r[q];
     }
     const double ex = jn * nx + jt * tx, ey = jn * ny + jt * ty; /* the impulse on field 1 */
     const double ca[2] = {ex / a->m, ey / a->m}, cb[2] = {-ex / b->m, -ey / b->m};
