@@ -100,4 +100,32 @@ double ana_wave_load_at(const ana_wave *w, double delta);
 /* The largest grip load of the samples, and (if delta_at) its delta. */
 double ana_wave_peak(const ana_wave *w, double *delta_at);
 
+/* The growth rate of the kernel's explicit step on a 1-D periodic bar, linearised about
+ * a uniform stress sigma0 carried by particles that drifted by `drift` cells from where
+ * the grid was laid (ana_stab.c derives the map; docs/interface.md uses it).  Which
+ * ingredients make the step grow: MUSL against USL, uGIMP against bilinear shapes, the
+ * drift and the prestress. */
+enum { ANA_STAB_USL = 0, ANA_STAB_MUSL = 1 };
+enum { ANA_STAB_LINEAR = 0, ANA_STAB_GIMP = 1 };
+typedef struct {
+  int scheme;    /* ANA_STAB_USL or ANA_STAB_MUSL (strain from vL, or from the re-projection) */
+  int shape;     /* ANA_STAB_LINEAR or ANA_STAB_GIMP (uGIMP, box half length 1 / (2 per_cell))*/
+  int per_cell;  /* particles per cell along the bar, [1, 8] (2 for the 2-D grid's 4 ppc)      */
+  int ncell;     /* cells of the periodic bar, [3, 64]                                     */
+  double h;      /* cell size (> 0)                                                        */
+  double E, rho; /* Young's modulus and density (> 0)                                      */
+  double sigma0; /* the uniform stress of the rest state                                   */
+  double drift;  /* the particles' offset from their laid positions, in cells             */
+  double dt;     /* time step (> 0)                                                        */
+} ana_stab;
+
+typedef struct {
+  double rate; /* ln(r) / dt per unit time, r the largest eigenvalue modulus of the step     */
+  double wave; /* the same over the eigenvalues off the real axis (the waves); -inf if none */
+} ana_stab_rates;
+
+/* The rates of the linearised step into *out; ANA_EINVAL on bad input, ANA_EFAIL out of
+ * memory or when the eigenvalues fail (*out untouched then). */
+int ana_stab_rate(const ana_stab *c, ana_stab_rates *out, char *err, int errlen);
+
 #endif
