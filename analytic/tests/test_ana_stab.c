@@ -48,7 +48,7 @@ static void test_ana_stab_unstressed_neutral(void **state)
     for (int sh = ANA_STAB_LINEAR; sh <= ANA_STAB_GIMP; sh++)
       for (int n = 1; n <= 2; n++) {
         const double r = rate_of(sch, sh, n, 0.0, 0.05);
-        print_message("ana_stab-1 scheme %d shape %d per_cell %d: rate %.3e\n", sch, sh, n, r);
+        print_message("# ana_stab-1 scheme %d shape %d per_cell %d: rate %.3e\n", sch, sh, n, r);
         assert_true(fabs(r) < NEUTRAL);
       }
 }
@@ -61,7 +61,7 @@ static void test_ana_stab_laid_neutral(void **state)
   for (int sch = ANA_STAB_USL; sch <= ANA_STAB_MUSL; sch++)
     for (int n = 1; n <= 2; n++) {
       const double r = rate_of(sch, ANA_STAB_GIMP, n, 1.0, 0.0);
-      print_message("ana_stab-2 scheme %d per_cell %d: rate %.3e\n", sch, n, r);
+      print_message("# ana_stab-2 scheme %d per_cell %d: rate %.3e\n", sch, n, r);
       assert_true(fabs(r) < NEUTRAL);
     }
 }
@@ -76,7 +76,7 @@ static void test_ana_stab_drift_usl_bilinear_neutral(void **state)
     for (int n = 1; n <= 2; n++) {
       const double rl = rate_of(ANA_STAB_MUSL, ANA_STAB_LINEAR, n, 0.8, drifts[k]);
       const double ru = rate_of(ANA_STAB_USL, ANA_STAB_GIMP, n, 0.8, drifts[k]);
-      print_message("ana_stab-3 drift %.2f per_cell %d: MUSL bilinear %.3e, USL uGIMP %.3e\n", drifts[k], n, rl, ru);
+      print_message("# ana_stab-3 drift %.2f per_cell %d: MUSL bilinear %.3e, USL uGIMP %.3e\n", drifts[k], n, rl, ru);
       assert_true(fabs(rl) < NEUTRAL);
       assert_true(fabs(ru) < NEUTRAL);
     }
@@ -90,7 +90,7 @@ static void test_ana_stab_musl_gimp_grows(void **state)
   for (int n = 1; n <= 2; n++) {
     const double r1 = rate_of(ANA_STAB_MUSL, ANA_STAB_GIMP, n, 0.8, 0.05);
     const double r2 = rate_of(ANA_STAB_MUSL, ANA_STAB_GIMP, n, 1.6, 0.05);
-    print_message("ana_stab-4 per_cell %d: rate %.3e at sigma0 0.8, %.3e at 1.6\n", n, r1, r2);
+    print_message("# ana_stab-4 per_cell %d: rate %.3e at sigma0 0.8, %.3e at 1.6\n", n, r1, r2);
     assert_true(r1 > 100.0 * NEUTRAL);
     assert_in_range((long)lround(100.0 * r2 / r1), 180, 220);
   }
@@ -106,7 +106,7 @@ static void test_ana_stab_waves(void **state)
     const ana_stab_rates m0 = rates_of(ANA_STAB_MUSL, ANA_STAB_GIMP, n, 0.0, 0.05);
     const ana_stab_rates u0 = rates_of(ANA_STAB_USL, ANA_STAB_GIMP, n, 0.0, 0.05);
     const ana_stab_rates u1 = rates_of(ANA_STAB_USL, ANA_STAB_GIMP, n, 0.8, 0.05);
-    print_message("ana_stab-5 per_cell %d: waves MUSL %.3e, USL %.3e, USL at sigma0 0.8 %.3e\n", n, m0.wave,
+    print_message("# ana_stab-5 per_cell %d: waves MUSL %.3e, USL %.3e, USL at sigma0 0.8 %.3e\n", n, m0.wave,
                   u0.wave, u1.wave);
     assert_true(fabs(m0.wave) < NEUTRAL);
     assert_true(u0.wave < -100.0 * NEUTRAL);
