@@ -70,6 +70,17 @@ enum { MPM_CONTROL_GRIP = 0, MPM_CONTROL_DISSIPATION = 1 };
  * 0.02 %), D doubled under MUSL; so only fig6.ini, run at 4 and 9 ppc on fine grids,
  * uses it. */
 enum { MPM_GRID_FIXED = 0, MPM_GRID_STRETCH = 1 };
+/* grid.weights: where a particle's shape functions are taken.  CURRENT (default, the
+ * paper's) at its position.  LAID (grid.motion = stretch only, until the bar is cut) at
+ * the place the grid was laid at, carried by the grid's stretch: x = L + (X - L)(1 +
+ * delta / L), y = Y, so a particle keeps its place among the nodes while the bar is one
+ * body and its motion relative to the grid (the halves unloading in the softening, some
+ * 0.04 h) never moves a uGIMP box across a node.  Such a move, under a stress, changes the
+ * nodal forces the way no strain energy does, and MUSL, which damps no wave, grows a
+ * grid-scale wave from it (analytic/ana_stab.c; docs/interface.md, "Its causes").  The
+ * particles still move: the step adds each one's offset from its laid
+ * place back when it ends, so output, energies and the next step see where it is. */
+enum { MPM_WEIGHTS_CURRENT = 0, MPM_WEIGHTS_LAID = 1 };
 /* Shape functions: LINEAR, the paper's bilinear hats (2 x 2 nodes a particle); GIMP,
  * uGIMP (Bardenhagen and Kober 2004; 3 x 3 nodes), continuous as a particle crosses a
  * cell edge (mpm_shape.h). */
@@ -144,6 +155,7 @@ typedef struct {
   double margin;         /* empty space around the bar (length; the left side adds the grip's travel) */
   int scheme;            /* MPM_SCHEME_USL (paper) or MPM_SCHEME_MUSL                  */
   int grid_motion;       /* MPM_GRID_FIXED (default, the paper) or MPM_GRID_STRETCH   */
+  int weights;           /* MPM_WEIGHTS_CURRENT (default, the paper) or MPM_WEIGHTS_LAID */
   int shape;             /* MPM_SHAPE_LINEAR (default, the paper) or MPM_SHAPE_GIMP    */
   int fields;            /* MPM_FIELDS_ONE (the paper) or MPM_FIELDS_TWO: one velocity field
                             per side of a separated band (mpm_fields.c)              */
@@ -275,11 +287,15 @@ typedef struct {
   uint8_t *sep;            /* 1 once separated                                         */
   double *vxx, *vyy, *vxy; /* time.damping_beta > 0: the viscous stress beta C : grad v of
                               the last strain pass, scattered with sigma (NULL otherwise) */
+  double *wdx, *wdy;       /* grid.weights = laid: during a step, the particle's offset from
+                              its laid place, added back when the step ends (NULL otherwise) */
 } mpm_particles;
 
 mpm_particles *mpm_particles_alloc(size_t n);
 /* The viscous stress arrays of time.damping_beta, zeroed; 0, or -1 out of memory. */
 int mpm_particles_alloc_viscous(mpm_particles *p);
+/* The offsets of grid.weights = laid, zeroed; 0, or -1 out of memory. */
+int mpm_particles_alloc_laid(mpm_particles *p);
 void mpm_particles_free(mpm_particles *p);
 
 /* ---- grid: a regular lattice of (ncx+1) x (ncy+1) nodes, origin (ox, oy), spacing h.
@@ -483,6 +499,9 @@ typedef struct {
   double *scratch;         /* one particle array's worth, for permuting                 */
   uint8_t *scratch8;
   int resort;              /* 1: a particle left its strip's safe range; sort before the next step */
+  int laid;                /* grid.weights = laid: 1 while this step's particles sit at their
+                              laid places (mpm_step.c lay_grid), their offsets in wdx, wdy */
+  int laid_done;           /* 1 once the bar is cut and the laid places are given up     */
   double time_split[5];    /* seconds in: sort, p2g, grid, g2p, constitutive            */
   int cut;                 /* 1 once the band has cut the bar: a separated particle in every
                               particle row of the reference lattice (mpm_sim_cut); latched */

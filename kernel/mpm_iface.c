@@ -401,14 +401,19 @@ void mpm_iface_grid(mpm_sim *s, double bfac)
     const int q = f->seg[k];
     double jn = f->jx[k] * nx + f->jy[k] * ny, jt = f->jx[k] * tx + f->jy[k] * ty;
     if (!f->stuck[q] && f->share == MPM_SHARE_LINE) {
-      /* SOFT, share = line: the segment's traction on the surface times the node's length
-       * of line, of the length at nodes holding both fields; never more than sticks the
-       * node (between 0 and its stick impulse), compression never capped */
+      /* SOFT, share = line: the segment's normal traction on the surface times the node's
+       * length of line, of the length at nodes holding both fields; never more than sticks
+       * the node (between 0 and its stick impulse), compression never capped.  No shear:
+       * the line this share is built for (alpha 90 across a bar in tension) carries none
+       * in the model, and what the fields' lateral breathing asks of it jumps between the
+       * stuck and the capped steps; MUSL keeps what that puts into the bar's waves (with
+       * the node's share of the segment's shear: iface90 h 4, 4 ppc at a sixteenth of the
+       * grip speed, kinetic energy 4.5e-4 against the steady 4e-6; with none 1.6e-5;
+       * docs/interface.md, "Its causes") */
       const double w = f->Ab[q] > 0.0 ? f->r[q] * f->An[k] / f->Ab[q] : 0.0;
       if (jn > 0.0)
         jn = f->Tn[q] > 0.0 ? fmin(jn, w * f->Tn[q]) : 0.0;
-      const double lt = w * f->Tt[q];
-      jt = jt > 0.0 ? fmax(0.0, fmin(jt, lt)) : fmin(0.0, fmax(jt, lt));
+      jt = 0.0;
     } else if (!f->stuck[q]) {
       /* SOFT, share = stick: the segment's mean traction held to the surface, every
        * node's impulse scaled alike (tension and shear) */

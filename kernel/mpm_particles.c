@@ -31,6 +31,13 @@ mpm_particles *mpm_particles_alloc(size_t n)
   return p;
 }
 
+int mpm_particles_alloc_laid(mpm_particles *p)
+{
+  p->wdx = calloc(p->n, sizeof(double));
+  p->wdy = calloc(p->n, sizeof(double));
+  return p->wdx && p->wdy ? 0 : -1;
+}
+
 int mpm_particles_alloc_viscous(mpm_particles *p)
 {
   p->vxx = calloc(p->n, sizeof(double));
@@ -52,6 +59,8 @@ void mpm_particles_free(mpm_particles *p)
   free(p->vxx);
   free(p->vyy);
   free(p->vxy);
+  free(p->wdx);
+  free(p->wdy);
   free(p);
 }
 

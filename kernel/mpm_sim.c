@@ -100,6 +100,9 @@ mpm_status mpm_scene_check(const mpm_scene *sc, char *err, size_t errlen)
   if (sc->body_amp != 0.0 && (sc->shape != MPM_SHAPE_LINEAR || sc->fields != MPM_FIELDS_ONE))
     BAD("a body force needs grid.shape = linear and grid.fields = one");
   if (sc->grid_motion != MPM_GRID_STRETCH && sc->grid_motion != MPM_GRID_FIXED) BAD("grid.motion must be stretch or fixed");
+  if (sc->weights != MPM_WEIGHTS_CURRENT && sc->weights != MPM_WEIGHTS_LAID) BAD("grid.weights must be current or laid");
+  if (sc->weights == MPM_WEIGHTS_LAID && sc->grid_motion != MPM_GRID_STRETCH)
+    BAD("grid.weights = laid needs grid.motion = stretch (the laid places follow the grid's stretch)");
   if (sc->shape != MPM_SHAPE_LINEAR && sc->shape != MPM_SHAPE_GIMP) BAD("grid.shape must be linear or gimp");
   if (sc->fields != MPM_FIELDS_ONE && sc->fields != MPM_FIELDS_TWO) BAD("grid.fields must be one or two");
   if (!(sc->dt > 0.0)) BAD("time.dt must be > 0");
@@ -180,7 +183,8 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
   mpm_threads_init(&s->thr, nthreads, np);
   s->nthreads = s->thr.use;
   s->p = mpm_particles_alloc(np);
-  if (s->p && sc->damping_beta > 0.0 && mpm_particles_alloc_viscous(s->p) != 0) {
+  if (s->p && ((sc->damping_beta > 0.0 && mpm_particles_alloc_viscous(s->p) != 0) ||
+               (sc->weights == MPM_WEIGHTS_LAID && mpm_particles_alloc_laid(s->p) != 0))) {
     mpm_particles_free(s->p);
     s->p = NULL;
   }

@@ -75,6 +75,10 @@ void mpm_sim_sort(mpm_sim *s)
     permute_d(dbl[f], &s->scratch, s->perm, n);
   permute_u8(&p->mat, &s->scratch8, s->perm, n);
   permute_u8(&p->sep, &s->scratch8, s->perm, n);
+  if (p->wdx) { /* grid.weights = laid */
+    permute_d(&p->wdx, &s->scratch, s->perm, n);
+    permute_d(&p->wdy, &s->scratch, s->perm, n);
+  }
   if (p->vxx) { /* time.damping_beta */
     permute_d(&p->vxx, &s->scratch, s->perm, n);
     permute_d(&p->vyy, &s->scratch, s->perm, n);

@@ -508,13 +508,51 @@ static void head_rigid(mpm_sim *s)
  * right end). */
 static void lay_grid(mpm_sim *s)
 {
-  if (s->sc.grid_motion != MPM_GRID_STRETCH || s->cut)
-    return; /* once the band has cut the bar there is no mean stretch to follow: the grid stays */
+  if (s->sc.grid_motion != MPM_GRID_STRETCH || s->cut) {
+    /* once the band has cut the bar there is no mean stretch to follow: the grid stays,
+     * and with grid.weights = laid the particles are taken where they are from now on
+     * (they moved by their offsets from the laid places: sort them again) */
+    if (s->p->wdx && !s->laid_done) {
+      s->laid_done = 1;
+      s->resort = 1;
+    }
+    return;
+  }
   mpm_grid *g = s->g;
   const double L = s->sc.L, stretch = 1.0 + mpm_sim_delta(s) / L;
   g->hx = s->sc.h * stretch;
   g->ihx = 1.0 / g->hx;
   g->ox = L + (s->grid_ox0 - L) * stretch;
+  if (s->sc.weights == MPM_WEIGHTS_LAID) {
+    /* each bar particle to its laid place carried by the stretch (mpm.h, grid.weights);
+     * the rigid head keeps its own place (it follows the grip, not the stretch) */
+    mpm_particles *p = s->p;
+    for (size_t k = 0; k < p->n; k++) {
+      if (p->mat[k] == MPM_MAT_HEAD)
+        continue;
+      const double xl = L + (p->x0[k] - L) * stretch;
+      p->wdx[k] = p->x[k] - xl;
+      p->wdy[k] = p->y[k] - p->y0[k];
+      p->x[k] = xl;
+      p->y[k] = p->y0[k];
+    }
+    s->laid = 1;
+  }
+}
+
+/* grid.weights = laid: the step moved each particle from its laid place; it is where it
+ * was plus that move */
+static void unlay(mpm_sim *s)
+{
+  if (!s->laid)
+    return;
+  mpm_particles *p = s->p;
+  for (size_t k = 0; k < p->n; k++) {
+    p->x[k] += p->wdx[k];
+    p->y[k] += p->wdy[k];
+    p->wdx[k] = p->wdy[k] = 0.0;
+  }
+  s->laid = 0;
 }
 
 static int particle_inside(const mpm_sim *s, size_t k)
@@ -613,7 +651,7 @@ static mpm_status g2p_timed(mpm_sim *s, int mode, double frac, char *err, size_t
   return st;
 }
 
-mpm_status mpm_sim_step(mpm_sim *s, char *err, size_t errlen)
+static mpm_status step(mpm_sim *s, char *err, size_t errlen)
 {
   mpm_threads_tick(s);
   mpm_control_step(s);
@@ -679,6 +717,7 @@ mpm_status mpm_sim_step(mpm_sim *s, char *err, size_t errlen)
   if (s->band)
     mpm_band_step(s->band);
   head_rigid(s);
+  unlay(s);
   if (s->damp)
     mpm_damping_parts(s);
   ledger_step(s);
@@ -687,4 +726,11 @@ mpm_status mpm_sim_step(mpm_sim *s, char *err, size_t errlen)
   s->step++;
   s->t = s->step * s->sc.dt;
   return MPM_OK;
+}
+
+mpm_status mpm_sim_step(mpm_sim *s, char *err, size_t errlen)
+{
+  const mpm_status st = step(s, err, errlen);
+  unlay(s); /* a step that failed half-way leaves its particles where they are, too */
+  return st;
 }

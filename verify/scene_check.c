@@ -221,6 +221,14 @@ int ver_scene_validate(ver_scene *vs, char *err, size_t errlen)
              ver_scene_word(vs, "decohesion", "path"), sc->alpha_deg, ver_scene_word(vs, "grid", "motion"));
     return 2;
   }
+  /* the laid places are carried by the grid's stretch (kernel/mpm.h, grid.weights) */
+  if (sc->weights == MPM_WEIGHTS_LAID && sc->grid_motion != MPM_GRID_STRETCH) {
+    snprintf(err, errlen, "%s: grid.weights: laid needs grid.motion = stretch (here: motion %s; allowed otherwise: "
+             "weights = current)",
+             ver_scene_key_at(vs, ver_scene_key_idx("grid", "weights"), at, sizeof at),
+             ver_scene_word(vs, "grid", "motion"));
+    return 2;
+  }
   if (sc->damping > 0.0 && sc->node_mass == MPM_NODEMASS_LIMITED && sc->shape == MPM_SHAPE_LINEAR &&
       (sc->scheme == MPM_SCHEME_USL || sc->scheme == MPM_SCHEME_USAVG)) {
     snprintf(err, errlen, "%s: time.damping: %g needs grid.node_mass = lumped with usl or usavg on linear shapes "
