@@ -540,8 +540,9 @@ static void lay_grid(mpm_sim *s)
   }
 }
 
-/* grid.weights = laid: the step moved each particle from its laid place; it is where it
- * was plus that move */
+/* grid.weights = laid, when a step ends (mpm_sim_step, failed or not): the step moved
+ * each particle from its laid place; it is where it was plus that move (the next
+ * lay_grid writes the offsets afresh) */
 static void unlay(mpm_sim *s)
 {
   if (!s->laid)
@@ -550,7 +551,6 @@ static void unlay(mpm_sim *s)
   for (size_t k = 0; k < p->n; k++) {
     p->x[k] += p->wdx[k];
     p->y[k] += p->wdy[k];
-    p->wdx[k] = p->wdy[k] = 0.0;
   }
   s->laid = 0;
 }
@@ -717,7 +717,6 @@ static mpm_status step(mpm_sim *s, char *err, size_t errlen)
   if (s->band)
     mpm_band_step(s->band);
   head_rigid(s);
-  unlay(s);
   if (s->damp)
     mpm_damping_parts(s);
   ledger_step(s);
@@ -731,6 +730,6 @@ static mpm_status step(mpm_sim *s, char *err, size_t errlen)
 mpm_status mpm_sim_step(mpm_sim *s, char *err, size_t errlen)
 {
   const mpm_status st = step(s, err, errlen);
-  unlay(s); /* a step that failed half-way leaves its particles where they are, too */
+  unlay(s); /* here, so that a step that failed half-way puts its particles back too */
   return st;
 }
