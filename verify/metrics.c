@@ -1,6 +1,7 @@
 /*
  * metrics.c - the measured quantities of verify/ (metrics.h), each defined once.
  */
+#include <float.h>
 #include <math.h>
 #include <stddef.h>
 #include <stdlib.h>
@@ -253,8 +254,13 @@ int ver_gci(double f1, double f2, double f3, double r, double p_lo, double p_hi,
   g->sensible = 0;
   if (!(r > 1.0) || !(p_lo > 0.0) || !(p_lo <= p_hi) || f1 == 0.0 || f2 == 0.0 || !isfinite(f1 + f2 + f3))
     return -1;
-  if (f2 == f1) {
+  /* the two finest agree to rounding (a quantity the method fixes exactly, such as the
+   * interface's D = U0 area): nothing to estimate, and no order to read from noise */
+  const double tie = 64.0 * DBL_EPSILON * fmax(fabs(f1), fmax(fabs(f2), fabs(f3)));
+  if (fabs(f2 - f1) <= tie) {
     g->gci12 = 0.0;
+    if (fabs(f3 - f2) <= tie)
+      g->gci23 = 0.0;
     return -1;
   }
   g->conv = (f3 != f2) ? (f2 - f1) / (f3 - f2) : INFINITY;

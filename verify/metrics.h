@@ -95,7 +95,8 @@ typedef struct {
   int sensible;
 } ver_gci_result;
 /* 0, or -1 (the result all NaN) if r <= 1, p_lo > p_hi, p_lo <= 0, f1 == 0 or f2 == 0,
- * or f2 == f1 (nothing to estimate: gci12 0 is then set). */
+ * or f2 == f1 to rounding (64 eps of the largest value: nothing to estimate; gci12 = 0 is
+ * then set, and gci23 = 0 too when f3 ties as well; conv and p stay NaN). */
 int ver_gci(double f1, double f2, double f3, double r, double p_lo, double p_hi, ver_gci_result *g);
 
 /* The energy balance W_ext + E0 = KE + SE + W_coh + booked over n rows, E0 the energy

@@ -58,7 +58,9 @@ static int cross_add(ver_cross *x, int *nx, const char *name, const char *scene,
  * values do not show convergence) with monotone convergence, then Fs 1.25, else Fs 3.
  * Pass: monotone convergence and GCI_12 <= 2 % (the tolerance of the alpha = 90 checks
  * against the closed form).  Known-limit class (the band's dissipation and its
- * separation change with the grid: Le = one cell; docs/bands.md): GCI up to 1.
+ * separation change with the grid: Le = one cell; docs/bands.md): GCI up to 1.  Values
+ * equal to rounding on the two finest grids pass with GCI 0: the method fixes them (the
+ * interface's D = U0 area), and their last bits carry no order.
  */
 static int policy_gci(const ver_case *cs, int n, ver_cross *x, int room)
 {
@@ -99,7 +101,7 @@ static int policy_gci(const ver_case *cs, int n, ver_cross *x, int room)
       }
       g->n = 3;
       ver_gci_result r;
-      ver_gci(g->y[0], g->y[1], g->y[2], 2.0, 0.5, 2.0, &r);
+      const int tie = ver_gci(g->y[0], g->y[1], g->y[2], 2.0, 0.5, 2.0, &r) != 0 && r.gci12 == 0.0;
       ver_check *k = &g->chk;
       k->name = qname[t];
       k->measured = r.gci12;
@@ -111,8 +113,11 @@ static int policy_gci(const ver_case *cs, int n, ver_cross *x, int room)
       snprintf(k->note, sizeof k->note, "GCI_12 of %s at h %g (ratio 2, ppc %d): conv %.3g, p %.3g (%s, used %.3g), "
                "Fs %g, GCI_23 %.3g, GCI_23 / (2^p GCI_12) %.3g", yname[t], a->h, a->ppc, r.conv, r.p,
                r.sensible ? "sensible" : "not sensible", r.p_used, r.fs, r.gci23, r.asym);
+      if (tie) /* the finest two agree to rounding: the method fixes the value (the interface's D) */
+        snprintf(k->note, sizeof k->note, "%s equal to rounding at h %g and %g%s (ppc %d): nothing left to converge",
+                 yname[t], a->h, b->h, r.gci23 == 0.0 ? " and at the third grid" : "", a->ppc);
       ver_check_judge(k);
-      if (k->verdict == VER_PASS && !(r.conv > 0.0 && r.conv < 1.0))
+      if (k->verdict == VER_PASS && !tie && !(r.conv > 0.0 && r.conv < 1.0))
         k->verdict = VER_KNOWN; /* small but not converging: no estimate */
     }
   }

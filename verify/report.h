@@ -111,10 +111,14 @@ typedef struct {
 extern const char *const rep_sweep_scene[REP_NSWEEP];
 extern const double rep_sweep_until[REP_NSWEEP];
 
-/* err = exp(c) h^p over the complete 1-ppc runs of a sweep scene */
+/* err = exp(c) h^p over the complete 1-ppc runs of a sweep scene; a dissipation error
+ * at rounding (below REP_ROUNDING: the interface's D is U0 area by construction) is
+ * counted in n_diss_exact and left out of its fit, whose p is then NaN if fewer than two
+ * runs are left */
+#define REP_ROUNDING 1e-12
 typedef struct {
   double p_curve, c_curve, p_diss, c_diss;
-  int n;
+  int n, n_diss_exact;
 } rep_fit;
 
 #define REP_MAX_FIGS 24

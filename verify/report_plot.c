@@ -192,7 +192,8 @@ static void write_sweeps(const rep_ctx *r, rep_fit *fits, FILE *vars)
       if (!f)
         continue;
       fprintf(f, "h,curve_err,abs_diss_err,cpu_s,complete,particles\n");
-      int n = 0;
+      int n = 0, nd = 0, nexact = 0;
+      double hd[8];
       for (double h = 8; h >= 0.5; h /= 2) {
         const int k = ver_report_find_sweep(r, rep_sweep_scene[s], h, ppc);
         if (k < 0 || !r->c[k].have || !isfinite(r->c[k].curve_err))
@@ -203,16 +204,23 @@ static void write_sweeps(const rep_ctx *r, rep_fit *fits, FILE *vars)
         if (ppc == 1 && n < 8 && c->complete) {
           hh[n] = h;
           ec[n] = c->curve_err;
-          ed[n] = fabs(c->diss_err);
           n++;
+          if (fabs(c->diss_err) < REP_ROUNDING)
+            nexact++;
+          else {
+            hd[nd] = h;
+            ed[nd++] = fabs(c->diss_err);
+          }
         }
       }
       fclose(f);
       if (ppc == 1) {
         rep_fit *cf = &fits[s];
         cf->n = n;
+        cf->n_diss_exact = nexact;
         cf->p_curve = ver_conv_order(hh, ec, (size_t)n, &cf->c_curve);
-        cf->p_diss = ver_conv_order(hh, ed, (size_t)n, &cf->c_diss);
+        cf->p_diss = ver_conv_order(hd, ed, (size_t)nd, &cf->c_diss);
+        fprintf(vars, "exact_diss_%s = %d\n", rep_sweep_scene[s], nexact == n && n > 0);
         fprintf(vars, "p_curve_%s = %.6g\nc_curve_%s = %.6g\np_diss_%s = %.6g\nc_diss_%s = %.6g\n",
                 rep_sweep_scene[s], isfinite(cf->p_curve) ? cf->p_curve : 0, rep_sweep_scene[s],
                 isfinite(cf->c_curve) ? cf->c_curve : -50, rep_sweep_scene[s],

@@ -275,7 +275,10 @@ static void sweep_vars(report *R)
     char key[64];
     snprintf(key, sizeof key, "fit:%s", sc);
     num(R, key, "p_curve", R->fits[s].p_curve);
-    num(R, key, "p_diss", R->fits[s].p_diss);
+    if (R->fits[s].n > 0 && R->fits[s].n_diss_exact == R->fits[s].n)
+      word(R, key, "p_diss", "none (D exact to rounding on every grid)");
+    else /* the fit leaves out any grid at rounding */
+      num(R, key, "p_diss", R->fits[s].p_diss);
     num(R, key, "n", R->fits[s].n);
     num(R, key, "until", rep_sweep_until[s]);
     const rep_case *best = NULL;

@@ -111,7 +111,7 @@ static void test_ana_wave_static_limit(void **state)
     e[k] = sqrt(s / m) / bar.Pmax;
     ana_wave_free(&w);
   }
-  print_message("rate error (RMS / Pmax) at V 0.004, 0.001, 0.00025: %.5f %.5f %.5f\n", e[0], e[1], e[2]);
+  print_message("# rate error (RMS / Pmax) at V 0.004, 0.001, 0.00025: %.5f %.5f %.5f\n", e[0], e[1], e[2]);
   assert_true(e[0] / e[1] > 2.5);
   assert_true(e[1] / e[2] > 2.5);
   assert_true(e[2] < 0.005);

@@ -333,7 +333,7 @@ static void test_mpm_bar_node_mass_limit(void **state)
 {
   (void)state;
   const double lim = node_mass_case(MPM_NODEMASS_LIMITED), lum = node_mass_case(MPM_NODEMASS_LUMPED);
-  print_message("node mass: KE + SE max over start: limited %.6g, lumped %.6g\n", lim, lum);
+  print_message("# node mass: KE + SE max over start: limited %.6g, lumped %.6g\n", lim, lum);
   /* USL keeps KE + SE only on the whole, not step by step (a step's L_scheme can be
    * negative: measured up to 1e-5 of the start here): 1e-3 */
   assert_true(lim <= 1.001);

@@ -90,7 +90,7 @@ static void test_damping_decay(void **state)
   const double c = 0.05;
   double t0, t, gap0, gap, ld0, ld;
   const double k0 = run_vib(0.0, 0.0, 2.0, &t0, &gap0, &ld0), k = run_vib(c, 0.0, 2.0, &t, &gap, &ld);
-  print_message("kept: undamped %.5f, damped %.5f; (kept / undamped) / exp(-c t) = %.4f; L_damp / E0 %.4f\n", k0, k,
+  print_message("# kept: undamped %.5f, damped %.5f; (kept / undamped) / exp(-c t) = %.4f; L_damp / E0 %.4f\n", k0, k,
                 k / k0 / exp(-c * t), ld);
   assert_rel(k / k0, exp(-c * t), 0.02, "damped energy kept / undamped against exp(-c t)");
   assert_abs(gap0, 0.0, 1e-9, "ledger, undamped");
@@ -114,7 +114,7 @@ static void test_damping_beta_decay(void **state)
   double t0, t, gap0, gap, ld0, ld;
   const double k0 = run_vib(0.0, 0.0, 2.0, &t0, &gap0, &ld0), k = run_vib(0.0, beta, 2.0, &t, &gap, &ld);
   const double w = PI * 32.0 / 192.0; /* vibration.ini: E 1024, rho 1, L 192 */
-  print_message("beta: kept undamped %.5f, damped %.5f; (kept / undamped) / exp(-beta w^2 t) = %.4f; L_damp / E0 %.4f\n",
+  print_message("# beta: kept undamped %.5f, damped %.5f; (kept / undamped) / exp(-beta w^2 t) = %.4f; L_damp / E0 %.4f\n",
                 k0, k, k / k0 / exp(-beta * w * w * t), ld);
   assert_rel(k / k0, exp(-beta * w * w * t), 0.02, "energy kept / undamped against exp(-beta w^2 t)");
   assert_abs(gap, 0.0, 1e-9, "ledger with the viscous work in L_damp");
@@ -146,7 +146,7 @@ static void test_damping_quasistatic(void **state)
 {
   (void)state;
   const double k = 1024.0 * 32.0 / 192.0, k0 = pull_load(0.0), k1 = pull_load(0.1);
-  print_message("P / delta: analytic %.4f, undamped %.4f, damped %.4f\n", k, k0, k1);
+  print_message("# P / delta: analytic %.4f, undamped %.4f, damped %.4f\n", k, k0, k1);
   assert_rel(k0, k, 0.01, "undamped slope against E H / L");
   assert_rel(k1, k, 0.01, "damped slope against E H / L");
   assert_rel(k1, k0, 1e-3, "damped slope against undamped");
@@ -201,7 +201,7 @@ static void test_damping_threads(void **state)
   }
   mpm_sim_free(c);
   assert_true(precut > 100);
-  print_message("cut %d, softened %ld, separated %ld, peak %.4g, L_damp %.4g\n", a->cut, a->n_soften, a->n_separate, a->P_peak, a->led.L_damp);
+  print_message("# cut %d, softened %ld, separated %ld, peak %.4g, L_damp %.4g\n", a->cut, a->n_soften, a->n_separate, a->P_peak, a->led.L_damp);
   assert_true(a->cut && a->led.L_damp > 0.0);
   tu_assert_same_bits(a, b, "damped, two fields");
   mpm_sim_free(a);
@@ -217,7 +217,7 @@ static void test_damping_threads(void **state)
       fail_msg("parts, step %ld: %s", k, err);
   mpm_sim_energy(a, &e);
   const double gap = fabs(e.W_ext + e0.KE + e0.SE - e.KE - e.SE - e.W_coh - booked(&e)) / e.W_ext;
-  print_message("parts: cut %d, L_damp %.4g, ledger gap / W_ext %.2e\n", a->cut, e.L_damp, gap);
+  print_message("# parts: cut %d, L_damp %.4g, ledger gap / W_ext %.2e\n", a->cut, e.L_damp, gap);
   assert_true(a->cut && e.L_damp > 0.0);
   assert_abs(gap, 0.0, 1e-6, "ledger, damped about the parts");
   tu_assert_same_bits(a, b, "damped about the parts, two fields");
@@ -281,7 +281,7 @@ static void test_damping_parts(void **state)
     else
       e2 = fmax(e2, fabs(p->vx[k] - (1.0 - a) * vx0[k]) + fabs(p->vy[k] - (1.0 - a) * vy[k]));
   }
-  print_message("parts: untouched %.2e, kept and scaled %.2e; L_damp %.6e against %.6e\n", e1, e2, s->led.L_damp,
+  print_message("# parts: untouched %.2e, kept and scaled %.2e; L_damp %.6e against %.6e\n", e1, e2, s->led.L_damp,
                 ke * (1.0 - (1.0 - a) * (1.0 - a)));
   assert_abs(e1, 0.0, 0.0, "separated and head particles");
   assert_abs(e2, 0.0, 1e-14, "the grip's part's slide and stretch about the grip, the held part's rotation, scaled by 1 - c dt");

@@ -133,7 +133,7 @@ static void test_ver_foreign_wave(void **state)
     ver_table ld = {N, {d, P, NULL}};
     ver_foreign_measure(&c, &ld, NULL, NULL);
     ver_policy_case(&c);
-    print_message("%s: curve_wave %.5f, curve_l2 %.5f, peak %.4f (exact %.4f)\n", k ? "triangle" : "exact",
+    print_message("# %s: curve_wave %.5f, curve_l2 %.5f, peak %.4f (exact %.4f)\n", k ? "triangle" : "exact",
                   c.curve_wave, c.curve_l2, c.peak_P, c.wave_peak);
     if (k == 0) {
       assert_true(c.curve_wave < 0.005);

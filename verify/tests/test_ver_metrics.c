@@ -4,6 +4,7 @@
  * load-deflection curve with a known softening slope, particle bands of known width
  * and angle, errors C h^p of known order.  Every degenerate input is hit on purpose.
  */
+#include <float.h>
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -417,6 +418,17 @@ static void test_ver_metrics_gci(void **state)
   /* degenerate inputs */
   assert_int_equal(ver_gci(1.0, 1.0, 1.2, 2.0, 0.5, 2.0, &g), -1);
   assert_rel(g.gci12, 0.0, 0, "equal fine values");
+  assert_true(isnan(g.gci23));
+  /* equal to rounding on all three grids (fig7's D = U0 area / sin 60 deg at h 2, 4, 8
+   * differs in its last bits): no order is read from the noise */
+  const double d = 0.375 * 32.0 / sin(acos(-1.0) / 3.0);
+  assert_int_equal(ver_gci(d * (1.0 + 2.0 * DBL_EPSILON), d, d * (1.0 - 2.0 * DBL_EPSILON), 2.0, 0.5, 2.0, &g), -1);
+  assert_rel(g.gci12, 0.0, 0, "ties: GCI_12");
+  assert_rel(g.gci23, 0.0, 0, "ties: GCI_23");
+  assert_true(isnan(g.conv) && isnan(g.p));
+  /* a real difference of 1e-9 is not a tie */
+  assert_int_equal(ver_gci(d * (1.0 + 1e-9), d, d * (1.0 - 1e-9), 2.0, 0.5, 2.0, &g), 0);
+  assert_true(g.gci12 > 0.0);
   assert_int_equal(ver_gci(1.0, 1.1, 1.2, 1.0, 0.5, 2.0, &g), -1);
   assert_int_equal(ver_gci(0.0, 1.1, 1.2, 2.0, 0.5, 2.0, &g), -1);
   assert_true(isnan(g.gci12));

@@ -5,6 +5,7 @@
  * each side of a tolerance and a known-limit bound, and the cross-case checks
  * (D spread over h, order of the curve error, the floor below which no order is asked).
  */
+#include <float.h>
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -303,6 +304,54 @@ static void test_ver_policy_cross(void **state)
       assert_int_equal(x[i].chk.verdict, VER_PASS);
 }
 
+/* The GCI of an inclined scene over h 8, 4, 2: a D equal to rounding on every grid (the
+ * interface's U0 area / sin 60 deg, its last bits differing) passes with GCI 0; the same
+ * D growing 0.75 % per halving (the band method's) is known-limit, not converging; a
+ * peak converging at order 2 (0.04, 0.01 off) passes. */
+static const ver_cross *gci(const ver_cross *x, int nx, const char *name)
+{
+  for (int i = 0; i < nx; i++)
+    if (!strcmp(x[i].chk.name, name))
+      return &x[i];
+  fail_msg("no cross check %s", name);
+  return NULL;
+}
+
+static void test_ver_policy_gci(void **state)
+{
+  (void)state;
+  ver_case cs[3];
+  const double hs[3] = {2, 4, 8};
+  const double d = 0.375 * 32.0 / sin(acos(-1.0) / 3.0);
+  for (int i = 0; i < 3; i++) {
+    fig6_case(&cs[i], 1);
+    snprintf(cs[i].scene, sizeof cs[i].scene, "fig7");
+    snprintf(cs[i].id, sizeof cs[i].id, "fig7-h%g-ppc1", hs[i]);
+    cs[i].h = cs[i].vs.sc.h = hs[i];
+    cs[i].vs.sc.alpha_deg = 60.0;
+    cs[i].peak_P = 42.0 * (1.0 - 0.01 * (hs[i] / 2.0) * (hs[i] / 2.0) / 4.0);
+    cs[i].delta_sep = 0.33;
+  }
+  cs[0].D_final = d * (1.0 + 2.0 * DBL_EPSILON);
+  cs[1].D_final = d;
+  cs[2].D_final = d * (1.0 - 2.0 * DBL_EPSILON);
+  static ver_cross x[VER_MAXCROSS];
+  int nx = ver_policy_cross(cs, 3, x);
+  const ver_cross *g = gci(x, nx, "gci_D_final");
+  assert_int_equal(g->chk.verdict, VER_PASS);
+  assert_true(g->chk.measured == 0.0);
+  g = gci(x, nx, "gci_peak_P");
+  assert_int_equal(g->chk.verdict, VER_PASS);
+  /* the band method's D, 14.75, 14.64, 14.53 at h 2, 4, 8: conv 1.02, not converging */
+  cs[0].D_final = 14.75;
+  cs[1].D_final = 14.64;
+  cs[2].D_final = 14.53;
+  nx = ver_policy_cross(cs, 3, x);
+  g = gci(x, nx, "gci_D_final");
+  assert_int_equal(g->chk.verdict, VER_KNOWN);
+  assert_true(g->chk.measured > 0.02);
+}
+
 int main(void)
 {
   const struct CMUnitTest tests[] = {
@@ -312,6 +361,7 @@ int main(void)
     cmocka_unit_test(test_ver_policy_band_method),
     cmocka_unit_test(test_ver_policy_snapback_softening),
     cmocka_unit_test(test_ver_policy_cross),
+    cmocka_unit_test(test_ver_policy_gci),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -79,7 +79,7 @@ static void test_ver_wave_iface90(void **state)
   const double hs[2] = {8.0, 4.0};
   for (int i = 0; i < 2; i++) {
     e[i] = run_case(hs[i], &pk, &wpk, &D, &Dref);
-    print_message("h %g: RMS (P - P_wave) / Pmax %.5f, peak %.4f against the exact %.4f, D %.6f\n", hs[i], e[i], pk,
+    print_message("# h %g: RMS (P - P_wave) / Pmax %.5f, peak %.4f against the exact %.4f, D %.6f\n", hs[i], e[i], pk,
                   wpk, D);
     if (!(e[i] < 0.01))
       fail_msg("h %g: RMS (P - P_wave) / Pmax %.5f, want < 0.01", hs[i], e[i]);
