@@ -512,7 +512,7 @@ static void lay_grid(mpm_sim *s)
     /* once the band has cut the bar there is no mean stretch to follow: the grid stays,
      * and with grid.weights = laid the particles are taken where they are from now on
      * (they moved by their offsets from the laid places: sort them again) */
-    if (s->p->wdx && !s->laid_done) {
+    if (s->sc.weights == MPM_WEIGHTS_LAID && !s->laid_done) {
       s->laid_done = 1;
       s->resort = 1;
     }

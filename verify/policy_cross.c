@@ -110,12 +110,13 @@ static int policy_gci(const ver_case *cs, int n, ver_cross *x, int room)
       k->cls = VER_CLASS_KNOWN;
       k->lim_lo = 0.0;
       k->lim_hi = 1.0;
-      snprintf(k->note, sizeof k->note, "GCI_12 of %s at h %g (ratio 2, ppc %d): conv %.3g, p %.3g (%s, used %.3g), "
-               "Fs %g, GCI_23 %.3g, GCI_23 / (2^p GCI_12) %.3g", yname[t], a->h, a->ppc, r.conv, r.p,
-               r.sensible ? "sensible" : "not sensible", r.p_used, r.fs, r.gci23, r.asym);
       if (tie) /* the finest two agree to rounding: the method fixes the value (the interface's D) */
         snprintf(k->note, sizeof k->note, "%s equal to rounding at h %g and %g%s (ppc %d): nothing left to converge",
                  yname[t], a->h, b->h, r.gci23 == 0.0 ? " and at the third grid" : "", a->ppc);
+      else
+        snprintf(k->note, sizeof k->note, "GCI_12 of %s at h %g (ratio 2, ppc %d): conv %.3g, p %.3g (%s, used %.3g), "
+                 "Fs %g, GCI_23 %.3g, GCI_23 / (2^p GCI_12) %.3g", yname[t], a->h, a->ppc, r.conv, r.p,
+                 r.sensible ? "sensible" : "not sensible", r.p_used, r.fs, r.gci23, r.asym);
       ver_check_judge(k);
       if (k->verdict == VER_PASS && !tie && !(r.conv > 0.0 && r.conv < 1.0))
         k->verdict = VER_KNOWN; /* small but not converging: no estimate */

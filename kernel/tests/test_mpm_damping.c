@@ -51,11 +51,6 @@ static mpm_scene bar_scene(double h)
   return tu_vib_scene(h, MPM_SCHEME_MUSL, MPM_BC_CONSISTENT);
 }
 
-static double booked(const mpm_energy *e)
-{
-  return e->L_bc + e->L_flip + e->L_scheme + e->W_head + e->L_contact + e->L_debris + e->L_damp;
-}
-
 /* Energy kept over `periods` of 2 L / c (the time run into *t); the ledger's gap over E0
  * into *gap. */
 static double run_vib(double c, double beta, double periods, double *t, double *gap, double *ldamp)
@@ -78,7 +73,7 @@ static double run_vib(double c, double beta, double periods, double *t, double *
       fail_msg("step %ld: %s", k, err);
   mpm_sim_energy(s, &e);
   *t = s->t;
-  *gap = fabs(e.W_ext + E0 - e.KE - e.SE - e.W_coh - booked(&e)) / E0;
+  *gap = fabs(e.W_ext + E0 - e.KE - e.SE - e.W_coh - tu_booked(&e)) / E0;
   *ldamp = e.L_damp / E0;
   mpm_sim_free(s);
   return (e.KE + e.SE) / E0;
@@ -216,7 +211,7 @@ static void test_damping_threads(void **state)
     if (mpm_sim_step(a, err, sizeof err) != MPM_OK || mpm_sim_step(b, err, sizeof err) != MPM_OK)
       fail_msg("parts, step %ld: %s", k, err);
   mpm_sim_energy(a, &e);
-  const double gap = fabs(e.W_ext + e0.KE + e0.SE - e.KE - e.SE - e.W_coh - booked(&e)) / e.W_ext;
+  const double gap = fabs(tu_ledger_gap(&e0, &e)) / e.W_ext;
   print_message("# parts: cut %d, L_damp %.4g, ledger gap / W_ext %.2e\n", a->cut, e.L_damp, gap);
   assert_true(a->cut && e.L_damp > 0.0);
   assert_abs(gap, 0.0, 1e-6, "ledger, damped about the parts");

@@ -61,6 +61,19 @@ static inline mpm_sim *tu_make_sim(const mpm_scene *sc, int nthreads)
   return s;
 }
 
+/* Every term the step books in its ledger (docs/energy.md): the losses it can name. */
+static inline double tu_booked(const mpm_energy *e)
+{
+  return e->L_bc + e->L_flip + e->L_scheme + e->W_head + e->L_contact + e->L_debris + e->L_damp;
+}
+
+/* What the ledger leaves unexplained from e0 to e: W_ext + KE(0) + SE(0) - (KE + SE +
+ * W_coh + the booked terms); 0 up to rounding when it closes. */
+static inline double tu_ledger_gap(const mpm_energy *e0, const mpm_energy *e)
+{
+  return e->W_ext + e0->KE + e0->SE - (e->KE + e->SE + e->W_coh + tu_booked(e));
+}
+
 /* n steps, failing the test with the kernel's message at the first that fails. */
 static inline void tu_run_steps(mpm_sim *s, long n)
 {
