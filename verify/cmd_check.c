@@ -144,6 +144,7 @@ static int write_json(const char *out, const ver_case *c, const check_info *info
     cJSON_AddNumberToObject(io, "D_cut", info->have ? info->D_cut : NAN);
     cJSON_AddNumberToObject(io, "D_after_cut", info->have ? info->D_after_cut : NAN);
     cJSON_AddNumberToObject(io, "D_reference", info->D_ref);
+    cJSON_AddNumberToObject(io, "W_booked", c->W_booked);
     if (!info->have)
       cJSON_AddStringToObject(io, "note", info->why);
   }
@@ -249,6 +250,11 @@ static void print_verdict(const char *label, const ver_case *c, const check_info
            in->D_after_cut, in->D_ref, in->D_cut / in->D_ref, in->D_after_cut / in->D_ref);
   else if (have_en)
     printf("%-11s %s D_cut: left out (%s)\n", "info", label, in->why);
+  if (have_en && c->W_booked != 0.0)
+    printf("%-11s %s W_booked: %.6g, %.3g of W_ext: the ledger's booked losses at the end (energy.csv's L_bc, "
+           "L_flip, L_scheme, W_head, L_contact, L_debris, L_damp), the scheme's own and the loading machine's; "
+           "W_ext_final is judged against UF x area plus them -- informational, never judged\n",
+           "info", label, c->W_booked, c->W_booked / c->W_ext_final);
   if (!ver_case_check(c, "curve_wave") && isfinite(c->curve_wave))
     printf("%-11s %s curve_wave: %.4g, RMS of P - P_wave / Pmax against the exact solution at grip speed %g of a "
            "bar whose only weak plane is at x %g (a cohesive line; this run's path is another model there) -- "

@@ -181,11 +181,18 @@ void ver_foreign_measure(ver_case *c, const ver_table *ld, const ver_table *en, 
                                         en->col[6], en->col[7], en->col[8], en->col[9], en->col[10], en->col[11]};
     const double E0 = fmax(0.0, en->col[1][0] + en->col[2][0] - en->col[0][0]);
     c->energy_residual = ver_energy_residual(e, m, E0, NULL);
+    c->W_booked = 0.0; /* the ledger's columns the file has */
+    for (int j = 4; j < VER_ENERGY_COLS; j++)
+      c->W_booked += e[j] ? e[j][m - 1] : 0.0;
+    /* the discretisation's own loss: L_bc, L_flip, L_scheme, all three or not judged */
+    c->W_scheme = e[4] && e[5] && e[6] ? e[4][m - 1] + e[5][m - 1] + e[6][m - 1] : NAN;
   } else { /* the external work is the area under the load-deflection curve */
     double w = 0.5 * P[0] * d[0];
     for (size_t i = 1; i < n; i++)
       w += 0.5 * (P[i] + P[i - 1]) * (d[i] - d[i - 1]);
     c->W_ext_final = w;
+    c->W_booked = 0.0;
+    c->W_scheme = NAN;
     c->D_final = c->energy_residual = NAN;
   }
   c->band_width = c->angle = c->D_diffuse = NAN;

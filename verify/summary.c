@@ -211,3 +211,18 @@ int ver_summary_read(const char *dir, ver_summary_doc *d)
   cJSON_Delete(o);
   return 0;
 }
+
+double ver_summary_booked(const ver_summary *u)
+{
+  const double t[] = {u->L_bc_final,      u->L_flip_final,   u->L_scheme_final, u->W_head_final,
+                      u->L_contact_final, u->L_debris_final, u->L_damp_final};
+  double b = 0.0;
+  for (size_t i = 0; i < sizeof t / sizeof *t; i++)
+    b += isfinite(t[i]) ? t[i] : 0.0;
+  return b;
+}
+
+double ver_summary_scheme_loss(const ver_summary *u)
+{
+  return u->L_bc_final + u->L_flip_final + u->L_scheme_final;
+}

@@ -43,6 +43,13 @@ typedef struct {
   long probes, probes_busy;      /* thread probes made; skipped for want of an idle core */
 } ver_summary;
 
+/* The ledger's booked losses at the end (the seven columns after D in energy.csv); a
+ * term the summary lacks (a file from before it was booked) counts 0. */
+double ver_summary_booked(const ver_summary *u);
+/* Of those, the discretisation's own (L_bc + L_flip + L_scheme); NaN if the summary lacks
+ * one of them. */
+double ver_summary_scheme_loss(const ver_summary *u);
+
 /* Schema versions of the files a run writes (docs/output-formats.md); each file says
  * its own: summary.json "schema", a first comment line in the CSV files and scene.ini,
  * the title line of the VTK files.  Raised when a column or key changes meaning or

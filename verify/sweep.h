@@ -56,6 +56,11 @@ typedef struct {
   /* measured */
   double peak_P, delta_peak, delta_sep, k_elastic, D_final, W_ext_final, energy_residual, delta_end;
   double energy_unbooked;      /* the balance without the booked losses (summary.json) */
+  double W_booked;             /* the booked losses at the end (the ledger's L_bc, L_flip,
+                                  L_scheme, W_head, L_contact, L_debris, L_damp); 0 without
+                                  a ledger */
+  double W_scheme;             /* of those, the discretisation's own: L_bc + L_flip + L_scheme;
+                                  NaN without those columns */
   double k_soft, curve_l2, band_width, band_extent, angle;
   double curve_wave; /* the curve error against the bar at the run's grip speed (ver_case_wave) */
   double wave_peak;  /* that solution's peak load (ver_case_wave; NaN where it does not apply) */

@@ -280,6 +280,8 @@ void ver_case_read(const ver_verify_opts *o, ver_case *c)
   ver_case_dir(o, c, dir, sizeof dir);
   c->peak_P = c->delta_peak = c->delta_sep = c->k_elastic = NAN;
   c->D_final = c->W_ext_final = c->energy_residual = c->energy_unbooked = c->delta_end = NAN;
+  c->W_booked = 0.0;
+  c->W_scheme = NAN;
   c->k_soft = c->curve_l2 = c->curve_wave = c->wave_peak = c->band_width = c->band_extent = c->angle = c->D_diffuse = c->P_after = c->P_after_t = c->P_after_c = NAN;
   ver_summary_doc sd;
   if (ver_summary_read(dir, &sd) == 0) {
@@ -298,6 +300,8 @@ void ver_case_read(const ver_verify_opts *o, ver_case *c)
     c->W_ext_final = u->W_ext_final;
     c->energy_residual = u->energy_residual;
     c->energy_unbooked = u->energy_unbooked;
+    c->W_booked = ver_summary_booked(u);
+    c->W_scheme = ver_summary_scheme_loss(u);
     c->delta_end = u->delta_end;
     if (c->exit_code < 0)
       c->wall_s = u->wall_s;

@@ -88,6 +88,31 @@ static void test_ver_foreign_triangle(void **state)
   assert_true(isnan(c.D_final) && isnan(c.energy_residual) && isnan(c.band_width));
   /* separation by the load (below 2 % of the peak over the window): within 1 % of 0.375 */
   assert_true(fabs(c.delta_sep / 0.375 - 1.0) < 0.01);
+  assert_true(c.W_booked == 0.0); /* no energy.csv: nothing booked */
+  /* with an energy.csv whose ledger columns hold L_flip 0.2 and L_scheme 0.1 at the end
+   * (L_bc, W_head, L_contact, L_debris, L_damp absent): W_booked is their sum, and the
+   * work 6.3 is UF x area plus it, so W_ext_final passes at 0 error (against UF x
+   * area alone it is 5 % over, a fail) */
+  static double w[N], ke[N], se[N], wc[N], dd[N], lf[N], ls[N];
+  for (int i = 0; i < N; i++) {
+    w[i] = 6.3 * i / (N - 1);
+    ke[i] = se[i] = 0.0;
+    wc[i] = 6.0 * i / (N - 1);
+    dd[i] = 12.0 * i / (N - 1);
+    lf[i] = 0.2 * i / (N - 1);
+    ls[i] = 0.1 * i / (N - 1);
+  }
+  ver_table en = {N, {w, ke, se, wc, dd, NULL, lf, ls, NULL, NULL, NULL, NULL}};
+  ver_foreign_measure(&c, &ld, &en, NULL);
+  assert_true(fabs(c.W_booked - 0.3) < 1e-12);
+  assert_true(isnan(c.W_scheme)); /* L_bc absent: the discretisation's loss is not judged */
+  assert_true(fabs(c.W_ext_final - 6.3) < 1e-12);
+  assert_true(c.energy_residual < 1e-12); /* 6.3 = 6 + 0.2 + 0.1 on every row */
+  ver_policy_case(&c);
+  const ver_check *k = ver_case_check(&c, "W_ext_final");
+  assert_non_null(k);
+  assert_int_equal(k->verdict, VER_PASS);
+  assert_true(fabs(k->error) < 1e-12);
 }
 
 /* The verdict of a check by name; -1 if the case has none. */

@@ -74,7 +74,7 @@ static void test_ver_policy_fig6_pass_and_fail(void **state)
   fig6_case(&c, 4);
   ver_policy_case(&c);
   assert_int_equal(c.verdict, VER_PASS);
-  assert_int_equal(c.nchk, 12);
+  assert_int_equal(c.nchk, 13);
   /* peak 0.9 % low at 4 ppc: inside 1 %; 1.1 %: fails (pass-class, no known-limit) */
   c.peak_P = 0.991 * c.ana.Pmax;
   ver_policy_case(&c);
@@ -91,6 +91,32 @@ static void test_ver_policy_fig6_pass_and_fail(void **state)
   /* D 5 % high at alpha 90 fails: the band is one cell, D must be U0 x area */
   fig6_case(&c, 4);
   assert_int_equal(d_verdict(&c, 1.05), VER_FAIL);
+  /* the external work: UF x area plus what the ledger booked as the scheme's own loss.
+   * fig6 h 1, 1 ppc measured W_ext 6.285 with 0.194 booked (USL's cell crossings): 4.75 %
+   * over UF x area, 1.47 % over the two together */
+  fig6_case(&c, 1);
+  c.W_ext_final = 6.285;
+  ver_policy_case(&c);
+  assert_int_equal(chk(&c, "W_ext_final")->verdict, VER_FAIL);
+  c.W_booked = 0.194;
+  ver_policy_case(&c);
+  assert_int_equal(chk(&c, "W_ext_final")->verdict, VER_PASS);
+  assert_true(fabs(chk(&c, "W_ext_final")->reference - (c.ana.W_sep + 0.194)) < 1e-12);
+  /* booked losses do not excuse a crack that took too much: 4 % over the sum fails */
+  c.W_ext_final = 1.04 * (c.ana.W_sep + 0.194);
+  ver_policy_case(&c);
+  assert_int_equal(chk(&c, "W_ext_final")->verdict, VER_FAIL);
+  /* and the discretisation's own share is judged apart: 0.194 of 6.285 (0.031) fails the
+   * energy tolerance 0.02, 0.11 of 6.17 (0.018, h 2) passes; a damper's loss is not in it */
+  c.W_ext_final = 6.285;
+  c.W_scheme = 0.194;
+  ver_policy_case(&c);
+  assert_int_equal(chk(&c, "W_ext_final")->verdict, VER_PASS);
+  assert_int_equal(chk(&c, "scheme_loss")->verdict, VER_FAIL);
+  c.W_ext_final = 6.17;
+  c.W_booked = c.W_scheme = 0.11;
+  ver_policy_case(&c);
+  assert_int_equal(chk(&c, "scheme_loss")->verdict, VER_PASS);
   /* an incomplete run fails the run check */
   fig6_case(&c, 4);
   c.complete = 0;
