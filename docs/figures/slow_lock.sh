@@ -18,8 +18,9 @@ run() { # name ppc dt
     --set run.end_delta=0.285 --out "$tmp/$1" > /dev/null
 }
 run p1 1 0.025 &
+pid=$!
 run p1half 1 0.0125
-wait
+wait "$pid" || { echo "slow_lock.sh: the 1 ppc run failed" >&2; exit 1; }
 run p4 4 0.025
 mkdir -p "$out"
 gnuplot -e "dir='$tmp'; out='$out/slow_lock.png'" "$(dirname "$0")/slow_lock.gp"
