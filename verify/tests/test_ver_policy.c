@@ -59,6 +59,13 @@ static const ver_check *chk(const ver_case *c, const char *name)
   return NULL;
 }
 
+/* c's verdict on the check `name` after judging it again. */
+static int judged(ver_case *c, const char *name)
+{
+  ver_policy_case(c);
+  return chk(c, name)->verdict;
+}
+
 /* c's verdict on D when it measures f times U0 x area. */
 static int d_verdict(ver_case *c, double f)
 {
@@ -96,27 +103,22 @@ static void test_ver_policy_fig6_pass_and_fail(void **state)
    * over UF x area, 1.47 % over the two together */
   fig6_case(&c, 1);
   c.W_ext_final = 6.285;
-  ver_policy_case(&c);
-  assert_int_equal(chk(&c, "W_ext_final")->verdict, VER_FAIL);
+  assert_int_equal(judged(&c, "W_ext_final"), VER_FAIL);
   c.W_booked = 0.194;
-  ver_policy_case(&c);
-  assert_int_equal(chk(&c, "W_ext_final")->verdict, VER_PASS);
+  assert_int_equal(judged(&c, "W_ext_final"), VER_PASS);
   assert_true(fabs(chk(&c, "W_ext_final")->reference - (c.ana.W_sep + 0.194)) < 1e-12);
   /* booked losses do not excuse a crack that took too much: 4 % over the sum fails */
   c.W_ext_final = 1.04 * (c.ana.W_sep + 0.194);
-  ver_policy_case(&c);
-  assert_int_equal(chk(&c, "W_ext_final")->verdict, VER_FAIL);
+  assert_int_equal(judged(&c, "W_ext_final"), VER_FAIL);
   /* and the discretisation's own share is judged apart: 0.194 of 6.285 (0.031) fails the
    * energy tolerance 0.02, 0.11 of 6.17 (0.018, h 2) passes; a damper's loss is not in it */
   c.W_ext_final = 6.285;
   c.W_scheme = 0.194;
-  ver_policy_case(&c);
-  assert_int_equal(chk(&c, "W_ext_final")->verdict, VER_PASS);
+  assert_int_equal(judged(&c, "W_ext_final"), VER_PASS);
   assert_int_equal(chk(&c, "scheme_loss")->verdict, VER_FAIL);
   c.W_ext_final = 6.17;
   c.W_booked = c.W_scheme = 0.11;
-  ver_policy_case(&c);
-  assert_int_equal(chk(&c, "scheme_loss")->verdict, VER_PASS);
+  assert_int_equal(judged(&c, "scheme_loss"), VER_PASS);
   /* an incomplete run fails the run check */
   fig6_case(&c, 4);
   c.complete = 0;
