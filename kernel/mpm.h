@@ -183,6 +183,7 @@ typedef struct {
   int damping_about;     /* MPM_DAMP_DRIFT (the node's low-pass) or MPM_DAMP_PARTS (after
                             the cut, each part's held end's motion)                        */
   double end_delta;      /* the run never goes past this end displacement              */
+  int solver;            /* MPM_SOLVER_EXPLICIT (the paper's dynamic step) or _STATIC    */
 } mpm_scene;
 
 /* The loading's steady velocity field, which the particles start with (no wave from the
@@ -579,6 +580,34 @@ void mpm_control_step(mpm_sim *s);
 
 /* Updates s->cut after new separations (cheap when there are none). */
 void mpm_sim_cut(mpm_sim *s);
+
+/* ---- the quasi-static solver (mpm_static.c) ----
+ * Load increments on the same grid, particles, shapes and laws, each solved by Newton's
+ * method on the nodal force balance; the grip's displacement leads to the first
+ * softening, then the dissipation does (the grip may move back: snapback).  The
+ * increment is one "step" of the run: it sets s->ugrip (delta), the loads, the
+ * particles' state and positions, s->W_ext, s->step and s->t (the increment count). */
+enum { MPM_SOLVER_EXPLICIT = 0, MPM_SOLVER_STATIC = 1 };
+enum { MPM_QS_GRIP = 0, MPM_QS_DISSIPATION = 1 };
+typedef struct {
+  long increments;         /* load increments taken                                    */
+  long newton;             /* Newton iterations, all increments                          */
+  long cuts;               /* increments retried with a smaller step                      */
+  long factorizations;     /* LU factorizations of the tangent                            */
+  long switches;           /* changes of control                                       */
+  long turns;              /* increments retried smaller at a corner of the curve          */
+  int mode;                /* MPM_QS_* of the last increment                              */
+  int unknowns;            /* free degrees of freedom                                  */
+  size_t nnz;              /* entries of the tangent                                   */
+  double t_eval, t_factor, t_solve; /* seconds: laws and assembly, factorization, solves */
+} mpm_static_stats;
+typedef struct mpm_static mpm_static;
+/* On a sim made by mpm_sim_alloc from a scene with solver = static; s stays owned by
+ * the caller and must outlive q.  MPM_EINVAL and a message for what it cannot solve. */
+mpm_status mpm_static_alloc(mpm_sim *s, mpm_static **out, char *err, size_t errlen);
+void mpm_static_free(mpm_static *q);
+mpm_status mpm_static_step(mpm_static *q, char *err, size_t errlen);
+void mpm_static_stats_get(const mpm_static *q, mpm_static_stats *out);
 
 /* Total momentum (for conservation tests). */
 void mpm_particles_momentum(const mpm_particles *p, double *px, double *py);

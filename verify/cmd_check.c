@@ -78,6 +78,9 @@ static int build_scene(const char *arg, const char *dir, double h, double ppc, c
         h = ds.sc.h;
       if (ppc <= 0)
         ppc = ds.sc.ppc;
+      /* rows of equilibrium states, not interval averages: judged as such */
+      if (ds.sc.solver == MPM_SOLVER_STATIC && ver_scene_set(vs, "solver.type=static", err, errlen))
+        return 2;
     }
   }
   if (h > 0) {

@@ -36,6 +36,8 @@ static void usage(FILE *f)
     "  --dt DT           time step (must be below the CFL bound h / (c sqrt 2))\n"
     "  --until DELTA     run to this end displacement exactly (no early stop)\n"
     "  --set S.K=V       set key K of section S, as in the file (repeatable)\n"
+    "  --solver NAME     explicit (the paper's dynamic step) or static (load\n"
+    "                    increments in equilibrium; the same as --set solver.type=NAME)\n"
     "  --allow-unstable  accept a time step at or above the CFL bound\n"
     "  --threads N       OpenMP threads (default: chosen while it runs, one thread\n"
     "                    for small scenes, up to OMP_NUM_THREADS or all cores when\n"
@@ -126,6 +128,7 @@ int ver_cmd_run(int argc, char **argv)
 {
   const char *path = NULL, *outdir = NULL;
   const char *sets[64];
+  char solver_set[80];
   int nset = 0, quiet = 0, allow = 0, threads = 0;
   double h = 0, ppc = 0, dt = 0, until = 0;
   for (int i = 1; i < argc; i++) {
@@ -155,7 +158,11 @@ int ver_cmd_run(int argc, char **argv)
       threads = (int)t;
       i++;
     }
-    else if (!strcmp(a, "--set")) {
+    else if (!strcmp(a, "--solver")) {
+      if (!v || nset == 64) { fprintf(stderr, "delam run: --solver needs explicit or static\n"); return 2; }
+      snprintf(solver_set, sizeof solver_set, "solver.type=%s", v);
+      sets[nset++] = solver_set; i++;
+    } else if (!strcmp(a, "--set")) {
       if (!v || nset == 64) { fprintf(stderr, "delam run: --set needs section.key=value\n"); return 2; }
       sets[nset++] = v; i++;
     } else if (!strcmp(a, "--allow-unstable")) allow = 1;
