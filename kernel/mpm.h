@@ -262,6 +262,14 @@ void mpm_dwork_free(mpm_dwork *w);
 mpm_status mpm_dcoh_update(const mpm_material *m, const mpm_dstate *in, const double de[3],
                            mpm_dstate *out, mpm_dinfo *info, mpm_dwork *w);
 
+/* The algorithmic (consistent) tangent of that update: D[i][j] = d sigma_out[i] / d de[j]
+ * at the same (in, de), sigma = (sxx, syy, sxy), de = (dexx, deyy, dexy) with tensor shear
+ * (elastic: D = [[E1, E2, 0], [E2, E1, 0], [0, 0, 2G]]).  Analytic, on the path the update
+ * takes (a one-sided value exactly on a switch between paths); runs the update itself.
+ * Pure like it; D is NaN and the update's status returned when that is not MPM_OK. */
+mpm_status mpm_dcoh_tangent(const mpm_material *m, const mpm_dstate *in, const double de[3], double D[3][3],
+                            mpm_dwork *w);
+
 /* Remaining strength squared, (1 - lambda^q)^2 (eq. 23); -1 once separated
  * (mpm_particles.str2). */
 double mpm_dcoh_str2(const mpm_material *m, double lam, int sep);
