@@ -266,9 +266,10 @@ mpm_status mpm_dcoh_update(const mpm_material *m, const mpm_dstate *in, const do
  * at the same (in, de), sigma = (sxx, syy, sxy), de = (dexx, deyy, dexy) with tensor shear
  * (elastic: D = [[E1, E2, 0], [E2, E1, 0], [0, 0, 2G]]).  Analytic, on the path the update
  * takes (a one-sided value exactly on a switch between paths); runs the update itself.
- * Pure like it; D is NaN and the update's status returned when that is not MPM_OK. */
+ * Pure like it; D is NaN and the update's status returned when that is not MPM_OK.
+ * dlam (if not NULL) gets d lambda_out / d de on the same path (0 on an elastic step). */
 mpm_status mpm_dcoh_tangent(const mpm_material *m, const mpm_dstate *in, const double de[3], double D[3][3],
-                            mpm_dwork *w);
+                            double dlam[3], mpm_dwork *w);
 
 /* Remaining strength squared, (1 - lambda^q)^2 (eq. 23); -1 once separated
  * (mpm_particles.str2). */
@@ -604,6 +605,9 @@ typedef struct {
   long factorizations;     /* LU factorizations of the tangent                            */
   long switches;           /* changes of control                                       */
   long turns;              /* increments retried smaller at a corner of the curve          */
+  long backtracks;         /* Newton steps halved by the line search                      */
+  int nres;                /* the last increment's Newton iterations, and each one's      */
+  double res[32];          /*   largest residual force over the largest load (its first 32) */
   int mode;                /* MPM_QS_* of the last increment                              */
   int unknowns;            /* free degrees of freedom                                  */
   size_t nnz;              /* entries of the tangent                                   */

@@ -294,6 +294,7 @@ static int separate(const mpm_material *m, nt_stress tr, double upn, nt_stress *
 typedef struct {
   int path;          /* MPM_DPATH_* (ELASTIC also for model NONE)                  */
   int contact;       /* separate(): the closing stopped at shut (s_nn follows the trial) */
+  double dun;        /* ... and its normal opening increment                               */
   int st_on;         /* 1: st = trial s_nt; 0: reversed_shear = closing zeroed it   */
   nt_stress tr;      /* trial stress in the n-t frame                              */
   double st, se, r, gn, gt, mn, mt, dl;
@@ -331,6 +332,7 @@ static inline mpm_status dcoh_step(const mpm_material *m, const mpm_dstate *in, 
   t->tr = tr;
   if (in->sep) {
     t->contact = separate(m, tr, in->upn, &s, &dun, &dut);
+    t->dun = dun;
     info->path = MPM_DPATH_OPEN;
   } else {
     /* decohesion.reversed_shear = closing: shear against the slip the particle has
@@ -385,6 +387,8 @@ static inline mpm_status dcoh_step(const mpm_material *m, const mpm_dstate *in, 
     } else {
       /* Separation imminent (lambda past the threshold) or no solution. */
       t->contact = separate(m, tr, in->upn, &s, &dun, &dut);
+      t->dun = dun;
+    t->dun = dun;
       out->sep = 1;
       info->path = MPM_DPATH_SEPARATE;
     }
@@ -413,12 +417,21 @@ mpm_status mpm_dcoh_update(const mpm_material *m, const mpm_dstate *in, const do
 }
 
 /* d s / d s_tr in the n-t frame, rows and columns (nn, tt, nt), of the path t took. */
-static void tangent_nt(const mpm_material *m, const dcoh_trace *t, double A[3][3])
+static void tangent_nt(const mpm_material *m, const dcoh_trace *t, double A[3][3], double L[3])
 {
   for (int i = 0; i < 3; i++)
     for (int j = 0; j < 3; j++)
       A[i][j] = i == j ? 1.0 : 0.0;
+  L[0] = L[1] = L[2] = 0.0;
   if (t->path == MPM_DPATH_OPEN || t->path == MPM_DPATH_SEPARATE) {
+    /* lambda = lambda_in + |d ud| / ubar0, d ud = Lopen (s_nn_tr / E1, s_nt_tr / G) (eq. 58;
+     * in contact d ud_n is -ud_n, fixed) */
+    const double dun = t->contact ? t->dun : m->Lopen * t->tr.nn / m->E1, dut = m->Lopen * t->tr.nt / m->G;
+    const double du = sqrt(dun * dun + dut * dut);
+    if (du > 0.0) {
+      L[0] = t->contact ? 0.0 : dun * m->Lopen / (m->E1 * du * m->ubar0);
+      L[2] = dut * m->Lopen / (m->G * du * m->ubar0);
+    }
     /* eqs. 56-58: s_nt = 0; open, s_nn = 0 and s_tt = s_tt_tr - (E2/E1) s_nn_tr (eq. 57);
      * in contact de_nn is fixed by the opening, so s_nn and s_tt follow the trial. */
     A[2][2] = 0.0;
@@ -458,6 +471,8 @@ static void tangent_nt(const mpm_material *m, const dcoh_trace *t, double A[3][3
                          gt_o * (dst[j] - dl * m->G * k * dmt[j])) / se_o;
     ddl[j] = -phix / phil;
   }
+  L[0] = ddl[0]; /* lambda = lambda_in + dl */
+  L[2] = ddl[1];
   /* s_nn = sn_tr - dl E1 k mn, s_tt = stt_tr - dl E2 k mn, s_nt = st_tr - dl G k mt
    * (the trial s_nt, not st: closing keeps it elastic). */
   const int col[2] = {0, 2};
@@ -470,7 +485,7 @@ static void tangent_nt(const mpm_material *m, const dcoh_trace *t, double A[3][3
 }
 
 mpm_status mpm_dcoh_tangent(const mpm_material *m, const mpm_dstate *in, const double de[3], double D[3][3],
-                            mpm_dwork *w)
+                            double dlam[3], mpm_dwork *w)
 {
   assert(m && in && de && D);
   mpm_dstate out;
@@ -478,6 +493,8 @@ mpm_status mpm_dcoh_tangent(const mpm_material *m, const mpm_dstate *in, const d
   dcoh_trace t;
   const mpm_status rc = dcoh_step(m, in, de, &out, &info, w, &t);
   const double C[3][3] = {{m->E1, m->E2, 0.0}, {m->E2, m->E1, 0.0}, {0.0, 0.0, 2.0 * m->G}};
+  if (dlam)
+    dlam[0] = dlam[1] = dlam[2] = rc == MPM_OK ? 0.0 : NAN;
   if (rc != MPM_OK) {
     for (int i = 0; i < 3; i++)
       for (int j = 0; j < 3; j++)
@@ -500,7 +517,8 @@ mpm_status mpm_dcoh_tangent(const mpm_material *m, const mpm_dstate *in, const d
                           {m->rnn[1], m->rtt[1], 2.0 * m->rnt[1]},
                           {0.5 * m->rnn[2], 0.5 * m->rtt[2], m->rnt[2]}};
   double A[3][3], RC[3][3], ARC[3][3];
-  tangent_nt(m, &t, A);
+  double L[3];
+  tangent_nt(m, &t, A, L);
   for (int i = 0; i < 3; i++)
     for (int j = 0; j < 3; j++)
       RC[i][j] = R[i][0] * C[0][j] + R[i][1] * C[1][j] + R[i][2] * C[2][j];
@@ -510,5 +528,8 @@ mpm_status mpm_dcoh_tangent(const mpm_material *m, const mpm_dstate *in, const d
   for (int i = 0; i < 3; i++)
     for (int j = 0; j < 3; j++)
       D[i][j] = P[i][0] * ARC[0][j] + P[i][1] * ARC[1][j] + P[i][2] * ARC[2][j];
+  if (dlam) /* L is d lambda / d (s_nn_tr, s_tt_tr, s_nt_tr) */
+    for (int j = 0; j < 3; j++)
+      dlam[j] = L[0] * RC[0][j] + L[1] * RC[1][j] + L[2] * RC[2][j];
   return MPM_OK;
 }

@@ -35,6 +35,7 @@
 #define MPM_QS_FTOL 1e-9
 #define MPM_QS_DTOL 1e-10
 #define MPM_QS_MAXIT 25   /* Newton iterations an increment may take                */
+#define MPM_QS_LS 4       /* halvings of a Newton step that raises the residual      */
 #define MPM_QS_MAXCUT 40  /* halvings of one increment before the run gives up       */
 #define MPM_QS_EASY 4     /* iterations at or below which the next increment grows   */
 #define MPM_QS_HARD 10    /* ... at or above which it shrinks                        */
@@ -42,6 +43,8 @@
                              one's, in (delta / delta at the peak, P / the peak), is retried at
                              half its size, so that rows resolve the curve's corners (the peak,
                              the separation) and stay few along its straight pieces            */
+#define MPM_QS_STALL 100  /* increments over which the control must advance by MPM_QS_STALL_C */
+#define MPM_QS_STALL_C 1e-3 /* ... of U0 H / sin a, or the run stops with an error: it stalls */
 #define MPM_QS_NEL 8      /* equal increments of the linear branch up to the first initiation */
 
 static double now(void)
@@ -56,7 +59,7 @@ void mpm_static_free(mpm_static *q)
   if (!q)
     return;
   void *f[] = {q->pid, q->cnt, q->node, q->N, q->Gx, q->Gy, q->eq, q->held, q->map, q->Un, q->Ut, q->R, q->kfd,
-               q->ga, q->x1, q->x2, q->du, q->tsxx, q->tsyy, q->tsxy, q->tlam, q->tupn, q->tupt, q->tw,
+               q->ga, q->x1, q->x2, q->du, q->pdir, q->tsxx, q->tsyy, q->tsxy, q->tlam, q->tupn, q->tupt, q->tw,
                q->tsep, q->tpath};
   for (size_t i = 0; i < sizeof f / sizeof f[0]; i++)
     free(f[i]);
@@ -163,6 +166,32 @@ static void add_free(mpm_static *q, const double *du, double a)
       q->Ut[i] += a * du[q->eq[i]];
 }
 
+/* The predictor of the next increment: the tangent at the committed state (its last
+ * evaluation, at the converged trial) factorized, d u / d delta = -K^-1 d R / d delta, and
+ * the control's answer to delta along it. */
+static mpm_status predictor(mpm_static *q)
+{
+  const int n = q->nfree;
+  if (!q->have_eval && mpm_static_eval(q, 1) != MPM_OK)
+    return MPM_ENOTFINITE;
+  mpm_status st = factor(q);
+  for (int i = 0; st == MPM_OK && i < n; i++)
+    q->x1[i] = -q->kfd[i];
+  if (st == MPM_OK)
+    st = solve(q, q->x1, q->pdir);
+  q->pden = st == MPM_OK ? dot(q->ga, q->pdir, n) + q->gb : NAN;
+  q->have_pred = st == MPM_OK;
+  return st;
+}
+
+/* The residual over its tolerance: the largest force over MPM_QS_FTOL Fref and, under
+ * the dissipation control, the constraint's miss over MPM_QS_DTOL Dref; <= 1 converged. */
+static double merit(const mpm_static *q, double Fref, double g, int grip)
+{
+  const double r = norm_inf(q->R, q->nfree) / (MPM_QS_FTOL * Fref);
+  return grip ? r : fmax(r, fabs(g) / (MPM_QS_DTOL * q->Dref));
+}
+
 /* One increment from the committed state under the current control; 1 if it converged
  * (the trial state is then the increment's), 0 if not, or a negative status. */
 static int increment(mpm_static *q, int *iters)
@@ -170,37 +199,35 @@ static int increment(mpm_static *q, int *iters)
   const int n = q->nfree;
   memcpy(q->Ut, q->Un, sizeof(double) * 2 * q->nn);
   q->dt = q->dn;
-  if (!q->have_factor) {
-    if (mpm_static_eval(q, 1) != MPM_OK || factor(q) != MPM_OK)
-      return 0;
-  }
-  /* predictor: the tangent's response to delta, scaled to the control's step */
-  for (int i = 0; i < n; i++)
-    q->x1[i] = -q->kfd[i];
-  if (solve(q, q->x1, q->x2) != MPM_OK)
+  if (!q->have_pred && predictor(q) != MPM_OK)
     return 0;
+  /* predictor: the committed state's tangent response to delta, scaled to the step */
   const int grip = q->mode == MPM_QS_GRIP || q->kick;
-  double dd = q->kick ? 1e-4 * q->dn : q->step_d;
+  double dd = q->kick ? q->kick_d : q->step_d;
   if (!grip) {
-    const double den = dot(q->ga, q->x2, n) + q->gb;
-    if (!(den > 0.0))
-      return -2; /* D does not answer delta here: the grip must lead */
-    dd = q->step_D / den;
+    /* pden < 0: C grows as delta falls, the snapback branch */
+    if (!(fabs(q->pden) * fmax(q->dn, 1e-300) > 1e-9 * q->Dref))
+      return -2; /* C does not answer delta here: the grip must lead */
+    dd = q->step_D / q->pden;
   }
-  add_free(q, q->x2, dd);
+  add_free(q, q->pdir, dd);
   q->dt += dd;
   const double Dtarget = q->Cn + q->step_D;
   q->x2[0] = 0.0; /* (no unknowns: nothing to correct) */
-  for (int it = 0; it < MPM_QS_MAXIT; it++) {
-    if (mpm_static_eval(q, 1) != MPM_OK)
-      return 0;
+  if (mpm_static_eval(q, 1) != MPM_OK)
+    return 0;
+  for (int it = 0;; it++) {
     *iters = it + 1;
     q->st.newton++;
     const double Fref = fmax(fmax(q->s->P_peak, fabs(q->Pg)), q->Fref);
-    const double rn = norm_inf(q->R, n), g = q->Ct - Dtarget;
-    if (rn <= MPM_QS_FTOL * Fref && (grip || fabs(g) <= MPM_QS_DTOL * q->Dref))
+    const double g = q->Ct - Dtarget, m0 = merit(q, Fref, g, grip);
+    if (it < 32) {
+      q->st.res[it] = norm_inf(q->R, n) / Fref;
+      q->st.nres = it + 1;
+    }
+    if (m0 <= 1.0)
       return 1;
-    if (factor(q) != MPM_OK)
+    if (it + 1 >= MPM_QS_MAXIT || factor(q) != MPM_OK)
       return 0;
     for (int i = 0; i < n; i++)
       q->x1[i] = -q->R[i];
@@ -221,8 +248,22 @@ static int increment(mpm_static *q, int *iters)
     }
     if (!isfinite(norm_inf(q->du, n)) || !isfinite(ddl))
       return 0;
-    add_free(q, q->du, 1.0);
-    q->dt += ddl;
+    /* backtracking: a full step that raises the residual is halved, up to MPM_QS_LS
+     * times (near the peak particles flip between elastic and softening across a full
+     * step and Newton cycles) */
+    double a = 1.0;
+    add_free(q, q->du, a);
+    q->dt += a * ddl;
+    for (int ls = 0;; ls++) {
+      if (mpm_static_eval(q, 1) != MPM_OK)
+        return 0;
+      if (ls == MPM_QS_LS || merit(q, fmax(fmax(q->s->P_peak, fabs(q->Pg)), q->Fref), q->Ct - Dtarget, grip) < m0)
+        break;
+      a *= 0.5;
+      add_free(q, q->du, -a);
+      q->dt -= a * ddl;
+      q->st.backtracks++;
+    }
   }
   return 0;
 }
@@ -322,13 +363,14 @@ static int turns(const mpm_static *q)
   return c < cos(MPM_QS_TURN) || lands;
 }
 
-/* 1 if the trial state separates a particle that was not. */
-static int new_separation(const mpm_static *q)
+/* 1 if the control's measure moved by less than MPM_QS_STALL_C Dref over the last
+ * MPM_QS_STALL increments (a ring of their values). */
+static int stalls(mpm_static *q)
 {
-  for (size_t c = 0; c < q->np; c++)
-    if (q->tpath[c] == MPM_DPATH_SEPARATE)
-      return 1;
-  return 0;
+  const int k = (int)(q->st.increments % MPM_QS_STALL);
+  const double old = q->cring[k];
+  q->cring[k] = q->Cn;
+  return q->st.increments >= MPM_QS_STALL && q->Cn - old < MPM_QS_STALL_C * q->Dref;
 }
 
 static void set_mode(mpm_static *q, int mode)
@@ -347,16 +389,14 @@ mpm_status mpm_static_step(mpm_static *q, char *err, size_t errlen)
   for (int cut = 0; cut <= MPM_QS_MAXCUT; cut++) {
     int iters = 0;
     const int r = increment(q, &iters);
-    if (getenv("QS_DEBUG"))
-      fprintf(stderr, "inc %ld mode %d r %d it %d step_d %g step_D %g dn %g dt %g Dt %g Pg %g newsep %d\n", s->step, q->mode, r, iters,
-              q->step_d, q->step_D, q->dn, q->dt, q->Dt, q->Pg, new_separation(q));
     if (r == -2) {
-      /* D does not answer delta: at the initiation, where nothing softens yet, a small grip
-       * increment starts it; later, every softening particle has separated and the grip
-       * leads to the end */
-      if (q->Dn <= 0.0 && !q->kick)
+      /* C does not answer delta: nothing softens at the committed state (the initiation,
+       * or a particle that stopped): a small grip increment starts it again; if that
+       * does not, the grip leads to the end */
+      if (q->nkick < 3) {
         q->kick = 1;
-      else
+        q->kick_d = 1e-4 * q->dn;
+      } else
         set_mode(q, MPM_QS_GRIP);
       continue;
     }
@@ -375,7 +415,22 @@ mpm_status mpm_static_step(mpm_static *q, char *err, size_t errlen)
       if (first && q->mode == MPM_QS_GRIP)
         scale_to_initiation(q);
       commit(q);
+      const int grip_stalls = q->mode == MPM_QS_GRIP && q->nel == 0 && q->step_d < 1e-9 * fmax(q->dn, 1e-300);
+      if ((q->mode == MPM_QS_DISSIPATION && stalls(q)) || grip_stalls) {
+        snprintf(err, errlen, "static solver: the path stalls at delta = %.9g, P = %.6g: the %s control "
+                 "advanced by less than %g of its scale over the last %d increments (docs/static.md, \"Where it "
+                 "stops\")", q->dn, s->P_grip, grip_stalls ? "grip" : "dissipation",
+                 grip_stalls ? 1e-9 : MPM_QS_STALL_C, grip_stalls ? 1 : MPM_QS_STALL);
+        return MPM_ENOTFINITE;
+      }
+      q->nkick = q->kick ? q->nkick + 1 : 0;
       q->kick = 0;
+      /* the next increment's predictor from this state's tangent (the trial's last
+       * evaluation is at the committed state) */
+      q->have_eval = 1;
+      q->have_pred = 0;
+      if (predictor(q) != MPM_OK)
+        q->have_eval = 0;
       q->st.increments++;
       q->st.mode = q->mode;
       const double grow = iters <= MPM_QS_EASY ? 1.5 : iters >= MPM_QS_HARD ? 0.6 : 1.0;
@@ -400,8 +455,9 @@ mpm_status mpm_static_step(mpm_static *q, char *err, size_t errlen)
       return MPM_OK;
     }
     q->st.cuts++;
-    q->have_factor = 0;
-    if (q->mode == MPM_QS_DISSIPATION) {
+    if (q->kick) {
+      q->kick_d *= 0.5;
+    } else if (q->mode == MPM_QS_DISSIPATION) {
       q->step_D *= 0.5;
       if (q->step_D < 1e-9 * q->Dref)
         set_mode(q, MPM_QS_GRIP);

@@ -60,10 +60,17 @@ struct mpm_static {
   int mode;
   double step_d, step_D, Dref, Fref;
   int kick;               /* 1: one small grip increment starts the softening            */
+  double cring[100];      /* the control's measure over the last increments (stalls)     */
+  int nkick;
+  double kick_d;          /* its grip step                                              */              /* such increments in a row                                   */
   double pk_d;             /* delta at the largest load so far                          */
   double ch_d, ch_P;      /* the last increment's chord over (pk_d, the peak load)       */
   int nel;                /* equal grip increments left before the first initiation      */
-  int have_factor;        /* the last factors are a tangent near the committed state     */
+  int have_factor;        /* factors of some tangent are held                           */
+  int have_eval;          /* the last evaluation is of the committed state               */
+  int have_pred;          /* pdir, pden are the committed state's                        */
+  double *pdir;           /* d u / d delta at the committed state (unknowns)             */
+  double pden;            /* d C / d delta along pdir                                    */
   mpm_static_stats st;
 };
 

@@ -155,7 +155,7 @@ mpm_status mpm_static_number(mpm_static *q, char *err, size_t errlen)
   int *ti = malloc((nz ? nz : 1) * sizeof *ti), *tj = malloc((nz ? nz : 1) * sizeof *tj);
   free(q->map);
   q->map = malloc((nz ? nz : 1) * sizeof *q->map);
-  double **v[] = {&q->R, &q->kfd, &q->ga, &q->x1, &q->x2, &q->du};
+  double **v[] = {&q->R, &q->kfd, &q->ga, &q->x1, &q->x2, &q->du, &q->pdir};
   int ok = ti && tj && q->map;
   for (size_t i = 0; ok && i < sizeof v / sizeof v[0]; i++) {
     free(*v[i]);
@@ -192,37 +192,8 @@ mpm_status mpm_static_number(mpm_static *q, char *err, size_t errlen)
   }
   q->st.unknowns = n;
   q->st.nnz = mpm_lin_nnz(q->lin);
-  q->have_factor = 0;
+  q->have_factor = q->have_eval = q->have_pred = 0;
   return MPM_OK;
-}
-
-/* The update's tangent d sigma / d de (tensor shear) and d lambda / d de: the elastic
- * moduli on an elastic step, else central differences of the update itself (the
- * derivative of the algorithm as run, so Newton sees what it solves). */
-static void law_tangent(const mpm_material *m, const mpm_dstate *in, const double de[3], int path, double D[3][3],
-                        double dl[3], mpm_dwork *w)
-{
-  if (path == MPM_DPATH_ELASTIC) {
-    const double E[3][3] = {{m->E1, m->E2, 0.0}, {m->E2, m->E1, 0.0}, {0.0, 0.0, 2.0 * m->G}};
-    memcpy(D, E, sizeof E);
-    dl[0] = dl[1] = dl[2] = 0.0;
-    return;
-  }
-  const double scale = fmax(fmax(fabs(de[0]), fabs(de[1])), fmax(fabs(de[2]), m->snf / m->E));
-  const double hs = 1e-7 * scale;
-  for (int j = 0; j < 3; j++) {
-    double dp[3] = {de[0], de[1], de[2]}, dm[3] = {de[0], de[1], de[2]};
-    dp[j] += hs;
-    dm[j] -= hs;
-    mpm_dstate op, om;
-    mpm_dinfo ip, im;
-    mpm_dcoh_update(m, in, dp, &op, &ip, w);
-    mpm_dcoh_update(m, in, dm, &om, &im, w);
-    D[0][j] = (op.sxx - om.sxx) / (2.0 * hs);
-    D[1][j] = (op.syy - om.syy) / (2.0 * hs);
-    D[2][j] = (op.sxy - om.sxy) / (2.0 * hs);
-    dl[j] = (op.lam - om.lam) / (2.0 * hs);
-  }
 }
 
 mpm_status mpm_static_eval(mpm_static *q, int tangent)
@@ -293,8 +264,8 @@ mpm_status mpm_static_eval(mpm_static *q, int tangent)
     }
     if (!tangent)
       continue;
-    double C[3][3], dl[3];
-    law_tangent(m, &in, de, info.path, C, dl, q->dw);
+    double C[3][3], dl[3]; /* the update's algorithmic tangent and d lambda / d de */
+    mpm_dcoh_tangent(m, &in, de, C, dl, q->dw);
     const int ld = wD > 0.0 && info.path != MPM_DPATH_ELASTIC;
     for (int b = 0; b < 2 * cn; b++) {
       /* d de / d u_b: (Gx, 0, Gy / 2) for an x component, (0, Gy, Gx / 2) for y */

@@ -44,6 +44,8 @@ mpm_lin *mpm_lin_alloc(int n, size_t nz, const int *ti, const int *tj, int *map)
     return NULL;
   l->n = n;
   umfpack_di_defaults(l->ctl);
+  /* the pattern is symmetric (a stiffness): order A + A' and prefer the diagonal */
+  l->ctl[UMFPACK_STRATEGY] = UMFPACK_STRATEGY_SYMMETRIC;
   l->Ap = malloc(sizeof(int) * ((size_t)n + 1));
   l->Ai = malloc(sizeof(int) * (nz ? nz : 1));
   if (!l->Ap || !l->Ai || umfpack_di_triplet_to_col(n, n, (int)nz, ti, tj, NULL, l->Ap, l->Ai, NULL, map) != UMFPACK_OK) {

@@ -765,8 +765,8 @@ static mpm_dstate soften_to(const mpm_material *m, const double de0[3], double l
 static double fd_check(const mpm_material *m, const mpm_dstate *in, const double de[3], int path,
                        const char *what, mpm_dwork *w)
 {
-  double D[3][3];
-  assert_int_equal(mpm_dcoh_tangent(m, in, de, D, w), MPM_OK);
+  double D[3][3], L[3];
+  assert_int_equal(mpm_dcoh_tangent(m, in, de, D, L, w), MPM_OK);
   mpm_dstate o;
   mpm_dinfo info;
   assert_int_equal(mpm_dcoh_update(m, in, de, &o, &info, w), MPM_OK);
@@ -775,7 +775,7 @@ static double fd_check(const mpm_material *m, const mpm_dstate *in, const double
   double scale = fmax(fmax(fabs(de[0]), fabs(de[1])), fabs(de[2]));
   scale = fmax(scale, fmax(fmax(fabs(in->sxx), fabs(in->syy)), fabs(in->sxy)) / m->E1);
   const double h = 1e-7 * scale;
-  double err = 0.0, dmax = 0.0;
+  double err = 0.0, dmax = 0.0, lerr = 0.0, lmax = 0.0;
   for (int j = 0; j < 3; j++) {
     double dp[3] = {de[0], de[1], de[2]}, dm[3] = {de[0], de[1], de[2]};
     dp[j] += h;
@@ -792,7 +792,15 @@ static double fd_check(const mpm_material *m, const mpm_dstate *in, const double
       err = fmax(err, fabs(D[i][j] - fd[i]));
       dmax = fmax(dmax, fabs(D[i][j]));
     }
+    /* d lambda / d de, the static solver's dissipation control, on the same differences */
+    const double fl = (op.lam - om.lam) / (2.0 * h);
+    lerr = fmax(lerr, fabs(L[j] - fl));
+    lmax = fmax(lmax, fabs(fl));
   }
+  if (lmax > 0.0 && !(lerr < 1e-5 * lmax))
+    fail_msg("%s: d lambda / d de vs central differences: abs err %.3g (max %g)", what, lerr, lmax);
+  if (lmax == 0.0 && !(lerr == 0.0))
+    fail_msg("%s: d lambda / d de is %g where lambda does not move", what, lerr);
   const double rel = err / dmax;
   print_message("# tangent vs FD, %s: rel err %.2e (max |D| %.4g)\n", what, rel, dmax);
   if (!(rel < 1e-5))
@@ -813,7 +821,7 @@ static void test_mpm_decohesion_tangent_elastic(void **state)
     const double de[3] = {1e-4, -2e-4, 5e-5};
     fd_check(&m, &in, de, MPM_DPATH_ELASTIC, "elastic", w);
     double D[3][3];
-    assert_int_equal(mpm_dcoh_tangent(&m, &in, de, D, w), MPM_OK);
+    assert_int_equal(mpm_dcoh_tangent(&m, &in, de, D, NULL, w), MPM_OK);
     for (int j = 0; j < 3; j++) {
       double e[3] = {0.0, 0.0, 0.0}, c[3];
       e[j] = 1.0;
@@ -838,7 +846,7 @@ static void test_mpm_decohesion_tangent_elastic_symmetric(void **state)
   const mpm_dstate in = zero_state();
   const double de[3] = {2e-4, 1e-4, -1e-4};
   double D[3][3];
-  assert_int_equal(mpm_dcoh_tangent(&m, &in, de, D, w), MPM_OK);
+  assert_int_equal(mpm_dcoh_tangent(&m, &in, de, D, NULL, w), MPM_OK);
   for (int i = 0; i < 3; i++)
     for (int j = 0; j < i; j++)
       assert_true(D[i][j] == D[j][i]);
@@ -933,7 +941,7 @@ static void test_mpm_decohesion_tangent_mode1_closed_form(void **state)
   const double de[3] = {1e-5, 0.0, 0.0};
   fd_check(&m, &in, de, MPM_DPATH_SOFTEN, "Mode I, alpha 90", w);
   double D[3][3];
-  assert_int_equal(mpm_dcoh_tangent(&m, &in, de, D, w), MPM_OK);
+  assert_int_equal(mpm_dcoh_tangent(&m, &in, de, D, NULL, w), MPM_OK);
   assert_rel(D[0][0], -E1 * snf / (B - snf), 1e-10, "Mode I: d sxx / d dexx = -E1 snf / (B - snf)");
   assert_rel(D[0][1], -E2 * snf / (B - snf), 1e-10, "Mode I: d sxx / d deyy");
   assert_rel(D[1][0], -E2 * snf / (B - snf), 1e-10, "Mode I: d syy / d dexx");
