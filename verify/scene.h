@@ -69,7 +69,7 @@ extern const char *const ver_paper_sets[VER_PAPER_NSETS];
  * method it ran until it took the cohesive interface (scene_bar.c; docs/interface.md).
  * Returns how many (at most VER_BAND_NSETS) and points *sets at them; 0 for a scene
  * without one. */
-#define VER_BAND_NSETS 3
+#define VER_BAND_NSETS 6
 int ver_band_sets(const char *scene, const char *const **sets);
 
 /* Reads and validates a scene file.  Returns 0, or 2 with one line in err. */

@@ -26,16 +26,22 @@ int ver_scene_bar(const mpm_scene *sc, ana_bar *bar, char *err, size_t len)
   return ana_bar_init(&p, bar, err, (int)len) == ANA_OK ? 0 : 2;
 }
 
-/* The band method as fig7.ini and fig8.ini ran it before the interface: the band held to its
- * line with the paper's flaw on snf (fig8: on stf too, shear governs), and fig7 on the grid
- * that follows the bar's stretch; the files' band keys (Le, path_reach, reversed_shear)
- * stay as written. */
+/* The band method as fig7.ini and fig8.ini ran it before the interface: the band held to
+ * its line with the paper's flaw on snf (fig8: on stf too, shear governs), Le measured
+ * over the zone (fig8: the row), shear against the slip closing, and fig7 with the
+ * flaw's whole cell on the grid that follows the bar's stretch; the rest is the file's
+ * (its preset's MUSL, uGIMP, two fields and damping).  fig7's are the band preset's
+ * keys that differ from its file's. */
 int ver_band_sets(const char *scene, const char *const **sets)
 {
-  static const char *const fig7[VER_BAND_NSETS] = {"decohesion.path=line", "imperfection.snf_factor=0.9",
-                                                   "grid.motion=stretch"};
-  static const char *const fig8[VER_BAND_NSETS] = {"decohesion.path=line", "imperfection.snf_factor=0.9",
-                                                   "imperfection.stf_factor=0.9"};
+  static const char *const fig7[] = {"decohesion.path=line", "imperfection.snf_factor=0.9", "grid.motion=stretch",
+                                     "decohesion.Le=zone", "decohesion.reversed_shear=closing", "imperfection.size=cell"};
+  static const char *const fig8[] = {"decohesion.path=line", "imperfection.snf_factor=0.9",
+                                     "imperfection.stf_factor=0.9", "decohesion.Le=row",
+                                     "decohesion.reversed_shear=closing"};
+  _Static_assert(sizeof fig7 / sizeof fig7[0] <= VER_BAND_NSETS && sizeof fig8 / sizeof fig8[0] <= VER_BAND_NSETS,
+                 "VER_BAND_NSETS too small");
   *sets = !strcmp(scene, "fig7") ? fig7 : !strcmp(scene, "fig8") ? fig8 : NULL;
-  return *sets ? VER_BAND_NSETS : 0;
+  return !strcmp(scene, "fig7") ? (int)(sizeof fig7 / sizeof fig7[0])
+         : !strcmp(scene, "fig8") ? (int)(sizeof fig8 / sizeof fig8[0]) : 0;
 }
