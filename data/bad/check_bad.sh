@@ -73,6 +73,9 @@ check opt-set-damping-limited "time.damping: 1.0472 needs grid.node_mass = lumpe
 check opt-set-beta-usl "time.damping_beta: 0.0625 needs time.scheme = musl" "$scenes/fig8.ini" --set time.scheme=usl
 check opt-method "command line: method.preset: 'fast' is not allowed (paper (the paper's method), band" "$fig6" --method fast
 check opt-method-missing "--method needs a preset (paper, band or interface)" "$fig6" --method
+check opt-rule-iface "fig7.ini:5: decohesion.path: interface needs grid.fields = two, grid.shape = gimp, time.scheme = musl" "$scenes/fig7.ini" --set grid.fields=one
+check opt-rule-share "command line: decohesion.share: line needs decohesion.path = interface, alpha = 90 and grid.motion = stretch (here: path interface, alpha 60, motion fixed; allowed otherwise: share = stick)" "$scenes/fig7.ini" --set decohesion.share=line
+check opt-rule-laid "command line: grid.weights: laid needs grid.motion = stretch (here: motion fixed" "$scenes/fig7.ini" --set grid.weights=laid
 check opt-set-newline "a control character" "$fig6" --set "material.E=1
 2"
 check opt-no-scene "no scene file"
