@@ -311,6 +311,9 @@ int ver_scene_set(ver_scene *vs, const char *assignment, char *err, size_t errle
     snprintf(err, errlen, "%s: command line: %s", vs->path, msg);
     return 2;
   }
+  const int dti = ver_scene_key_idx("time", "dt");
+  if (ki == ver_scene_key_idx("grid", "h") && vs->line[dti] >= 0 && vs->file_h > 0)
+    vs->sc.dt = vs->file_dt * vs->sc.h / vs->file_h; /* the file's Courant number, as --h */
   vs->seen[ki] = 1;
   vs->line[ki] = -1;
   if (ver_scene_keys[ki].type == K_PRESET && ver_method_apply_cmd(vs, msg, sizeof msg)) {

@@ -80,7 +80,9 @@ int ver_scene_load(const char *path, ver_scene *vs, char *err, size_t errlen);
 int ver_scene_parse(const char *path, ver_scene *vs, char *err, size_t errlen);
 /* The same for a scene held in memory; name stands for the file in messages. */
 int ver_scene_parse_string(const char *text, const char *name, ver_scene *vs, char *err, size_t errlen);
-/* Sets one key ("section.key=value" style override, as from --set). */
+/* Sets one key ("section.key=value" style override, as from --set).  grid.h=H also
+ * scales time.dt with it, keeping the file's Courant number as --h does, unless time.dt
+ * was set on the command line before it. */
 int ver_scene_set(ver_scene *vs, const char *assignment, char *err, size_t errlen);
 /* Checks presence, ranges, the rules between keys (h divides L and H, ppc a square,
  * the CFL bound, sizes the kernel can allocate) and fills the defaults.  Returns 0 or 2. */

@@ -121,6 +121,14 @@ static void test_ver_scene_case_ids(void **state)
   load("fig6", h4dt, &a);
   ver_scene_case_id(&a, ia, sizeof ia);
   assert_string_equal(ia, "fig6-h4-ppc1-time.dt=0.04");
+  /* --set grid.h scales dt as --h does (fig6: 0.1 at h 8): not refused for the CFL bound */
+  const char *h4only[] = {"grid.h=4", NULL}, *dth4[] = {"time.dt=0.02", "grid.h=4", NULL};
+  load("fig6", h4only, &a);
+  assert_true(a.sc.dt == 0.05);
+  ver_scene_case_id(&a, ia, sizeof ia);
+  assert_string_equal(ia, "fig6-h4-ppc1");
+  load("fig6", dth4, &a); /* a dt of the user's own stays */
+  assert_true(a.sc.dt == 0.02);
   /* the last value of a key counts */
   const char *twice[] = {"material.E=1", "material.E=2048", NULL};
   load("fig6", twice, &a);
