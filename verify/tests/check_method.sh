@@ -6,7 +6,8 @@
 #   every-file    each preset on each scene file starts (h 8, to delta 0.002; vibration
 #                 one period): exit 0;
 #   unknown       an unknown preset, in a file or by --method: exit 2, naming the file,
-#                 the line (or the command line) and the presets allowed.
+#                 the line (or the command line) and the presets allowed;
+#   verify-method delam verify --quick --method band --list: each case with the preset.
 # Prints TAP; exits 1 if a check failed.
 set -u
 delam=${1:?usage: check_method.sh path/to/delam SRC}
@@ -55,6 +56,14 @@ rc=$?
 grep -q "fig7.ini: command line: method.preset: 'bandd' is not allowed (paper .*band .*interface" run.err ||
   why="$why; message: $(head -1 run.err)"
 result unknown "$why"
+
+# delam verify --method: every case runs with the preset, and its id says so
+why=""
+"$delam" verify --quick --method band --scenes "$src/data/scenes" --list >list.txt 2>err.txt || why="exit $?: $(head -1 err.txt)"
+total=$(wc -l <list.txt)
+with=$(grep -c -- '--set method.preset=band .*--out [^ ]*-method=band' list.txt)
+[ -z "$why" ] && { [ "$total" -gt 0 ] && [ "$with" = "$total" ]; } || why="$why; $with of $total cases run the preset"
+result verify-method "$why"
 
 echo "1..$n"
 [ $fail = 0 ]
