@@ -53,7 +53,7 @@ check-asan: deps $(BUILD_ASAN)/build.ninja
 # build-fuzz/corpus, crashes to build-fuzz/crash-*: turn those into data/bad/ files.
 FUZZ_CC ?= clang
 FUZZ_TIME ?= 60
-FUZZ_SRC = fuzz/fuzz_scene.c verify/scene.c verify/scene_check.c verify/scene_ini.c $(wildcard kernel/*.c)
+FUZZ_SRC = fuzz/fuzz_scene.c verify/scene.c verify/scene_keys.c verify/scene_method.c verify/scene_check.c verify/scene_ini.c $(wildcard kernel/*.c)
 build-fuzz/fuzz_scene: $(FUZZ_SRC) verify/scene.h kernel/mpm.h
 	@mkdir -p build-fuzz/corpus
 	$(FUZZ_CC) -g -O1 -std=c11 -D_POSIX_C_SOURCE=200809L -Wall -Wextra -Wno-unknown-pragmas \

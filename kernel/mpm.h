@@ -201,6 +201,11 @@ double mpm_scene_path_halfwidth(const mpm_scene *sc);
 mpm_status mpm_scene_check(const mpm_scene *sc, char *err, size_t errlen);
 /* Critical time step h / (c sqrt 2), c = sqrt(E1 / rho) (measured; see mpm_sim.c). */
 double mpm_scene_dt_crit(const mpm_scene *sc);
+/* The rules between the method options (mpm_rules.c; mpm_scene_check ends with them):
+ * MPM_OK, or MPM_EINVAL with the first one broken in err, which starts with the key at
+ * fault ("time.damping_beta: ...") and names the allowed values; *key (if key is not
+ * NULL) is that key, "section.key". */
+mpm_status mpm_scene_rules(const mpm_scene *sc, const char **key, char *err, size_t errlen);
 
 /* ---- material ---- */
 typedef struct {
