@@ -449,6 +449,7 @@ void mpm_threads_init(mpm_threads *t, int requested, size_t particles);
 typedef struct {
   double L_bc, L_flip, L_scheme, W_head, L_contact, L_debris, L_damp;
   double W_iface;          /* the interface's cohesive work so far (mpm_iface.c): in W_coh */
+  double D_static;         /* the static solver's interface dissipation (mpm_static_iface.c): in D */
   double KE_head0;         /* the head's kinetic energy at the start                   */
   double head_reset;       /* kinetic energy the head's rigid projection removed so far */
   /* this step's held-node and serial sums (mpm_nodes.c, mpm_step.c; reset every step) */

@@ -432,7 +432,7 @@ void mpm_sim_energy(const mpm_sim *s, mpm_energy *e)
   e->SE = se;
   if (s->g && s->g->fld && s->g->fld->ifc) { /* the interface's (mpm_iface.c) */
     wc += s->led.W_iface;
-    dd += mpm_iface_D(s);
+    dd += mpm_iface_D(s) + s->led.D_static;
   }
   e->W_coh = wc;
   e->D = dd;
