@@ -45,6 +45,7 @@
                              the separation) and stay few along its straight pieces            */
 #define MPM_QS_STALL 100  /* increments over which the control must advance by MPM_QS_STALL_C */
 #define MPM_QS_STALL_C 1e-3 /* ... of U0 H / sin a, or the run stops with an error: it stalls */
+#define MPM_QS_MAXINC 5000 /* increments a run may take (Fig. 6 at h 2 takes under 100)      */
 #define MPM_QS_NEL 8      /* equal increments of the linear branch up to the first initiation */
 
 static double now(void)
@@ -281,7 +282,7 @@ static void scale_to_initiation(mpm_static *q)
   for (int pi = 0; pi < q->npair; pi++) { /* the interface's ties */
     const mpm_dstate *o = &q->ptr[pi];
     const double se = mpm_dcoh_F(&q->imat, o->sxx, o->syy, o->sxy, 0.0) + 1.0;
-    if (q->pA[pi] > 0.0 && se > 0.0)
+    if (se > 0.0)
       kmin = fmin(kmin, 1.0 / se);
   }
   if (!(kmin > 1.0) || !isfinite(kmin))
@@ -419,7 +420,8 @@ mpm_status mpm_static_step(mpm_static *q, char *err, size_t errlen)
       if (first && q->mode == MPM_QS_GRIP)
         scale_to_initiation(q);
       commit(q);
-      const int grip_stalls = q->mode == MPM_QS_GRIP && q->nel == 0 && q->step_d < 1e-9 * fmax(q->dn, 1e-300);
+      const int grip_stalls = (q->mode == MPM_QS_GRIP && q->nel == 0 && q->step_d < 1e-9 * fmax(q->dn, 1e-300)) ||
+                              q->st.increments >= MPM_QS_MAXINC;
       if ((q->mode == MPM_QS_DISSIPATION && stalls(q)) || grip_stalls) {
         snprintf(err, errlen, "static solver: the path stalls at delta = %.9g, P = %.6g: the %s control "
                  "advanced by less than %g of its scale over the last %d increments (docs/static.md, \"Where it "

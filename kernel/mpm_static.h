@@ -78,16 +78,14 @@ struct mpm_static {
   /* decohesion.path = interface (mpm_static_iface.c): the line's law between the two
    * copies of each split node, as a stiff elastic tie until it initiates */
   int iface;
-  int npair;              /* split nodes                                                */
-  int *pnode;             /* their node indices                                        */
-  double *pA;             /* their share of the line, a_0 . n with a_0 = sum over the near
-                             side's particles of V grad N (the nodal force of a uniform
-                             traction, so a uniform state is in equilibrium)            */
-  mpm_dstate *pst, *ptr;  /* the law's committed and trial state per pair               */
-  double *pw;             /* trial: the law's work this increment, times pA             */
-  double *pf;             /* trial: the law's force on each pair's two slots (x, y of slot 0,
-                             then of slot 1)                                           */
-  size_t kpair;           /* where the pairs' entries start in map                      */
+  uint8_t *split;         /* nn: 1 where a node has the far side's second slot            */
+  int npair;              /* the line's quadrature points                               */
+  int *qnode;             /* 4 per point: its cell's nodes                              */
+  double *qN;             /* 4 per point: their hats' weights there                     */
+  double *pA;             /* per point: its length of line ds                           */
+  mpm_dstate *pst, *ptr;  /* the law's committed and trial state per point              */
+  double *pw;             /* trial: the law's work this increment, times ds             */
+  size_t kpair;           /* where the points' entries (256 each) start in map           */
   mpm_material imat;      /* the law as a material of the update: E1 = G = k0, E2 = 0, Le 1 */
 };
 
@@ -95,6 +93,8 @@ struct mpm_static {
 mpm_status mpm_static_iface_setup(mpm_static *q, char *err, size_t errlen);
 void mpm_static_iface_eval(mpm_static *q, int tangent, double *Ax, double *D, double *C);
 void mpm_static_iface_commit(mpm_static *q);
+/* the points' entries of the tangent's pattern from map position k; returns the next */
+size_t mpm_static_iface_pattern(mpm_static *q, int *ti, int *tj, size_t k, size_t *m);
 void mpm_static_iface_free(mpm_static *q);
 
 /* mpm_static_asm.c: the stencils and unknowns (setup), the trial state of every particle

@@ -155,7 +155,7 @@ mpm_status mpm_static_number(mpm_static *q, char *err, size_t errlen)
       q->eq[i] = n++;
   q->nfree = n;
   /* the pattern: every pair of free components of a particle's stencil */
-  size_t nz = 16 * (size_t)q->npair; /* a pair: both slots' x and y */
+  size_t nz = 256 * (size_t)q->npair; /* a line point: 4 nodes x both slots' x and y, squared */
   for (size_t c = 0; c < q->np; c++)
     nz += 4 * (size_t)q->cnt[c] * (size_t)q->cnt[c];
   int *ti = malloc((nz ? nz : 1) * sizeof *ti), *tj = malloc((nz ? nz : 1) * sizeof *tj);
@@ -182,21 +182,8 @@ mpm_status mpm_static_number(mpm_static *q, char *err, size_t errlen)
         }
       }
   }
-  q->kpair = k;
-  for (int pi = 0; ok && pi < q->npair; pi++) {
-    const size_t nd = (size_t)q->pnode[pi];
-    const size_t sl[2] = {nd, nn + nd};
-    for (int a = 0; a < 4; a++)
-      for (int b = 0; b < 4; b++, k++) {
-        const int ea = q->eq[2 * sl[a / 2] + (size_t)(a % 2)], eb = q->eq[2 * sl[b / 2] + (size_t)(b % 2)];
-        q->map[k] = -1;
-        if (ea >= 0 && eb >= 0) {
-          ti[m] = ea;
-          tj[m] = eb;
-          q->map[k] = (int)m++;
-        }
-      }
-  }
+  if (ok && q->iface)
+    k = mpm_static_iface_pattern(q, ti, tj, k, &m);
   int *tmap = ok ? malloc((m ? m : 1) * sizeof *tmap) : NULL;
   mpm_lin_free(q->lin);
   q->lin = tmap ? mpm_lin_alloc(n, m, ti, tj, tmap) : NULL;
@@ -328,15 +315,6 @@ mpm_status mpm_static_eval(mpm_static *q, int tangent)
     mpm_static_iface_eval(q, tangent, Ax, &Dl, &Cl);
     D += Dl;
     C += Cl;
-    for (int pi = 0; pi < q->npair; pi++) /* the law's forces at held slots are loads too */
-      for (int sd = 0; sd < 2; sd++) {
-        const size_t sl = sd ? q->nn + (size_t)q->pnode[pi] : (size_t)q->pnode[pi];
-        const double fx = q->pf[4 * pi + 2 * sd];
-        if (q->eq[2 * sl] == MPM_DOF_GRIP)
-          Pg -= fx;
-        else if (q->eq[2 * sl] == MPM_DOF_HELD)
-          Pf += fx;
-      }
   }
   q->Pg = Pg;
   q->Pf = Pf;
