@@ -45,6 +45,7 @@
                              the separation) and stay few along its straight pieces            */
 #define MPM_QS_STALL 100  /* increments over which the control must advance by MPM_QS_STALL_C */
 #define MPM_QS_STALL_C 1e-3 /* ... of U0 H / sin a, or the run stops with an error: it stalls */
+#define MPM_QS_SEP 0.02   /* a load below this share of the peak, after it, is separation   */
 #define MPM_QS_MAXINC 5000 /* increments a run may take (Fig. 6 at h 2 takes under 100)      */
 #define MPM_QS_NEL 8      /* equal increments of the linear branch up to the first initiation */
 
@@ -422,7 +423,12 @@ mpm_status mpm_static_step(mpm_static *q, char *err, size_t errlen)
       commit(q);
       const int grip_stalls = (q->mode == MPM_QS_GRIP && q->nel == 0 && q->step_d < 1e-9 * fmax(q->dn, 1e-300)) ||
                               q->st.increments >= MPM_QS_MAXINC;
-      if ((q->mode == MPM_QS_DISSIPATION && stalls(q)) || grip_stalls) {
+      const int diss_stalls = q->mode == MPM_QS_DISSIPATION && stalls(q);
+      if (diss_stalls && s->P_grip < MPM_QS_SEP * s->P_peak && !grip_stalls) {
+        /* the control creeps with the load almost gone (the line's last points opening one
+         * by one): the bar has separated; the grip pulls the rest open */
+        s->cut = 1;
+      } else if (diss_stalls || grip_stalls) {
         snprintf(err, errlen, "static solver: the path stalls at delta = %.9g, P = %.6g: the %s control "
                  "advanced by less than %g of its scale over the last %d increments (docs/static.md, \"Where it "
                  "stops\")", q->dn, s->P_grip, grip_stalls ? "grip" : "dissipation",
