@@ -72,8 +72,11 @@ static int build_scene(const char *arg, const char *dir, double h, double ppc, c
   if (h <= 0 || ppc <= 0) { /* a folder delam wrote says its own */
     char own[1400];
     ver_scene ds;
+    struct stat st;
     snprintf(own, sizeof own, "%s/scene.ini", dir);
-    if (ver_scene_parse(own, &ds, buf, sizeof buf) == 0) {
+    if (lstat(own, &st) == 0) { /* there but unreadable: not silently judged as another case */
+      if (ver_scene_parse(own, &ds, err, errlen))
+        return 2;
       if (h <= 0)
         h = ds.sc.h;
       if (ppc <= 0)

@@ -10,6 +10,7 @@
 #include <string.h>
 #include <sys/stat.h>
 
+#include "datadir.h"
 #include "foreign.h"
 #include "io.h"
 #include "metrics.h"
@@ -36,12 +37,18 @@ int ver_table_read(const char *path, const char *const *names, int nname, int nr
                    size_t errlen)
 {
   memset(t, 0, sizeof *t);
-  char *txt = ver_io_slurp(path, NULL, 64u << 20);
+  char *txt = ver_io_slurp(path, NULL, VER_TABLE_MAXBYTES);
   if (!txt) {
+    const int e = errno;
     struct stat st;
-    if (stat(path, &st) != 0 && errno == ENOENT)
+    if (e == ENOENT)
       return 1;
-    snprintf(err, errlen, "%s: cannot read (or larger than 64 MiB): %s", path, strerror(errno));
+    if (e == EINVAL && stat(path, &st) == 0)
+      snprintf(err, errlen, "%s: %s, not a CSV file (a regular file is needed)", path, ver_file_kind(st.st_mode));
+    else if (e == EFBIG)
+      snprintf(err, errlen, "%s: larger than %d MiB: refused", path, VER_TABLE_MAXBYTES >> 20);
+    else
+      snprintf(err, errlen, "%s: cannot read: %s", path, strerror(e));
     return 2;
   }
   long rows = 0;

@@ -11,6 +11,7 @@
 #include "sweep.h"
 
 #define VER_TABLE_MAXCOL 16
+#define VER_TABLE_MAXBYTES (64 << 20) /* a larger CSV file is refused */
 
 /* Numeric columns of a CSV file, picked by header name. */
 typedef struct {

@@ -10,11 +10,12 @@
 #include <sys/stat.h>
 #include <time.h>
 
+#include "datadir.h"
 #include "io.h"
 
 char *ver_io_slurp(const char *path, size_t *len, size_t max)
 {
-  FILE *f = fopen(path, "rb");
+  FILE *f = ver_open_regular(path, NULL);
   if (!f)
     return NULL;
   size_t cap = 1 << 16, n = 0;
@@ -22,9 +23,10 @@ char *ver_io_slurp(const char *path, size_t *len, size_t max)
   while (buf) {
     n += fread(buf + n, 1, cap - n - 1, f);
     if (max && n > max) {
+      fclose(f);
       free(buf);
-      buf = NULL;
-      break;
+      errno = EFBIG;
+      return NULL;
     }
     if (n + 1 < cap)
       break;
@@ -33,10 +35,11 @@ char *ver_io_slurp(const char *path, size_t *len, size_t max)
       free(buf);
     buf = nb;
   }
-  const int bad = ferror(f);
+  const int bad = ferror(f), e = buf ? errno : ENOMEM;
   fclose(f);
   if (!buf || bad) {
     free(buf);
+    errno = e;
     return NULL;
   }
   buf[n] = '\0';

@@ -10,8 +10,9 @@
 #include <stddef.h>
 #include <stdio.h>
 
-/* The whole file, NUL-terminated (malloc'd; caller frees); *len (if not NULL) gets its
- * size.  NULL if it cannot be read or is larger than max bytes (max 0: no limit). */
+/* The whole file of a regular file, NUL-terminated (malloc'd; caller frees); *len (if
+ * not NULL) gets its size.  NULL with errno set if it cannot be read, EINVAL if it is not
+ * a regular file, EFBIG if it is larger than max bytes (max 0: no limit). */
 char *ver_io_slurp(const char *path, size_t *len, size_t max);
 
 /* mkdir -p; 0 or -1 with errno set. */

@@ -76,7 +76,7 @@ check opt-set-newline "a control character" "$fig6" --set "material.E=1
 check opt-no-scene "no scene file"
 check opt-two-scenes "one scene file only" "$fig6" "$fig6"
 check file-missing "nosuch.ini: cannot open: No such file or directory" "$tmp/nosuch.ini"
-check file-directory "cannot read: Is a directory" "$here"
+check file-directory "a directory, not a scene file" "$here"
 printf '[bar]\nL = 192\x00\n' >"$tmp/nul.ini"
 check file-nul "nul.ini:2: a NUL byte: not a text file" "$tmp/nul.ini"
 
