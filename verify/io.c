@@ -18,7 +18,10 @@ char *ver_io_slurp(const char *path, size_t *len, size_t max)
   FILE *f = ver_open_regular(path, NULL);
   if (!f)
     return NULL;
-  size_t cap = 1 << 16, n = 0;
+  struct stat st; /* room for the whole file at once where its size is known */
+  size_t cap = fstat(fileno(f), &st) == 0 && st.st_size > 0 ? (size_t)st.st_size + 2 : 1 << 16, n = 0;
+  if (max && cap > max + 2)
+    cap = max + 2;
   char *buf = malloc(cap);
   while (buf) {
     n += fread(buf + n, 1, cap - n - 1, f);
