@@ -6,6 +6,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "cmd.h"
 #include "run.h"
@@ -208,8 +209,15 @@ int ver_cmd_run(int argc, char **argv)
   const int rc = ver_run(&vs, &o, &u, err, sizeof err);
   if (rc) {
     fprintf(stderr, "delam run: %s\n", err);
-    if (rc != 2)
+    ver_summary_doc d; /* say what the folder holds, as it is */
+    struct stat st;
+    const int have = rc != 2 && ver_summary_read(o.outdir, &d) == 0;
+    if (have && !d.u.complete)
       fprintf(stderr, "delam run: partial results in %s (summary.json says complete: false)\n", o.outdir);
+    else if (have) /* the run failed before it cleared the folder */
+      fprintf(stderr, "delam run: %s is as an earlier run left it: none of it is this run's\n", o.outdir);
+    else if (rc != 2 && stat(o.outdir, &st) == 0 && S_ISDIR(st.st_mode))
+      fprintf(stderr, "delam run: no summary.json in %s: nothing there is a result of this run\n", o.outdir);
     return rc;
   }
   print_result(&vs, id, &u, o.outdir);

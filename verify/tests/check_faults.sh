@@ -11,13 +11,23 @@
 #                control byte are refused with exit 2 and the reason (row and column
 #                for the bytes); the same step back under dissipation control is
 #                judged; 2,000,000 rows are judged within 10 s.
+#   writer-*     one writer per output folder: a second run into a folder a first run
+#                is writing exits 2 naming the folder and the first's pid, and touches
+#                nothing (the first's scene.ini still says ppc 4, its summary.json is
+#                its own); once the first has ended, the same second run works there.
+#   out-*        --out that is a regular file, a path under one, a symlink loop: exit 2
+#                naming it; a full disk (a 300 KiB tmpfs, where mount is allowed): exit 1
+#                naming the file that could not be written and why, no *.tmp and no
+#                empty file left, and "partial results" only beside a summary.json
+#                that says complete: false.
 # Prints TAP; exits 1 if a check failed.
 set -u
 delam=${1:?usage: check_faults.sh path/to/delam SRC}
 src=${2:?usage: check_faults.sh path/to/delam SRC}
 scene="$src/data/scenes/fig6.ini"
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/delam-faults.XXXXXX")
-trap 'rm -rf "$tmp"' EXIT
+mnt=""
+trap '[ -n "$mnt" ] && umount "$mnt"; rm -rf "$tmp"' EXIT
 n=0 fail=0
 result() { # result ID WHY (empty WHY: pass)
   n=$((n + 1))
@@ -101,6 +111,64 @@ if [ "$rc" != 0 ] && [ "$rc" != 1 ]; then why="exit $rc: $(head -c 200 err.txt)"
 elif awk -v s="$secs" 'BEGIN { exit !(s > 10) }'; then why="$secs s, more than 10"
 fi
 result check-2m-rows "$why"
+
+# 3. two writers: A (h 2, 4 ppc, about 40 s alone) is stopped once B has been refused
+"$delam" run "$scene" --h 2 --ppc 4 --threads 1 --quiet --out shared >/dev/null 2>errA.txt &
+pidA=$!
+for _ in $(seq 100); do [ -f shared/scene.ini ] && break; sleep 0.1; done
+timeout 60 "$delam" run "$scene" --h 4 --ppc 1 --threads 1 --quiet --out shared >/dev/null 2>err.txt
+rc=$?
+why=$(expect 2 "shared: another delam process \\(pid $pidA\\) is writing this folder")
+[ -z "$why" ] && ! grep -q '^ppc = 4' shared/scene.ini && why="scene.ini no longer says ppc 4: $(grep '^ppc' shared/scene.ini)"
+result writer-second-refused "$why"
+kill -TERM "$pidA"
+wait "$pidA"
+rcA=$?
+why=""
+if [ "$rcA" != 130 ]; then why="the first run's exit status $rcA, not 130"
+elif ! grep -q '"ppc":[[:space:]]*4' shared/summary.json || ! grep -q '"complete":[[:space:]]*false' shared/summary.json
+then why="summary.json is not the stopped ppc-4 run's"
+elif ls shared/*.tmp >/dev/null 2>&1; then why="temporaries left: $(cd shared && echo *.tmp)"
+fi
+result writer-first-intact "$why"
+touch marker
+sleep 0.1
+timeout 60 "$delam" run "$scene" --h 4 --ppc 1 --threads 1 --quiet --out shared >/dev/null 2>err.txt
+rc=$?
+why=""
+if [ "$rc" != 0 ]; then why="exit $rc: $(head -c 200 err.txt)"
+elif ! grep -q '^ppc = 1' shared/scene.ini || ! grep -q '"complete":[[:space:]]*true' shared/summary.json
+then why="the folder is not the new run's"
+elif [ -n "$(find shared -type f ! -newer marker ! -name .delam.lock)" ]
+then why="files of the first run left: $(find shared -type f ! -newer marker ! -name .delam.lock | tr '\n' ' ')"
+fi
+result writer-rerun-after "$why"
+
+# 4. --out that cannot be a folder: exit 2, named
+touch afile
+ln -s loop loop
+for out in afile afile/sub loop; do
+  timeout 60 "$delam" run "$scene" --h 4 --quiet --out "$out" >/dev/null 2>err.txt
+  rc=$?
+  result "out-not-a-folder $out" "$(expect 2 "^delam run: $out: cannot create the folder: (Not a directory|Too many levels of symbolic links)")"
+done
+# a full disk: a 300 KiB tmpfs holds the scene and a few snapshots of an h 4 run, not all
+mkdir disk
+if mount -t tmpfs -o size=300k tmpfs disk 2>/dev/null; then
+  mnt=$tmp/disk
+  timeout 60 "$delam" run "$scene" --h 4 --threads 1 --quiet --out disk/r >/dev/null 2>err.txt
+  rc=$?
+  why=$(expect 1 "^delam run: disk/r/[a-z0-9.-]+: cannot write: No space left on device")
+  [ -z "$why" ] && ls disk/r/*.tmp >/dev/null 2>&1 && why="temporaries left: $(cd disk/r && echo *.tmp)"
+  [ -z "$why" ] && [ -n "$(find disk/r -type f -empty ! -name .delam.lock)" ] && why="empty files: $(find disk/r -type f -empty)"
+  if [ -z "$why" ] && grep -q 'partial results' err.txt && ! grep -q '"complete":[[:space:]]*false' disk/r/summary.json 2>/dev/null
+  then why="'partial results' said without a summary.json saying complete: false"
+  fi
+  result out-full-disk "$why"
+else
+  n=$((n + 1))
+  echo "ok $n - out-full-disk # SKIP mount -t tmpfs is not allowed here"
+fi
 
 echo "1..$n"
 [ "$fail" = 0 ]
