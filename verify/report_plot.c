@@ -440,8 +440,19 @@ void ver_report_gnuplot(report *R)
     snprintf(names[i], ALEN, "%s.%s", f->name, fmt);
   }
   ver_report_spawn_all(argvs, r->out, logs, names, n, r->jobs, st, "gnuplot");
+  for (int i = 0; i < n; i++) { /* gnuplot may leave an empty file and exit 0 (a full disk) */
+    char p[2 * REP_PATH];
+    struct stat fs;
+    snprintf(p, sizeof p, "%s/%s", r->out, names[i]);
+    if (st[i] == 0 && (stat(p, &fs) != 0 || fs.st_size == 0)) {
+      fprintf(stderr, PROG ": %s: %s after gnuplot: removed, the figure is missing\n", p,
+              access(p, F_OK) == 0 ? "empty" : "not there");
+      remove(p);
+      st[i] = 1;
+    }
+  }
   for (int i = 0; i < n; i += 2) {
-    R->fig[i / 2].status = st[i];
+    R->fig[i / 2].status = st[i] ? st[i] : st[i + 1];
     if (st[i] != 0 || st[i + 1] != 0)
       fprintf(stderr, PROG ": gnuplot %s failed (see %s/%s)\n", R->fig[i / 2].name, r->out, logs[i]);
   }

@@ -20,6 +20,10 @@
 #                naming the file that could not be written and why, no *.tmp and no
 #                empty file left, and "partial results" only beside a summary.json
 #                that says complete: false.
+#   stop-*       SIGTERM to `delam verify` (then SIGINT to a rerun into the same folder,
+#                then SIGTERM to `delam report`): exit 130 within 30 s, no process it
+#                started still alive, verify.json written with exit_status 130, the
+#                stopped cases' summary.json saying complete: false.
 # Prints TAP; exits 1 if a check failed.
 set -u
 delam=${1:?usage: check_faults.sh path/to/delam SRC}
@@ -169,6 +173,48 @@ else
   n=$((n + 1))
   echo "ok $n - out-full-disk # SKIP mount -t tmpfs is not allowed here"
 fi
+
+# 5. signals to the commands that start children
+descendants() { # every process under pid $1
+  local c
+  for c in $(ps -o pid= --ppid "$1"); do echo "$c"; descendants "$c"; done
+}
+# stop_cmd SIG ID CMD...: starts CMD, waits for it to have children, sends SIG, checks
+stop_cmd() {
+  local sig=$1 id=$2 kids k alive="" t=0
+  shift 2
+  "$@" >stop.out 2>stop.err &
+  local pid=$!
+  kids=""
+  while [ $t -lt 100 ] && [ -z "$kids" ]; do sleep 0.1; t=$((t + 1)); kids=$(descendants "$pid"); done
+  sleep 2
+  kids=$(descendants "$pid")
+  kill -s "$sig" "$pid"
+  for _ in $(seq 300); do kill -0 "$pid" 2>/dev/null || break; sleep 0.1; done
+  if kill -0 "$pid" 2>/dev/null; then
+    result "$id" "still running 30 s after SIG$sig"
+    kill -KILL "$pid"
+    return
+  fi
+  wait "$pid"
+  rc=$?
+  for k in $kids; do kill -0 "$k" 2>/dev/null && alive="$alive $k"; done
+  if [ -z "$kids" ]; then why="it had started no child"
+  elif [ -n "$alive" ]; then why="left running:$alive"; kill -KILL $alive
+  elif [ "$rc" != 130 ]; then why="exit status $rc, not 130 ($(tail -c 200 stop.err))"
+  else why=$(stop_extra)
+  fi
+  result "$id" "$why"
+}
+stop_extra() { # verify: verify.json says 130; every case summary says complete: false or true
+  if ! grep -q '"exit_status":[[:space:]]*130' v/verify.json 2>/dev/null; then echo "verify.json lacks exit_status 130"
+  elif ! grep -l '"complete":[[:space:]]*false' v/*/summary.json >/dev/null 2>&1; then echo "no stopped case says complete: false"
+  fi
+}
+stop_cmd TERM stop-verify-sigterm "$delam" verify --quick --jobs 2 --out v
+stop_cmd INT stop-verify-rerun-sigint "$delam" verify --quick --jobs 2 --out v
+stop_extra() { grep -q 'REPORT.md and index.html not written' stop.err || echo "no word of what was not written"; }
+stop_cmd TERM stop-report-sigterm "$delam" report --out rep/out --cache rep/cache --scenes "$src/data/scenes" --gp "$src/reports"
 
 echo "1..$n"
 [ "$fail" = 0 ]
