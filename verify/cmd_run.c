@@ -33,7 +33,7 @@ static void usage(FILE *f)
     "options:\n"
     "  --out DIR         output folder (default out/<scene>-h<h>-ppc<n>)\n"
     "  --h H             grid spacing; dt is scaled with it unless --dt is given\n"
-    "  --ppc N           particles per cell, a perfect square (1, 4, 9, ...)\n"
+    "  --ppc N           particles per cell, a perfect square (1, 4, 9, ..., 1024)\n"
     "  --dt DT           time step (must be below the CFL bound h / (c sqrt 2))\n"
     "  --until DELTA     run to this end displacement exactly (no early stop)\n"
     "  --set S.K=V       set key K of section S, as in the file (repeatable)\n"

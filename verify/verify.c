@@ -209,9 +209,12 @@ int ver_verify(const ver_verify_opts *o)
   ver_sweep_print_table(cs, n, x, nx);
   const double wall = ver_now_wall() - w0;
   stopped = stopped || ver_pool_caught();
-  if (ver_sweep_write_json(o, cs, n, x, nx, wall, stopped ? 130 : rc) || ver_sweep_write_csv(o, cs, n) ||
-      ver_sweep_write_cross_csv(o, x, nx)) {
-    fprintf(stderr, "delam verify: %s: cannot write verify.json / verify.csv: %s\n", o->outdir, strerror(errno));
+  const char *bad = ver_sweep_write_json(o, cs, n, x, nx, wall, stopped ? 130 : rc) ? "verify.json"
+                    : ver_sweep_write_csv(o, cs, n)                                    ? "verify.csv"
+                    : ver_sweep_write_cross_csv(o, x, nx)                              ? "verify_cross.csv"
+                                                                                       : NULL;
+  if (bad) {
+    fprintf(stderr, "delam verify: %s/%s: cannot write: %s\n", o->outdir, bad, strerror(errno));
     rc = 1;
   }
   int nrun = 0;
