@@ -281,26 +281,38 @@ static void print_verdict(const char *label, const ver_case *c, const check_info
          have_pt ? ", with particles" : ", no particles: band width and angle left out");
 }
 
-/* A folder delam wrote says whether its run finished: summary.json with complete: true.
- * One that says complete: false, or a scene.ini of delam's without a summary.json (a run
- * still going, or killed), is not judged: 0, or 2 with the reason in err. */
+/* summary.json's "complete" in *complete, its "delta_end" and "error": 1 if the file is
+ * JSON with a boolean "complete", 0 if it has none (another code's summary), -1 if it
+ * cannot be read or is not JSON. */
+static int summary_complete(const char *path, int *complete, double *delta_end, char *error, size_t len)
+{
+  char *txt = ver_io_slurp(path, NULL, 1 << 20);
+  cJSON *o = txt ? cJSON_Parse(txt) : NULL;
+  free(txt);
+  if (!o)
+    return -1;
+  const cJSON *c = cJSON_GetObjectItemCaseSensitive(o, "complete");
+  const cJSON *d = cJSON_GetObjectItemCaseSensitive(o, "delta_end");
+  const cJSON *e = cJSON_GetObjectItemCaseSensitive(o, "error");
+  const int have = cJSON_IsBool(c);
+  *complete = cJSON_IsTrue(c);
+  *delta_end = cJSON_IsNumber(d) ? d->valuedouble : NAN;
+  snprintf(error, len, "%s", cJSON_IsString(e) ? e->valuestring : "");
+  cJSON_Delete(o);
+  return have;
+}
+
+/* Whether the run in DIR finished: not while a delam process holds its lock; then a
+ * summary.json with "complete" says so (false: not judged); a folder with delam's
+ * scene.ini needs a summary.json that says complete: true.  Another code's folder
+ * without such a summary is judged on its files.  0, or 2 with the reason in err. */
 static int run_finished(const char *dir, char *err, size_t errlen)
 {
-  char path[1400], head[64] = "";
-  struct stat st;
-  snprintf(path, sizeof path, "%s/summary.json", dir);
-  if (lstat(path, &st) == 0) {
-    ver_summary_doc d;
-    if (ver_summary_read(dir, &d)) {
-      snprintf(err, errlen, "%s: not readable as JSON: the run's record is damaged; not judged", path);
-      return 2;
-    }
-    if (!d.u.complete) {
-      snprintf(err, errlen, "%s says complete: false (the run stopped at delta %.6g%s%.300s): an interrupted or "
-               "failed run is not judged", path, d.u.delta_end, d.error[0] ? ": " : "", d.error);
-      return 2;
-    }
-    return 0;
+  char path[1400], head[64] = "", error[320];
+  const long holder = ver_io_lock_holder(dir);
+  if (holder > 0) {
+    snprintf(err, errlen, "%s: a delam process (pid %ld) is writing this folder now: not judged", dir, holder);
+    return 2;
   }
   snprintf(path, sizeof path, "%s/scene.ini", dir);
   FILE *f = ver_open_regular(path, NULL);
@@ -309,12 +321,25 @@ static int run_finished(const char *dir, char *err, size_t errlen)
       head[0] = '\0';
     fclose(f);
   }
-  if (!strncmp(head, "; delam scene.ini", 17)) {
-    snprintf(err, errlen, "%s: delam's scene.ini but no summary.json: the run has not finished (still running, "
-             "or killed); not judged", dir);
-    return 2;
-  }
-  return 0;
+  const int ours = !strncmp(head, "; delam scene.ini", 17);
+  int complete = 0;
+  double delta_end;
+  snprintf(path, sizeof path, "%s/summary.json", dir);
+  struct stat st;
+  const int there = lstat(path, &st) == 0;
+  const int k = there ? summary_complete(path, &complete, &delta_end, error, sizeof error) : 0;
+  if (k > 0 && !complete)
+    snprintf(err, errlen, "%s says complete: false (the run stopped at delta %.6g%s%.300s): an interrupted or "
+             "failed run is not judged", path, delta_end, error[0] ? ": " : "", error);
+  else if (ours && there && k <= 0)
+    snprintf(err, errlen, "%s: %s: the run's record is damaged; not judged", path,
+             k < 0 ? "cannot be read or is not JSON" : "no \"complete\" key");
+  else if (ours && !there)
+    snprintf(err, errlen, "%s: delam's scene.ini but no summary.json: the run has not finished (killed, or it "
+             "failed to write it); not judged", dir);
+  else
+    return 0;
+  return 2;
 }
 
 /* Whether the run's grip only pulls (loading.control = grip): the folder's own scene.ini

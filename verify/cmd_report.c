@@ -224,5 +224,7 @@ int ver_cmd_report(int argc, char **argv)
   else
     fprintf(stderr, PROG ": %s/index.html and %s/REPORT.md written in %.1f s%s%s\n", r->out, r->out,
             ver_now_wall() - R.t0, failed ? "; a check FAILED" : "", bad ? " (with missing parts, see above)" : "");
+  if (ver_pool_caught()) /* a signal during the last stage: the report is written, as said */
+    return 130;
   return rc || bad || failed ? 1 : 0;
 }

@@ -123,6 +123,18 @@ static void print_result(const ver_scene *vs, const char *id, const ver_summary 
          u.wall_s, u.updates_per_s, outdir);
 }
 
+/* SIGINT, SIGTERM and SIGHUP (unless nohup ignores it) stop the run cleanly. */
+static void catch_signals(void)
+{
+  struct sigaction sa, old;
+  memset(&sa, 0, sizeof sa);
+  sa.sa_handler = on_signal;
+  sigaction(SIGINT, &sa, NULL);
+  sigaction(SIGTERM, &sa, NULL);
+  if (sigaction(SIGHUP, NULL, &old) == 0 && old.sa_handler != SIG_IGN)
+    sigaction(SIGHUP, &sa, NULL);
+}
+
 int ver_cmd_run(int argc, char **argv)
 {
   const char *path = NULL, *outdir = NULL;
@@ -199,11 +211,7 @@ int ver_cmd_run(int argc, char **argv)
   char id[600], defdir[700];
   ver_scene_case_id(&vs, id, sizeof id);
   snprintf(defdir, sizeof defdir, "out/%s", id);
-  struct sigaction sa;
-  memset(&sa, 0, sizeof sa);
-  sa.sa_handler = on_signal;
-  sigaction(SIGINT, &sa, NULL);
-  sigaction(SIGTERM, &sa, NULL);
+  catch_signals();
   ver_run_opts o = {outdir ? outdir : defdir, !quiet, 1, &stop_flag, 0, threads};
   ver_summary u;
   const int rc = ver_run(&vs, &o, &u, err, sizeof err);

@@ -34,22 +34,15 @@ static char *trim(char *s)
   return s;
 }
 
-/* The first byte that is not text (NUL, a control byte other than tab, CR and LF, or
- * DEL) of txt[0..len), named by line and byte column in err; 0 if there is none. */
-static int text_only(const char *path, const char *txt, size_t len, char *err, size_t errlen)
+/* The first byte of line `line`, [s, e), that is not text (NUL, a control byte other
+ * than tab and CR, or DEL), named by line and byte in err; 0 if there is none. */
+static int line_text(const char *path, int line, const char *s, const char *e, char *err, size_t errlen)
 {
-  for (size_t i = 0; i < len; i++) {
-    const unsigned char c = (unsigned char)txt[i];
-    if ((c < 0x20 && c != '\t' && c != '\r' && c != '\n') || c == 0x7f) {
-      long line = 1;
-      size_t bol = 0;
-      for (size_t k = 0; k < i; k++)
-        if (txt[k] == '\n') {
-          line++;
-          bol = k + 1;
-        }
-      snprintf(err, errlen, "%s:%ld: byte %zu of the line is %s (0x%02x): not a text file", path, line, i - bol + 1,
-               c ? "a control byte" : "a NUL byte", c);
+  for (const char *p = s; p < e; p++) {
+    const unsigned char c = (unsigned char)*p;
+    if ((c < 0x20 && c != '\t' && c != '\r') || c == 0x7f) {
+      snprintf(err, errlen, "%s:%d: byte %zu of the line is %s (0x%02x): not a text file", path, line,
+               (size_t)(p - s) + 1, c ? "a control byte" : "a NUL byte", c);
       return 2;
     }
   }
@@ -184,10 +177,6 @@ static char *table_text(const char *path, size_t *len, int *rc, char *err, size_
       snprintf(err, errlen, "%s: larger than %d MiB: refused", path, VER_TABLE_MAXBYTES >> 20);
     else
       snprintf(err, errlen, "%s: cannot read: %s", path, strerror(e));
-  } else if (text_only(path, txt, *len, err, errlen)) {
-    free(txt);
-    txt = NULL;
-    *rc = 2;
   }
   return txt;
 }
@@ -205,12 +194,14 @@ int ver_table_read(const char *path, const char *const *names, int nname, int nr
   for (const char *s = txt; (s = memchr(s, '\n', len - (size_t)(s - txt))); s++)
     rows++;
   int line = 0, ncol = 0, *want = NULL;
-  for (char *ln = txt, *next; *ln && !rc; ln = next) {
-    char *nl = strchr(ln, '\n');
-    next = nl ? nl + 1 : ln + strlen(ln);
-    if (nl)
-      *nl = '\0';
-    line++;
+  for (char *ln = txt, *end = txt + len, *next; ln < end && !rc; ln = next) {
+    char *nl = memchr(ln, '\n', (size_t)(end - ln)), *le = nl ? nl : end;
+    next = nl ? nl + 1 : end;
+    if ((rc = line_text(path, ++line, ln, le, err, errlen)))
+      break;
+    *le = '\0'; /* the newline, or the NUL after the text */
+    while (le > ln && (le[-1] == ' ' || le[-1] == '\t' || le[-1] == '\r' || le[-1] == '"'))
+      *--le = '\0';
     char *s = trim(ln);
     if (!*s || (*s == '#' && !want))
       continue;

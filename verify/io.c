@@ -255,6 +255,19 @@ int ver_io_lock_dir(const char *dir, char *err, size_t errlen)
   return -1;
 }
 
+long ver_io_lock_holder(const char *dir)
+{
+  char path[4200];
+  snprintf(path, sizeof path, "%s/" VER_LOCK_NAME, dir);
+  const int fd = open(path, O_RDWR | O_CLOEXEC);
+  if (fd < 0)
+    return 0;
+  struct flock q = {.l_type = F_WRLCK, .l_whence = SEEK_SET, .l_start = 0, .l_len = 0};
+  const long pid = fcntl(fd, F_GETLK, &q) == 0 && q.l_type != F_UNLCK ? (long)q.l_pid : 0;
+  close(fd);
+  return pid;
+}
+
 double ver_now_wall(void)
 {
   struct timespec ts;

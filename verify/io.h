@@ -37,6 +37,8 @@ int ver_io_copy(const char *src, const char *dst);
  * "DIR: another delam process (pid N) is writing this folder ..." when another holds it. */
 #define VER_LOCK_NAME ".delam.lock"
 int ver_io_lock_dir(const char *dir, char *err, size_t errlen);
+/* The pid of the process that holds DIR's lock now, 0 if none. */
+long ver_io_lock_holder(const char *dir);
 
 /* Numeric CSV with a header line: the columns named in cols (ncol of them), as malloc'd
  * arrays out[0..ncol-1] (caller frees each; NULL on failure).  A field that is not a

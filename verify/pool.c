@@ -13,6 +13,9 @@
 #include <stdlib.h>
 #include <sys/types.h>
 #include <sys/wait.h>
+#ifdef __linux__
+#include <sys/prctl.h>
+#endif
 #include <time.h>
 #include <unistd.h>
 
@@ -31,12 +34,28 @@ static void on_signal(int sig)
 
 void ver_pool_catch(void)
 {
-  struct sigaction sa;
+  struct sigaction sa, old;
   memset(&sa, 0, sizeof sa);
   sa.sa_handler = on_signal;
   sigemptyset(&sa.sa_mask);
   sigaction(SIGINT, &sa, NULL);
   sigaction(SIGTERM, &sa, NULL);
+  /* a closed terminal too, unless nohup asked for it to be ignored */
+  if (sigaction(SIGHUP, NULL, &old) == 0 && old.sa_handler != SIG_IGN)
+    sigaction(SIGHUP, &sa, NULL);
+}
+
+void ver_pool_child(pid_t parent)
+{
+#ifdef __linux__
+  /* SIGTERM when the parent dies, even by SIGKILL, so that no child outlives it; it
+   * may have died before this call */
+  prctl(PR_SET_PDEATHSIG, SIGTERM);
+  if (getppid() != parent)
+    _exit(130);
+#else
+  (void)parent;
+#endif
 }
 
 int ver_pool_caught(void)
@@ -52,9 +71,10 @@ volatile sig_atomic_t *ver_pool_stop_flag(void)
 pid_t ver_pool_spawn(char *const argv[], const char *cwd, const char *log)
 {
   fflush(NULL);
-  const pid_t pid = fork();
+  const pid_t parent = getpid(), pid = fork();
   if (pid != 0)
     return pid; /* parent (or -1) */
+  ver_pool_child(parent);
   if (cwd && chdir(cwd) != 0)
     _exit(126);
   const int fd = open(log, O_WRONLY | O_CREAT | O_TRUNC, 0666);

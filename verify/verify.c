@@ -54,9 +54,11 @@ static pid_t start_case(int i, void *ctx)
   run_ctx *r = ctx;
   fflush(NULL);
   r->started[i] = 1;
-  const pid_t pid = fork();
-  if (pid == 0)
+  const pid_t parent = getpid(), pid = fork();
+  if (pid == 0) {
+    ver_pool_child(parent);
     child_run(r->o, &r->cs[i], r->threads);
+  }
   if (pid < 0)
     snprintf(r->cs[i].error, sizeof r->cs[i].error, "fork failed: %s", strerror(errno));
   return pid;

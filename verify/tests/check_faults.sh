@@ -5,7 +5,8 @@
 #                refused at once with exit 2 and a message naming it, within 5 s.
 #   check-*      `delam check` judges only what it has verified: delam's own folder
 #                passes; a run stopped by SIGTERM (summary.json complete: false), a
-#                folder without summary.json, loads raised past delta 1 (W_ext 0.37 of
+#                folder without summary.json or with a damaged one (another code's
+#                summary.json without "complete" is no bar), loads raised past delta 1 (W_ext 0.37 of
 #                the work from the load curve's area), a delta that steps back by 2.0
 #                under grip control, an energy.csv cut to its first tenth, a NUL or a
 #                control byte are refused with exit 2 and the reason (row and column
@@ -14,16 +15,18 @@
 #   writer-*     one writer per output folder: a second run into a folder a first run
 #                is writing exits 2 naming the folder and the first's pid, and touches
 #                nothing (the first's scene.ini still says ppc 4, its summary.json is
-#                its own); once the first has ended, the same second run works there.
+#                its own), and `delam check` refuses the folder while it is written;
+#                once the first has ended, the same second run works there.
 #   out-*        --out that is a regular file, a path under one, a symlink loop: exit 2
 #                naming it; a full disk (a 300 KiB tmpfs, where mount is allowed): exit 1
 #                naming the file that could not be written and why, no *.tmp and no
 #                empty file left, and "partial results" only beside a summary.json
 #                that says complete: false.
-#   stop-*       SIGTERM to `delam verify` (then SIGINT to a rerun into the same folder,
-#                then SIGTERM to `delam report`): exit 130 within 30 s, no process it
-#                started still alive, verify.json written with exit_status 130, the
-#                stopped cases' summary.json saying complete: false.
+#   stop-*       SIGTERM to `delam verify` (then SIGINT and SIGHUP to reruns into the same
+#                folder, then SIGTERM to `delam report`): exit 130 within 30 s, no
+#                process it started still alive, verify.json written with exit_status
+#                130, the stopped cases' summary.json saying complete: false; SIGKILL
+#                to verify: its cases stop too (complete: false), none left running.
 # Prints TAP; exits 1 if a check failed.
 set -u
 delam=${1:?usage: check_faults.sh path/to/delam SRC}
@@ -79,6 +82,13 @@ result check-interrupted "$(expect 2 'summary.json says complete: false \(the ru
 cp -r base nosum && rm nosum/summary.json
 chk nosum
 result check-no-summary "$(expect 2 "scene.ini but no summary.json: the run has not finished")"
+cp -r base nosum2 && rm nosum2/scene.ini && echo '{"code": "another", "steps": 12}' >nosum2/summary.json
+timeout 60 "$delam" check --scene "$scene" --h 4 --ppc 1 nosum2 >out.txt 2>err.txt
+rc=$?
+result check-foreign-summary "$([ "$rc" = 0 ] || echo "another code's summary.json without 'complete': exit $rc, $(head -c 200 err.txt)")"
+cp -r base badsum && echo 'not json' >badsum/summary.json
+chk badsum
+result check-damaged-summary "$(expect 2 'badsum/summary.json: cannot be read or is not JSON: the run.s record is damaged')"
 cp -r base raise
 awk -F, 'BEGIN { OFS = "," } /^[#t]/ { print; next } { if ($2 > 1) $3 = 0.9; print }' base/load.csv >raise/load.csv
 chk raise
@@ -125,6 +135,8 @@ rc=$?
 why=$(expect 2 "shared: another delam process \\(pid $pidA\\) is writing this folder")
 [ -z "$why" ] && ! grep -q '^ppc = 4' shared/scene.ini && why="scene.ini no longer says ppc 4: $(grep '^ppc' shared/scene.ini)"
 result writer-second-refused "$why"
+chk shared
+result check-while-running "$(expect 2 "shared: a delam process \\(pid $pidA\\) is writing this folder now: not judged")"
 kill -TERM "$pidA"
 wait "$pidA"
 rcA=$?
@@ -213,6 +225,29 @@ stop_extra() { # verify: verify.json says 130; every case summary says complete:
 }
 stop_cmd TERM stop-verify-sigterm "$delam" verify --quick --jobs 2 --out v
 stop_cmd INT stop-verify-rerun-sigint "$delam" verify --quick --jobs 2 --out v
+stop_cmd HUP stop-verify-sighup "$delam" verify --quick --jobs 2 --out v
+# SIGKILL cannot be caught: the cases get SIGTERM from the system as their parent dies
+"$delam" verify --quick --jobs 2 --out v >/dev/null 2>&1 &
+pid=$!
+kids=""
+for _ in $(seq 100); do kids=$(descendants "$pid"); [ -n "$kids" ] && break; sleep 0.1; done
+sleep 2
+kids=$(descendants "$pid")
+kill -KILL "$pid"
+wait "$pid" 2>/dev/null
+alive=""
+for _ in $(seq 300); do
+  alive=""
+  for k in $kids; do kill -0 "$k" 2>/dev/null && alive="$alive $k"; done
+  [ -z "$alive" ] && break
+  sleep 0.1
+done
+why=""
+if [ -z "$kids" ]; then why="it had started no child"
+elif [ -n "$alive" ]; then why="left running 30 s after:$alive"; kill -KILL $alive
+elif ! grep -l '"complete":[[:space:]]*false' v/*/summary.json >/dev/null 2>&1; then why="no case stopped cleanly"
+fi
+result stop-verify-sigkill "$why"
 stop_extra() { grep -q 'REPORT.md and index.html not written' stop.err || echo "no word of what was not written"; }
 stop_cmd TERM stop-report-sigterm "$delam" report --out rep/out --cache rep/cache --scenes "$src/data/scenes" --gp "$src/reports"
 
