@@ -235,12 +235,19 @@ static void info_measure(const ver_case *c, const ver_table *ld, const ver_table
   in->D_ref = c->have_ana ? c->ana.D_sep : NAN;
   if (!en)
     snprintf(in->why, sizeof in->why, "no energy.csv");
-  else if (en->n != ld->n)
-    snprintf(in->why, sizeof in->why, "energy.csv has %ld rows, load.csv %ld: its rows are not dated", en->n, ld->n);
+  else if (en->n != ld->n && !(ld->col[3] && en->col[12]))
+    snprintf(in->why, sizeof in->why, "energy.csv has %ld rows, load.csv %ld, and not both a t column: its rows "
+             "are not dated", en->n, ld->n);
   else if (!(c->delta_sep >= 0))
     snprintf(in->why, sizeof in->why, "no separation detected");
   else {
-    in->D_cut = ver_value_at(ld->col[0], en->col[4], (size_t)ld->n, c->delta_sep);
+    /* by time where both files have it (the first energy row at or past the load row
+     * of delta_sep), else row by row */
+    const int by_t = ld->col[3] && en->col[12]; /* else the row counts are equal */
+    const double ts = by_t ? ver_value_at(ld->col[0], ld->col[3], (size_t)ld->n, c->delta_sep) : NAN;
+    in->D_cut = !by_t        ? ver_value_at(ld->col[0], en->col[4], (size_t)ld->n, c->delta_sep)
+                : isfinite(ts) ? ver_value_at(en->col[12], en->col[4], (size_t)en->n, ts)
+                               : NAN;
     in->D_after_cut = en->col[4][en->n - 1] - in->D_cut;
     in->have = isfinite(in->D_cut);
     if (!in->have)

@@ -11,7 +11,8 @@
 #                under grip control, an energy.csv cut to its first tenth, a NUL or a
 #                control byte are refused with exit 2 and the reason (row and column
 #                for the bytes); the same step back under dissipation control is
-#                judged; 2,000,000 rows are judged within 10 s.
+#                judged; an energy.csv of every 10th row is judged, its D dated by t;
+#                2,000,000 rows are judged within 10 s.
 #   writer-*     one writer per output folder: a second run into a folder a first run
 #                is writing exits 2 naming the folder and the first's pid, and touches
 #                nothing (the first's scene.ini still says ppc 4, its summary.json is
@@ -106,6 +107,12 @@ result check-delta-back-dissipation "$why"
 cp -r base tenth && head -n 1002 base/energy.csv >tenth/energy.csv
 chk tenth
 result check-energy-tenth "$(expect 2 "energy.csv ends at t 500, load.csv at t 5000: they do not cover the same run")"
+cp -r base dec && awk 'NR <= 2 || NR % 10 == 2' base/energy.csv >dec/energy.csv
+chk dec
+why=""
+[ "$rc" = 0 ] || why="exit $rc: $(head -c 200 err.txt)"
+[ -z "$why" ] && ! grep -q 'D_cut: [0-9.]* at the detected separation' out.txt && why="D_cut not dated by t: $(grep D_cut out.txt)"
+result check-energy-every-10th-row "$why"
 cp -r base nul && awk 'NR == 4001 { $0 = substr($0, 1, 7) "\\000" substr($0, 9) } { print }' base/load.csv | printf '%b' "$(cat)" >nul/load.csv
 chk nul
 result check-nul "$(expect 2 'nul/load.csv:4001: byte 8 of the line is a NUL byte \(0x00\)')"
