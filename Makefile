@@ -7,7 +7,7 @@
 BUILD     ?= build
 MESONFLAGS ?=
 DEBS = meson ninja-build pkg-config gcc libgsl-dev libcmocka-dev libinih-dev \
-       libcjson-dev gnuplot-nox parallel
+       libcjson-dev libsuitesparse-dev gnuplot-nox parallel
 SUDO = $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
 .PHONY: all deps build check check-asan fuzz fuzz-deps report report-full bench docs-keys clean

@@ -183,6 +183,7 @@ typedef struct {
   int damping_about;     /* MPM_DAMP_DRIFT (the node's low-pass) or MPM_DAMP_PARTS (after
                             the cut, each part's held end's motion)                        */
   double end_delta;      /* the run never goes past this end displacement              */
+  int solver;            /* MPM_SOLVER_EXPLICIT (the paper's dynamic step) or _STATIC    */
 } mpm_scene;
 
 /* The loading's steady velocity field, which the particles start with (no wave from the
@@ -260,6 +261,15 @@ void mpm_dwork_free(mpm_dwork *w);
  * on the arguments; w is scratch.  MPM_ENOTFINITE if the result is not finite. */
 mpm_status mpm_dcoh_update(const mpm_material *m, const mpm_dstate *in, const double de[3],
                            mpm_dstate *out, mpm_dinfo *info, mpm_dwork *w);
+
+/* The algorithmic (consistent) tangent of that update: D[i][j] = d sigma_out[i] / d de[j]
+ * at the same (in, de), sigma = (sxx, syy, sxy), de = (dexx, deyy, dexy) with tensor shear
+ * (elastic: D = [[E1, E2, 0], [E2, E1, 0], [0, 0, 2G]]).  Analytic, on the path the update
+ * takes (a one-sided value exactly on a switch between paths); runs the update itself.
+ * Pure like it; D is NaN and the update's status returned when that is not MPM_OK.
+ * dlam (if not NULL) gets d lambda_out / d de on the same path (0 on an elastic step). */
+mpm_status mpm_dcoh_tangent(const mpm_material *m, const mpm_dstate *in, const double de[3], double D[3][3],
+                            double dlam[3], mpm_dwork *w);
 
 /* Remaining strength squared, (1 - lambda^q)^2 (eq. 23); -1 once separated
  * (mpm_particles.str2). */
@@ -579,6 +589,37 @@ void mpm_control_step(mpm_sim *s);
 
 /* Updates s->cut after new separations (cheap when there are none). */
 void mpm_sim_cut(mpm_sim *s);
+
+/* ---- the quasi-static solver (mpm_static.c) ----
+ * Load increments on the same grid, particles, shapes and laws, each solved by Newton's
+ * method on the nodal force balance; the grip's displacement leads to the first
+ * softening, then the dissipation does (the grip may move back: snapback).  The
+ * increment is one "step" of the run: it sets s->ugrip (delta), the loads, the
+ * particles' state and positions, s->W_ext, s->step and s->t (the increment count). */
+enum { MPM_SOLVER_EXPLICIT = 0, MPM_SOLVER_STATIC = 1 };
+enum { MPM_QS_GRIP = 0, MPM_QS_DISSIPATION = 1 };
+typedef struct {
+  long increments;         /* load increments taken                                    */
+  long newton;             /* Newton iterations, all increments                          */
+  long cuts;               /* increments retried with a smaller step                      */
+  long factorizations;     /* LU factorizations of the tangent                            */
+  long switches;           /* changes of control                                       */
+  long turns;              /* increments retried smaller at a corner of the curve          */
+  long backtracks;         /* Newton steps halved by the line search                      */
+  int nres;                /* the last increment's Newton iterations, and each one's      */
+  double res[32];          /*   largest residual force over the largest load (its first 32) */
+  int mode;                /* MPM_QS_* of the last increment                              */
+  int unknowns;            /* free degrees of freedom                                  */
+  size_t nnz;              /* entries of the tangent                                   */
+  double t_eval, t_factor, t_solve; /* seconds: laws and assembly, factorization, solves */
+} mpm_static_stats;
+typedef struct mpm_static mpm_static;
+/* On a sim made by mpm_sim_alloc from a scene with solver = static; s stays owned by
+ * the caller and must outlive q.  MPM_EINVAL and a message for what it cannot solve. */
+mpm_status mpm_static_alloc(mpm_sim *s, mpm_static **out, char *err, size_t errlen);
+void mpm_static_free(mpm_static *q);
+mpm_status mpm_static_step(mpm_static *q, char *err, size_t errlen);
+void mpm_static_stats_get(const mpm_static *q, mpm_static_stats *out);
 
 /* Total momentum (for conservation tests). */
 void mpm_particles_momentum(const mpm_particles *p, double *px, double *py);

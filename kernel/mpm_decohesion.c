@@ -31,6 +31,13 @@
  *    (d ud_n >= -ud_n), then carries the compression; shear is always released.
  *  - decohesion.reversed_shear = closing (not the paper's): shear against the
  *    particle's accumulated slip is elastic, the <sn> of the shear (see the update).
+ *
+ * mpm_dcoh_tangent: the algorithmic tangent d sigma / d de of this update, for an implicit
+ * (Newton) solver.  It runs the same code (dcoh_step) and differentiates the converged
+ * step: the implicit function theorem on phi(dl; s_tr) = 0, with the trial dependence of
+ * the frozen flow direction and the Macaulay bracket.  Non-smooth where the path switches
+ * (elastic/softening at F = 0, softening/separation, contact at shut, sn_tr or sn = 0,
+ * closing at s_nt upt = 0): there it gives the side the update took.
  */
 #include <assert.h>
 #include <math.h>
@@ -265,11 +272,12 @@ static int solve_dl(const phi_ctx *c, double dlmax, double guess, mpm_dwork *w, 
 /* Separation (eqs. 56-58), and every later step of a separated particle: release the
  * traction of the trial stress by a decohesion strain in the n-t frame.  In normal
  * compression the opening closes first (never below zero) and compression is carried. */
-static void separate(const mpm_material *m, nt_stress tr, double upn, nt_stress *s,
-                     double *dun, double *dut)
+static int separate(const mpm_material *m, nt_stress tr, double upn, nt_stress *s,
+                    double *dun, double *dut)
 {
   double de_nn = tr.nn / m->E1;                      /* eq. 57 */
-  if (tr.nn < 0.0 && m->Lopen * de_nn < -upn)
+  const int contact = tr.nn < 0.0 && m->Lopen * de_nn < -upn;
+  if (contact)
     de_nn = -upn / m->Lopen;                         /* contact: close no further than shut */
   const double de_nt = tr.nt / (2.0 * m->G);         /* eq. 57 */
   s->nn = tr.nn - m->E1 * de_nn;
@@ -277,12 +285,28 @@ static void separate(const mpm_material *m, nt_stress tr, double upn, nt_stress 
   s->nt = 0.0;
   *dun = m->Lopen * de_nn;                           /* eq. 58 */
   *dut = 2.0 * m->Lopen * de_nt;                     /* eq. 58, tensor shear: 2 Le de_nt */
+  return contact;
 }
 
-mpm_status mpm_dcoh_update(const mpm_material *m, const mpm_dstate *in, const double de[3],
-                           mpm_dstate *out, mpm_dinfo *info, mpm_dwork *w)
+/* What one update decided and the frozen quantities it used, for the tangent
+ * (mpm_dcoh_tangent): the trial traction, the flow direction at the trial state and the
+ * root dl.  Written by dcoh_step; mpm_dcoh_update ignores it. */
+typedef struct {
+  int path;          /* MPM_DPATH_* (ELASTIC also for model NONE)                  */
+  int contact;       /* separate(): the closing stopped at shut (s_nn follows the trial) */
+  double dun;        /* ... and its normal opening increment                               */
+  int st_on;         /* 1: st = trial s_nt; 0: reversed_shear = closing zeroed it   */
+  nt_stress tr;      /* trial stress in the n-t frame                              */
+  double st, se, r, gn, gt, mn, mt, dl;
+  phi_ctx ctx;       /* the consistency function the root solved                   */
+} dcoh_trace;
+
+/* The update (mpm_dcoh_update), recording in *t what the tangent needs. */
+static inline mpm_status dcoh_step(const mpm_material *m, const mpm_dstate *in, const double de[3],
+                                   mpm_dstate *out, mpm_dinfo *info, mpm_dwork *w, dcoh_trace *t)
 {
   assert(m && in && de && out && info);
+  t->path = MPM_DPATH_ELASTIC;
   info->path = MPM_DPATH_ELASTIC;
   info->iters = 0;
   info->bracketed = 0;
@@ -305,8 +329,10 @@ mpm_status mpm_dcoh_update(const mpm_material *m, const mpm_dstate *in, const do
   double dun = 0.0, dut = 0.0;
   nt_stress s = tr;
 
+  t->tr = tr;
   if (in->sep) {
-    separate(m, tr, in->upn, &s, &dun, &dut);
+    t->contact = separate(m, tr, in->upn, &s, &dun, &dut);
+    t->dun = dun;
     info->path = MPM_DPATH_OPEN;
   } else {
     /* decohesion.reversed_shear = closing: shear against the slip the particle has
@@ -314,7 +340,8 @@ mpm_status mpm_dcoh_update(const mpm_material *m, const mpm_dstate *in, const do
      * leaves normal compression out of it; only the opening part may soften.  The paper's
      * eq. 23 is even in s_nt (EVEN): after a release the rebound's reversed shear fails
      * the band's part-softened neighbours (docs/bands.md secs. 5h, 5j). */
-    const double st = (m->shear_closing && tr.nt * in->upt < 0.0) ? 0.0 : tr.nt;
+    const int st_on = !(m->shear_closing && tr.nt * in->upt < 0.0);
+    const double st = st_on ? tr.nt : 0.0;
     const double se = eff_traction(m, tr.nn, st);
     const double c = se - (1.0 - powq(in->lam, m->q));            /* eq. 23 */
     if (c <= 0.0)
@@ -328,6 +355,15 @@ mpm_status mpm_dcoh_update(const mpm_material *m, const mpm_dstate *in, const do
     /* Traction (and s_tt) per unit dlambda: C : (ubar0/Le) sym(n (x) m), eqs. 39-41. */
     const double k = m->kL;
     phi_ctx ctx = {m, tr.nn, st, m->E1 * k * mn, m->G * k * mt, in->lam};
+    t->st_on = st_on;
+    t->st = st;
+    t->se = se;
+    t->r = r;
+    t->gn = gn;
+    t->gt = gt;
+    t->mn = mn;
+    t->mt = mt;
+    t->ctx = ctx;
     const double smtt = m->E2 * k * mn;
     /* 2b of eq. 49, -(m* : s_m) / s0 + q lambda^(q-1) with m* = (s0 / se)(gn, gt),
      * is dpow - Q / se^2 with Q = s0 (ubar0 / Le)(E1 gn^2 + G gt^2); the first-order
@@ -347,9 +383,12 @@ mpm_status mpm_dcoh_update(const mpm_material *m, const mpm_dstate *in, const do
       dut = dl * m->ubar0 * mt;
       out->lam = in->lam + dl;
       info->path = MPM_DPATH_SOFTEN;
+      t->dl = dl;
     } else {
       /* Separation imminent (lambda past the threshold) or no solution. */
-      separate(m, tr, in->upn, &s, &dun, &dut);
+      t->contact = separate(m, tr, in->upn, &s, &dun, &dut);
+      t->dun = dun;
+    t->dun = dun;
       out->sep = 1;
       info->path = MPM_DPATH_SEPARATE;
     }
@@ -361,10 +400,136 @@ mpm_status mpm_dcoh_update(const mpm_material *m, const mpm_dstate *in, const do
   /* Traction work, trapezoidal in the step: int s . d ud. */
   info->w = 0.5 * ((s_in.nn + s.nn) * dun + (s_in.nt + s.nt) * dut);
   from_nt(m, s, out);
+  t->path = info->path;
 
 done:
   if (!isfinite(out->sxx) || !isfinite(out->syy) || !isfinite(out->sxy) || !isfinite(out->lam) ||
       !isfinite(out->upn) || !isfinite(out->upt))
     return MPM_ENOTFINITE;
+  return MPM_OK;
+}
+
+mpm_status mpm_dcoh_update(const mpm_material *m, const mpm_dstate *in, const double de[3],
+                           mpm_dstate *out, mpm_dinfo *info, mpm_dwork *w)
+{
+  dcoh_trace t;
+  return dcoh_step(m, in, de, out, info, w, &t);
+}
+
+/* d s / d s_tr in the n-t frame, rows and columns (nn, tt, nt), of the path t took. */
+static void tangent_nt(const mpm_material *m, const dcoh_trace *t, double A[3][3], double L[3])
+{
+  for (int i = 0; i < 3; i++)
+    for (int j = 0; j < 3; j++)
+      A[i][j] = i == j ? 1.0 : 0.0;
+  L[0] = L[1] = L[2] = 0.0;
+  if (t->path == MPM_DPATH_OPEN || t->path == MPM_DPATH_SEPARATE) {
+    /* lambda = lambda_in + |d ud| / ubar0, d ud = Lopen (s_nn_tr / E1, s_nt_tr / G) (eq. 58;
+     * in contact d ud_n is -ud_n, fixed) */
+    const double dun = t->contact ? t->dun : m->Lopen * t->tr.nn / m->E1, dut = m->Lopen * t->tr.nt / m->G;
+    const double du = sqrt(dun * dun + dut * dut);
+    if (du > 0.0) {
+      L[0] = t->contact ? 0.0 : dun * m->Lopen / (m->E1 * du * m->ubar0);
+      L[2] = dut * m->Lopen / (m->G * du * m->ubar0);
+    }
+    /* eqs. 56-58: s_nt = 0; open, s_nn = 0 and s_tt = s_tt_tr - (E2/E1) s_nn_tr (eq. 57);
+     * in contact de_nn is fixed by the opening, so s_nn and s_tt follow the trial. */
+    A[2][2] = 0.0;
+    if (!t->contact) {
+      A[0][0] = 0.0;
+      A[1][0] = -m->E2 / m->E1;
+    }
+    return;
+  }
+  if (t->path != MPM_DPATH_SOFTEN)
+    return;
+  /* Softening: s = s_tr - dl s_m(s_tr), s_m = C : (ubar0/Le) sym(n (x) m) (eqs. 39-41) with
+   * m = r (gn, gt), r = s0/se, frozen at the trial (eqs. 24, 26).  Derivatives with respect
+   * to x = (s_nn_tr, s_nt_tr); s_tt_tr enters neither phi nor m.  <sn> makes gn and its
+   * slope vanish in compression; closing (st_on = 0) makes st, gt, mt constant (0). */
+  const double k = m->kL, se = t->se, r = t->r, gn = t->gn, gt = t->gt;
+  const double hn = t->tr.nn > 0.0 ? m->isnf2 : 0.0;          /* d gn / d sn_tr */
+  const double ht = t->st_on ? m->istf2 : 0.0;                 /* d gt / d st_tr */
+  const double dse[2] = {gn / se, t->st_on ? gt / se : 0.0};   /* eq. 23 */
+  double dmn[2], dmt[2];
+  for (int j = 0; j < 2; j++) {
+    const double dr = -r / se * dse[j];
+    dmn[j] = dr * gn + (j == 0 ? r * hn : 0.0);
+    dmt[j] = m->model == MPM_DCOH_MODEL2 ? 0.0 : dr * gt + (j == 1 ? r * ht : 0.0); /* eq. 26: none */
+  }
+  /* Implicit function theorem on phi(dl; x) = 0 (the consistency of eq. 23 with the
+   * overstress): d dl / d x = -(d phi / d x) / (d phi / d dl), at the converged dl. */
+  const double dl = t->dl;
+  const double sn = t->tr.nn - dl * t->ctx.smn, st = t->st - dl * t->ctx.smt;
+  const double se_o = eff_traction(m, sn, st);
+  const double gn_o = sn > 0.0 ? sn * m->isnf2 : 0.0, gt_o = st * m->istf2;
+  const double phil = dphi(dl, &t->ctx);
+  const double dsn[2] = {1.0, 0.0}, dst[2] = {0.0, t->st_on ? 1.0 : 0.0};
+  double ddl[2];
+  for (int j = 0; j < 2; j++) {
+    const double phix = (gn_o * (dsn[j] - dl * m->E1 * k * dmn[j]) +
+                         gt_o * (dst[j] - dl * m->G * k * dmt[j])) / se_o;
+    ddl[j] = -phix / phil;
+  }
+  L[0] = ddl[0]; /* lambda = lambda_in + dl */
+  L[2] = ddl[1];
+  /* s_nn = sn_tr - dl E1 k mn, s_tt = stt_tr - dl E2 k mn, s_nt = st_tr - dl G k mt
+   * (the trial s_nt, not st: closing keeps it elastic). */
+  const int col[2] = {0, 2};
+  for (int j = 0; j < 2; j++) {
+    const double dn = ddl[j] * t->mn + dl * dmn[j], dt = ddl[j] * t->mt + dl * dmt[j];
+    A[0][col[j]] -= m->E1 * k * dn;
+    A[1][col[j]] -= m->E2 * k * dn;
+    A[2][col[j]] -= m->G * k * dt;
+  }
+}
+
+mpm_status mpm_dcoh_tangent(const mpm_material *m, const mpm_dstate *in, const double de[3], double D[3][3],
+                            double dlam[3], mpm_dwork *w)
+{
+  assert(m && in && de && D);
+  mpm_dstate out;
+  mpm_dinfo info;
+  dcoh_trace t;
+  const mpm_status rc = dcoh_step(m, in, de, &out, &info, w, &t);
+  const double C[3][3] = {{m->E1, m->E2, 0.0}, {m->E2, m->E1, 0.0}, {0.0, 0.0, 2.0 * m->G}};
+  if (dlam)
+    dlam[0] = dlam[1] = dlam[2] = rc == MPM_OK ? 0.0 : NAN;
+  if (rc != MPM_OK) {
+    for (int i = 0; i < 3; i++)
+      for (int j = 0; j < 3; j++)
+        D[i][j] = NAN;
+    return rc;
+  }
+  if (t.path == MPM_DPATH_ELASTIC) { /* exactly C (and so exactly symmetric) */
+    for (int i = 0; i < 3; i++)
+      for (int j = 0; j < 3; j++)
+        D[i][j] = C[i][j];
+    return MPM_OK;
+  }
+  /* D = P A R C: C the trial's d sigma_tr / d de, R = to_nt, A = d s / d s_tr in the n-t
+   * frame, P = from_nt (its sxx, syy columns carry 2 rnt on s_nt, its sxy row halves
+   * rnn[2], rtt[2]: the same numbers as from_nt). */
+  const double R[3][3] = {{m->rnn[0], m->rnn[1], m->rnn[2]},
+                          {m->rtt[0], m->rtt[1], m->rtt[2]},
+                          {m->rnt[0], m->rnt[1], m->rnt[2]}};
+  const double P[3][3] = {{m->rnn[0], m->rtt[0], 2.0 * m->rnt[0]},
+                          {m->rnn[1], m->rtt[1], 2.0 * m->rnt[1]},
+                          {0.5 * m->rnn[2], 0.5 * m->rtt[2], m->rnt[2]}};
+  double A[3][3], RC[3][3], ARC[3][3];
+  double L[3];
+  tangent_nt(m, &t, A, L);
+  for (int i = 0; i < 3; i++)
+    for (int j = 0; j < 3; j++)
+      RC[i][j] = R[i][0] * C[0][j] + R[i][1] * C[1][j] + R[i][2] * C[2][j];
+  for (int i = 0; i < 3; i++)
+    for (int j = 0; j < 3; j++)
+      ARC[i][j] = A[i][0] * RC[0][j] + A[i][1] * RC[1][j] + A[i][2] * RC[2][j];
+  for (int i = 0; i < 3; i++)
+    for (int j = 0; j < 3; j++)
+      D[i][j] = P[i][0] * ARC[0][j] + P[i][1] * ARC[1][j] + P[i][2] * ARC[2][j];
+  if (dlam) /* L is d lambda / d (s_nn_tr, s_tt_tr, s_nt_tr) */
+    for (int j = 0; j < 3; j++)
+      dlam[j] = L[0] * RC[0][j] + L[1] * RC[1][j] + L[2] * RC[2][j];
   return MPM_OK;
 }

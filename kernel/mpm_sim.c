@@ -412,6 +412,8 @@ double mpm_sim_grip_u(const mpm_sim *s, int ahead)
 
 double mpm_sim_delta(const mpm_sim *s)
 {
+  if (s->sc.solver == MPM_SOLVER_STATIC)
+    return s->ugrip;
   return s->sc.control == MPM_CONTROL_GRIP ? s->sc.speed * s->t : s->ugrip;
 }
 

@@ -61,9 +61,10 @@ static void usage(FILE *f)
     "  --help            this text\n"
     "Not judged (exit 2): a run whose summary.json says complete: false or that has\n"
     "delam's scene.ini without a summary.json; a file that is not a regular text file;\n"
-    "a delta that goes back where the grip only pulls (loading.control = grip); an\n"
-    "energy.csv whose W_ext is more than 1%% of the work from the area under load.csv's\n"
-    "P_grip-delta curve, or that does not cover the same times.\n\n"
+    "a delta that goes back where the grip only pulls (solver.type = explicit and\n"
+    "loading.control = grip); an energy.csv whose W_ext is more than 1%% of the work\n"
+    "from the area under load.csv's P_grip-delta curve, or that does not cover the\n"
+    "same times; a folder a delam process is writing now.\n\n"
     "exit status: 0 all checks pass (or are within a known limit), 1 a check failed or\n"
     "check.json could not be written, 2 bad usage or unusable input (file, line and\n"
     "column named)\n");
@@ -88,6 +89,9 @@ static int build_scene(const char *arg, const char *dir, double h, double ppc, c
         h = ds.sc.h;
       if (ppc <= 0)
         ppc = ds.sc.ppc;
+      /* rows of equilibrium states, not interval averages: judged as such */
+      if (ds.sc.solver == MPM_SOLVER_STATIC && ver_scene_set(vs, "solver.type=static", err, errlen))
+        return 2;
     }
   }
   if (h > 0) {
@@ -349,16 +353,16 @@ static int run_finished(const char *dir, char *err, size_t errlen)
   return 2;
 }
 
-/* Whether the run's grip only pulls (loading.control = grip): the folder's own scene.ini
- * where delam wrote it, else the scene it is judged against. */
+/* Whether the run's grip only pulls: the explicit solver under loading.control = grip
+ * (the static solver follows a snapback, the dissipation control may too), as the
+ * folder's own scene.ini says where delam wrote it, else the scene it is judged against. */
 static int grip_pulls(const char *dir, const ver_scene *vs)
 {
   char path[1400], e[200];
   ver_scene own;
   snprintf(path, sizeof path, "%s/scene.ini", dir);
-  if (ver_scene_parse(path, &own, e, sizeof e) == 0)
-    return own.sc.control == MPM_CONTROL_GRIP;
-  return vs->sc.control == MPM_CONTROL_GRIP;
+  const mpm_scene *sc = ver_scene_parse(path, &own, e, sizeof e) == 0 ? &own.sc : &vs->sc;
+  return sc->control == MPM_CONTROL_GRIP && sc->solver == MPM_SOLVER_EXPLICIT;
 }
 
 /* load.csv (delta, P_grip, P_fixed, t) and energy.csv (W_ext first, t at 12; or NULL) say
@@ -370,7 +374,7 @@ static int inputs_agree(const char *dir, int pulls, const ver_table *ld, const v
   const long b = pulls ? ver_foreign_backstep(ld->col[0], ld->n) : -1;
   if (b >= 0) {
     snprintf(err, errlen, "%s/load.csv: data row %ld: delta %.9g is below the row before's %.9g, but the grip only "
-             "pulls (loading.control = grip): not one run's curve", dir, b + 1, ld->col[0][b], ld->col[0][b - 1]);
+             "pulls (solver.type = explicit, loading.control = grip): not one run's curve", dir, b + 1, ld->col[0][b], ld->col[0][b - 1]);
     return 2;
   }
   if (!en)

@@ -37,6 +37,8 @@ static void usage(FILE *f)
     "  --dt DT           time step (must be below the CFL bound h / (c sqrt 2))\n"
     "  --until DELTA     run to this end displacement exactly (no early stop)\n"
     "  --set S.K=V       set key K of section S, as in the file (repeatable)\n"
+    "  --solver NAME     explicit (the paper's dynamic step) or static (load\n"
+    "                    increments in equilibrium; the same as --set solver.type=NAME)\n"
     "  --allow-unstable  accept a time step at or above the CFL bound\n"
     "  --threads N       OpenMP threads (default: chosen while it runs, one thread\n"
     "                    for small scenes, up to OMP_NUM_THREADS or all cores when\n"
@@ -123,6 +125,20 @@ static void print_result(const ver_scene *vs, const char *id, const ver_summary 
          u.wall_s, u.updates_per_s, outdir);
 }
 
+/* After a failed or stopped run: what its folder holds, as it is. */
+static void say_folder(const char *dir)
+{
+  ver_summary_doc d;
+  struct stat st;
+  const int have = ver_summary_read(dir, &d) == 0;
+  if (have && !d.u.complete)
+    fprintf(stderr, "delam run: partial results in %s (summary.json says complete: false)\n", dir);
+  else if (have) /* the run failed before it cleared the folder */
+    fprintf(stderr, "delam run: %s is as an earlier run left it: none of it is this run's\n", dir);
+  else if (stat(dir, &st) == 0 && S_ISDIR(st.st_mode))
+    fprintf(stderr, "delam run: no summary.json in %s: nothing there is a result of this run\n", dir);
+}
+
 /* SIGINT, SIGTERM and SIGHUP (unless nohup ignores it) stop the run cleanly. */
 static void catch_signals(void)
 {
@@ -139,6 +155,7 @@ int ver_cmd_run(int argc, char **argv)
 {
   const char *path = NULL, *outdir = NULL;
   const char *sets[64];
+  char solver_set[80];
   int nset = 0, quiet = 0, allow = 0, threads = 0;
   double h = 0, ppc = 0, dt = 0, until = 0;
   for (int i = 1; i < argc; i++) {
@@ -168,7 +185,11 @@ int ver_cmd_run(int argc, char **argv)
       threads = (int)t;
       i++;
     }
-    else if (!strcmp(a, "--set")) {
+    else if (!strcmp(a, "--solver")) {
+      if (!v || nset == 64) { fprintf(stderr, "delam run: --solver needs explicit or static\n"); return 2; }
+      snprintf(solver_set, sizeof solver_set, "solver.type=%s", v);
+      sets[nset++] = solver_set; i++;
+    } else if (!strcmp(a, "--set")) {
       if (!v || nset == 64) { fprintf(stderr, "delam run: --set needs section.key=value\n"); return 2; }
       sets[nset++] = v; i++;
     } else if (!strcmp(a, "--allow-unstable")) allow = 1;
@@ -217,15 +238,8 @@ int ver_cmd_run(int argc, char **argv)
   const int rc = ver_run(&vs, &o, &u, err, sizeof err);
   if (rc) {
     fprintf(stderr, "delam run: %s\n", err);
-    ver_summary_doc d; /* say what the folder holds, as it is */
-    struct stat st;
-    const int have = rc != 2 && ver_summary_read(o.outdir, &d) == 0;
-    if (have && !d.u.complete)
-      fprintf(stderr, "delam run: partial results in %s (summary.json says complete: false)\n", o.outdir);
-    else if (have) /* the run failed before it cleared the folder */
-      fprintf(stderr, "delam run: %s is as an earlier run left it: none of it is this run's\n", o.outdir);
-    else if (rc != 2 && stat(o.outdir, &st) == 0 && S_ISDIR(st.st_mode))
-      fprintf(stderr, "delam run: no summary.json in %s: nothing there is a result of this run\n", o.outdir);
+    if (rc != 2)
+      say_folder(o.outdir);
     return rc;
   }
   print_result(&vs, id, &u, o.outdir);

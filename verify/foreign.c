@@ -247,7 +247,11 @@ void ver_foreign_measure(ver_case *c, const ver_table *ld, const ver_table *en, 
   c->k_elastic = ver_elastic_slope(d, P, n, c->peak_P, c->delta_peak, VER_ELASTIC_LO, VER_ELASTIC_HI);
   c->k_soft = ver_softening_slope(d, P, n, VER_SOFT_HI, VER_SOFT_LO);
   if (c->have_ana)
-    c->curve_l2 = ver_curve_err_bar(&c->ana, d, P, n, ver_curve_end(&c->ana, sc->sep_threshold), NULL);
+  {
+    const int pts = sc->solver == MPM_SOLVER_STATIC;
+    c->curve_l2 = ver_curve_err_bar(&c->ana, d, P, n, ver_curve_end(&c->ana, sc->sep_threshold), NULL, pts);
+    c->curve_path = pts ? ver_curve_path(&c->ana, d, P, n, &c->delta5) : NAN;
+  }
   ver_case_wave(c, d, P, n);
   /* separation by the load, with the run's window of 4 L / c in delta */
   const double cw = sqrt(sc->E / (1.0 - sc->nu * sc->nu) / sc->rho);

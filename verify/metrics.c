@@ -311,14 +311,14 @@ double ver_conv_order(const double *h, const double *e, size_t n, double *logc)
 }
 
 double ver_curve_l2(const double *delta, const double *P, size_t n, double delta_end, double scale,
-                    double (*ref)(const void *ctx, double delta), const void *ctx, double *maxdev)
+                    double (*ref)(const void *ctx, double delta), const void *ctx, double *maxdev, int points)
 {
   double s = 0, mx = 0;
   size_t m = 0;
   for (size_t i = 0; i < n; i++) {
     if (!(delta[i] > 0) || delta[i] > delta_end)
       continue;
-    const double prev = i > 0 ? delta[i - 1] : 0.0, mid = 0.5 * (prev + delta[i]);
+    const double prev = i > 0 ? delta[i - 1] : 0.0, mid = points ? delta[i] : 0.5 * (prev + delta[i]);
     const double d = P[i] - ref(ctx, mid);
     s += d * d;
     mx = fmax(mx, fabs(d));
@@ -335,9 +335,73 @@ static double bar_load(const void *ctx, double delta)
 }
 
 double ver_curve_err_bar(const ana_bar *b, const double *delta, const double *P, size_t n, double delta_end,
-                         double *maxdev)
+                         double *maxdev, int points)
 {
-  return ver_curve_l2(delta, P, n, delta_end, b->Pmax, bar_load, b, maxdev);
+  return ver_curve_l2(delta, P, n, delta_end, b->Pmax, bar_load, b, maxdev, points);
+}
+
+/* Distance from (x, y) to the polyline (px, py) of m points. */
+static double poly_dist(const double *px, const double *py, size_t m, double x, double y)
+{
+  double best = INFINITY;
+  for (size_t j = 0; j + 1 < m; j++) {
+    const double ax = px[j], ay = py[j], bx = px[j + 1] - ax, by = py[j + 1] - ay, l2 = bx * bx + by * by;
+    double t = l2 > 0.0 ? ((x - ax) * bx + (y - ay) * by) / l2 : 0.0;
+    t = t < 0.0 ? 0.0 : t > 1.0 ? 1.0 : t;
+    const double dx = x - ax - t * bx, dy = y - ay - t * by;
+    best = fmin(best, dx * dx + dy * dy);
+  }
+  return sqrt(best);
+}
+
+double ver_curve_path(const ana_bar *b, const double *delta, const double *P, size_t n, double *d5)
+{
+  enum { NS = 2000 };          /* points of the softening branch                     */
+  const double ds = 0.002;     /* spacing of the run's points along its polyline     */
+  double dpk, Ppk, px[NS + 3], py[NS + 3];
+  if (d5)
+    *d5 = NAN;
+  if (n == 0 || !(b->Pmax > 0.0))
+    return NAN;
+  ana_bar_softening_point(b, 1.0, &dpk, &Ppk);
+  px[0] = py[0] = 0.0;
+  for (int k = 0; k <= NS; k++) { /* sigma* from 1 to 0 */
+    double d, p;
+    ana_bar_softening_point(b, 1.0 - (double)k / NS, &d, &p);
+    px[k + 1] = d / dpk;
+    py[k + 1] = p / b->Pmax;
+  }
+  px[NS + 2] = px[NS + 1] + 1e3;
+  py[NS + 2] = 0.0;
+  size_t ipk = 0, end = n - 1;
+  for (size_t i = 1; i < n; i++)
+    if (P[i] > P[ipk])
+      ipk = i;
+  for (size_t i = ipk; i < n; i++)
+    if (P[i] <= 0.01 * b->Pmax) {
+      end = i;
+      break;
+    }
+  double s = 0.0, x0 = 0.0, y0 = 0.0;
+  size_t m = 0;
+  for (size_t i = 0; i <= end; i++) {
+    const double x1 = delta[i] / dpk, y1 = P[i] / b->Pmax, len = hypot(x1 - x0, y1 - y0);
+    const int k = (int)ceil(len / ds);
+    for (int j = 1; j <= k; j++) {
+      const double t = (double)j / k, e = poly_dist(px, py, NS + 3, x0 + t * (x1 - x0), y0 + t * (y1 - y0));
+      s += e * e;
+      m++;
+    }
+    if (d5 && i > ipk && isnan(*d5) && P[i] <= 0.05 * b->Pmax && P[i - 1] > 0.05 * b->Pmax) {
+      const double f = (P[i - 1] - 0.05 * b->Pmax) / (P[i - 1] - P[i]);
+      double da, pa;
+      ana_bar_softening_point(b, 0.05 * b->Pmax / Ppk, &da, &pa);
+      *d5 = (delta[i - 1] + f * (delta[i] - delta[i - 1]) - da) / dpk;
+    }
+    x0 = x1;
+    y0 = y1;
+  }
+  return m ? sqrt(s / (double)m) : NAN;
 }
 
 static double wave_load(const void *ctx, double delta)
@@ -358,7 +422,7 @@ double ver_curve_err_wave(const ana_bar *b, double speed, double rho, double xg,
     return NAN;
   if (peak)
     *peak = ana_wave_peak(&w, NULL);
-  const double e = ver_curve_l2(delta, P, n, delta_end, b->Pmax, wave_load, &w, maxdev);
+  const double e = ver_curve_l2(delta, P, n, delta_end, b->Pmax, wave_load, &w, maxdev, 0);
   ana_wave_free(&w);
   return e;
 }

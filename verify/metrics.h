@@ -123,15 +123,25 @@ double ver_spread(const double *v, size_t n);
 
 /* The load-curve error: root-mean-square of P_i - ref(delta_i) over rows with
  * 0 < delta_i <= delta_end, divided by scale.  Each row's P is the average over the
- * interval that ends at delta_i, so it is compared at the interval's midpoint.
+ * interval that ends at delta_i, so it is compared at the interval's midpoint; with
+ * points (the static solver's rows, each an equilibrium state) at delta_i itself.
  * *maxdev (if not NULL) gets the largest |P_i - ref| / scale over the same rows.
  * NaN if no row qualifies. */
 double ver_curve_l2(const double *delta, const double *P, size_t n, double delta_end, double scale,
-                    double (*ref)(const void *ctx, double delta), const void *ctx, double *maxdev);
+                    double (*ref)(const void *ctx, double delta), const void *ctx, double *maxdev, int points);
 
 /* The same against the analytic bar's load (ana_bar_load_at), to delta_end. */
 double ver_curve_err_bar(const ana_bar *b, const double *delta, const double *P, size_t n, double delta_end,
-                         double *maxdev);
+                         double *maxdev, int points);
+
+/* The distance of a run's curve from the analytic path, snapback included: in the plane
+ * (delta / delta_peak, P / Pmax), the root-mean-square distance to the analytic curve
+ * (elastic line, softening branch of eq. 34, then P = 0) of points spaced evenly along
+ * the run's polyline from the origin to its first row past the peak with P <= 1 % of
+ * Pmax.  *d5 (if not NULL) gets where the run's load first falls to 5 % of Pmax after
+ * its peak, less the analytic branch's delta there, over delta_peak (NaN if it never
+ * does).  NaN without rows. */
+double ver_curve_path(const ana_bar *b, const double *delta, const double *P, size_t n, double *d5);
 
 /* The same against the bar at the run's own grip speed (ana_wave: the 1-D wave solution
  * with the plane as a cohesive line xg from the grip; docs/verification.md "The exact

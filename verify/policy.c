@@ -318,6 +318,18 @@ static void check_band(ver_case *c, const case_class *q)
    * through the flaw by construction; band width and angle have nothing to measure */
   if (sc->path != MPM_PATH_IFACE)
     check_band_angle(c, q);
+  if (sc->solver == MPM_SOLVER_STATIC && isfinite(c->curve_path)) {
+    /* the static solver's curve is a sequence of equilibrium states: judged as a path in
+     * (delta / delta_peak, P / Pmax), which a snapback's reversal does not break */
+    k = add_check(c, "curve_path", c->curve_path, 0.0, 0);
+    k->tol = a90 ? 0.005 : 0.01;
+    snprintf(k->note, sizeof k->note, "RMS distance of the curve from the analytic path in (delta / delta_peak, "
+             "P / Pmax), to the load's fall below 1 %% of Pmax");
+    k = add_check(c, "delta_5", c->delta5, 0.0, 0);
+    k->tol = 0.05;
+    snprintf(k->note, sizeof k->note, "where the load falls to 5 %% of Pmax after the peak, less the analytic "
+             "branch's delta there, over delta_peak (a snapback moves back to it)");
+  }
   k = add_check(c, "curve_l2", c->curve_l2, 0.0, 0);
   k->tol = ppc1 ? 0.04 : 0.03;
   if (!a90 || lep || snap)

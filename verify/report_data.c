@@ -103,7 +103,7 @@ void ver_report_measure(const rep_ctx *r, rep_case *c)
     mabs = isfinite(P[i]) ? fmax(mabs, fabs(P[i])) : INFINITY;
   c->max_absP = mabs;
   if (n > 0) {
-    c->curve_err = ver_curve_err_bar(b, d, P, (size_t)n, c->cmp_end, &c->max_dev);
+    c->curve_err = ver_curve_err_bar(b, d, P, (size_t)n, c->cmp_end, &c->max_dev, 0);
     const ana_wave_params wp = ver_report_wave_params(c);
     c->curve_wave = ver_curve_err_wave(b, wp.speed, wp.rho, wp.xg, wp.thr, d, P, (size_t)n, c->cmp_end, NULL,
                                        &c->wave_peak);

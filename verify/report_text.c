@@ -332,7 +332,7 @@ static void rate_vars(report *R)
         d[i] = w->cmp_end * (i + 1) / N;
         P[i] = ana_wave_load_at(&a, d[i] - 0.5 * w->cmp_end / N); /* at the interval's midpoint */
       }
-      e = ver_curve_err_bar(&w->bar, d, P, N, w->cmp_end, NULL);
+      e = ver_curve_err_bar(&w->bar, d, P, N, w->cmp_end, NULL, 0);
       ana_wave_free(&a);
     }
     num(R, "rate", "speed", w->speed);

@@ -36,6 +36,8 @@
 #include "run.h"
 #include "separation.h"
 
+#define VER_STATIC_MAX_INC 100000 /* a static run's increments: rows are allocated for them */
+
 /* Opens dir/name under a temporary name for writing; commit_file renames it into place.
  * Either, failing, says which file and why in bad (VER_RUN_BAD bytes), errno kept. */
 #define VER_RUN_BAD 1400
@@ -241,6 +243,7 @@ typedef struct {
   const ver_scene *vs;
   const ver_run_opts *o;
   mpm_sim *s;
+  mpm_static *q;                 /* solver.type = static: the increments' solver, else NULL */
   row *rows;
   long nrow, nmax, every, acc_n;
   double vdt, last_snap, acc_g, acc_f, peak, dpeak;
@@ -259,17 +262,21 @@ static int run_setup(run_state *r, char *err, size_t errlen)
   const mpm_scene *sc = &r->vs->sc;
   r->vdt = sc->speed * sc->dt;
   r->nmax = (long)ceil(sc->end_delta / r->vdt - 1e-9);
+  if (r->q) { /* a row per increment, no time to average the load over */
+    r->vdt = 0.0;
+    r->nmax = VER_STATIC_MAX_INC;
+  }
   /* loading.control = dissipation: the grip may move back for a while, so the steps to
    * end_delta are not known; three times the grip's own budget, and the loop stops at
    * end_delta */
   if (sc->control == MPM_CONTROL_DISSIPATION)
     r->nmax *= 3;
-  r->every = (long)fmax(1.0, floor(r->vs->interval / r->vdt + 0.5));
+  r->every = r->q ? 1 : (long)fmax(1.0, floor(r->vs->interval / r->vdt + 0.5));
   const long nrows_max = r->nmax / r->every + 2;
   r->rows = malloc(sizeof(row) * (size_t)nrows_max);
   /* separation: the load window is 4 L / c in time, in rows (separation.h) */
   const double c = sqrt(sc->E / (1.0 - sc->nu * sc->nu) / sc->rho);
-  const long win = (long)fmax(1.0, ceil(4.0 * sc->L / c / (sc->dt * (double)r->every)));
+  const long win = r->q ? 1 : (long)fmax(1.0, ceil(4.0 * sc->L / c / (sc->dt * (double)r->every)));
   const int sep_ok = ver_sep_init(&r->sep, sc->H, sc->h, sc->ppc, win, r->vs->sep_load_frac) == 0;
   if (!r->rows || !sep_ok) {
     snprintf(err, errlen, "out of memory for %ld output rows", nrows_max);
@@ -391,6 +398,19 @@ static void finish(const run_state *r, ver_summary *u, double w0, double c0)
   u->n_soften = s->n_soften;
   u->n_separate = s->n_separate;
   u->n_bracketed = s->n_bracketed;
+  if (r->q) {
+    mpm_static_stats qs;
+    mpm_static_stats_get(r->q, &qs);
+    u->static_run = 1;
+    u->increments = qs.increments;
+    u->newton = qs.newton;
+    u->factorizations = qs.factorizations;
+    u->cuts = qs.cuts;
+    u->unknowns = qs.unknowns;
+    u->t_eval = qs.t_eval;
+    u->t_factor = qs.t_factor;
+    u->t_solve = qs.t_solve;
+  }
   mpm_energy e;
   mpm_sim_energy(s, &e);
   u->D_final = e.D;
@@ -450,7 +470,7 @@ static int run_loop(run_state *r, ver_summary *u, double w0, char *err, size_t e
     }
     if (o->max_steps > 0 && s->step >= o->max_steps)
       break;
-    const mpm_status st = mpm_sim_step(s, kerr, sizeof kerr);
+    const mpm_status st = r->q ? mpm_static_step(r->q, kerr, sizeof kerr) : mpm_sim_step(s, kerr, sizeof kerr);
     if (st != MPM_OK) {
       snprintf(err, errlen, "%s: %s: %s", r->id, mpm_strerror(st), kerr);
       u->status = st;
@@ -464,9 +484,9 @@ static int run_loop(run_state *r, ver_summary *u, double w0, char *err, size_t e
     if (!rc && u->delta_sep >= 0 && r->vs->stop_margin > 0 && delta >= u->delta_sep + r->vs->stop_margin &&
         delta >= r->last_snap)
       break;
-    if (s->sc.control == MPM_CONTROL_DISSIPATION && delta >= s->sc.end_delta - 0.5 * r->vdt)
+    if ((r->q || s->sc.control == MPM_CONTROL_DISSIPATION) && delta >= s->sc.end_delta - 0.5 * r->vdt)
       break;
-    if (show && (s->step & 255) == 0 && ver_now_wall() > next_show) {
+    if (show && (r->q || (s->step & 255) == 0) && ver_now_wall() > next_show) {
       next_show = ver_now_wall() + 0.5;
       fprintf(stderr, "\r%s: delta %.4f / %.4f  step %ld  P %.3f  [%.1f s]   ", r->id, delta, r->vs->sc.end_delta,
               s->step, s->P_grip, ver_now_wall() - w0);
@@ -517,6 +537,14 @@ int ver_run(const ver_scene *vs, const ver_run_opts *o, ver_summary *u, char *er
     snprintf(err, errlen, "%s: %s", vs->path, kerr);
     return st == MPM_EINVAL ? 2 : 1;
   }
+  if (vs->sc.solver == MPM_SOLVER_STATIC) {
+    const mpm_status qst = mpm_static_alloc(r.s, &r.q, kerr, sizeof kerr);
+    if (qst != MPM_OK) {
+      snprintf(err, errlen, "%s: %s", vs->path, kerr);
+      mpm_sim_free(r.s);
+      return qst == MPM_EINVAL ? 2 : 1;
+    }
+  }
   int lock = -1, prc = o->write_files ? prepare_outdir(o->outdir, &lock, err, errlen) : 0;
   if (!prc && o->write_files && write_scene_ini(vs, o->outdir) != 0) {
     snprintf(err, errlen, "%s/scene.ini: cannot write: %s", o->outdir, strerror(errno));
@@ -525,6 +553,7 @@ int ver_run(const ver_scene *vs, const ver_run_opts *o, ver_summary *u, char *er
   if (prc) {
     if (lock >= 0)
       close(lock);
+    mpm_static_free(r.q);
     mpm_sim_free(r.s);
     return prc;
   }
@@ -540,6 +569,7 @@ int ver_run(const ver_scene *vs, const ver_run_opts *o, ver_summary *u, char *er
   }
   free(r.rows);
   ver_sep_free(&r.sep);
+  mpm_static_free(r.q);
   mpm_sim_free(r.s);
   if (lock >= 0)
     close(lock); /* after summary.json: the folder is the next writer's */

@@ -40,7 +40,7 @@ const keydef ver_scene_keys[] = {
   {"decohesion", "U0", K_DBL, OFF(U0), 2, 0, 0, LO_OPEN, 0, "> 0"},
   {"decohesion", "s0", K_DBL, OFF(s0), 0, 0, 0, LO_OPEN, -1, "> 0 (default: snf)"},
   {"decohesion", "q", K_DBL, OFF(q), 2, 0, 0, LO_OPEN, 0, "> 0"},
-  {"decohesion", "separation", K_DBL, OFF(sep_threshold), 0, 0, 1, LO_OPEN | HI_CLOSED, 0.98, "in (0, 1]"},
+  {"decohesion", "separation", K_DBL, OFF(sep_threshold), 0, 0, 1, LO_OPEN | HI_CLOSED, 0.98, "in (0, 1] (default 0.98; 1 with solver.type = static)"},
   {"decohesion", "eta", K_DBL, OFF(eta), 0, 0, 1e6, LO_CLOSED | HI_CLOSED, 0, "in [0, 1e6]: viscosity, a time (0: the paper's rate-independent law)"},
   {"decohesion", "Le", K_LE, OFF(le_mode), 0, 0, 0, 0, MPM_LE_CELL, "cell, particle, staircase, row or zone"},
   {"decohesion", "Le_factor", K_DBL, OFF(le_factor), 0, 0, 100, LO_OPEN | HI_CLOSED, 1.0, "in (0, 100]: Le times this"},
@@ -79,6 +79,7 @@ const keydef ver_scene_keys[] = {
   {"run", "end_delta", K_DBL, OFF(end_delta), 3, 0, 0, LO_OPEN, 0, "> 0 (default with vibration.mode > 0: vibration.periods periods)"},
   {"run", "stop_margin", K_DBL, VOFF(stop_margin), 0, 0, 0, LO_CLOSED, 0.1, ">= 0 (0: run to end_delta)"},
   {"run", "sep_load", K_DBL, VOFF(sep_load_frac), 0, 0, 1, LO_OPEN | HI_OPEN, 0.02, "in (0, 1)"},
+  {"solver", "type", K_SOLVER, OFF(solver), 0, 0, 0, 0, MPM_SOLVER_EXPLICIT, "explicit (the paper's dynamic step at loading.speed) or static (load increments in equilibrium, path-following through a snapback; time.* and loading.speed unused)"},
   {"output", "snapshots", K_LIST, 0, 0, 0, 0, LO_CLOSED, 0, "a comma-separated list of end displacements >= 0"},
   {"output", "interval", K_DBL, 0, 0, 0, 0, LO_OPEN, -1, "> 0 (default: 0.0005)"},
 };
@@ -108,6 +109,7 @@ static const struct {
   {K_SHAPE, "linear", MPM_SHAPE_LINEAR}, {K_SHAPE, "gimp", MPM_SHAPE_GIMP},
   {K_FIELDS, "one", MPM_FIELDS_ONE}, {K_FIELDS, "two", MPM_FIELDS_TWO},
   {K_NODEMASS, "lumped", MPM_NODEMASS_LUMPED}, {K_NODEMASS, "limited", MPM_NODEMASS_LIMITED},
+  {K_SOLVER, "explicit", MPM_SOLVER_EXPLICIT}, {K_SOLVER, "static", MPM_SOLVER_STATIC},
 };
 #define NENUMS (sizeof ENUMS / sizeof ENUMS[0])
 

@@ -15,7 +15,7 @@
 #include "mpm.h"
 
 #define VER_MAX_SNAP 16
-#define VER_NKEYS 52
+#define VER_NKEYS 53
 #define VER_NSECT 12
 #define VER_MAX_OVER 32
 

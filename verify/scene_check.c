@@ -54,6 +54,11 @@ static int check_present(ver_scene *vs, char *err, size_t errlen)
   }
   if (!vs->seen[ver_scene_key_idx("decohesion", "s0")])
     sc->s0 = sc->snf;
+  /* The static solver separates where the traction has gone (lambda 1): an equilibrium
+   * path cannot cross the jump that dropping the last 2 % of it at 0.98 makes (the
+   * explicit step's default; docs/static.md) */
+  if (sc->solver == MPM_SOLVER_STATIC && !vs->seen[ver_scene_key_idx("decohesion", "separation")])
+    sc->sep_threshold = 1.0;
   if (!vs->seen[ver_scene_key_idx("imperfection", "x")])
     sc->imp_x = 0.5 * sc->L;
   if (!vs->seen[ver_scene_key_idx("imperfection", "y")])

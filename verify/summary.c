@@ -57,6 +57,13 @@ static const struct {
   {"wall_s", offsetof(ver_summary, wall_s), F_DBL},
   {"cpu_s", offsetof(ver_summary, cpu_s), F_DBL},
   {"updates_per_s", offsetof(ver_summary, updates_per_s), F_DBL},
+  {"increments", offsetof(ver_summary, increments), F_LONG},
+  {"newton", offsetof(ver_summary, newton), F_LONG},
+  {"factorizations", offsetof(ver_summary, factorizations), F_LONG},
+  {"cuts", offsetof(ver_summary, cuts), F_LONG},
+  {"t_eval", offsetof(ver_summary, t_eval), F_DBL},
+  {"t_factor", offsetof(ver_summary, t_factor), F_DBL},
+  {"t_solve", offsetof(ver_summary, t_solve), F_DBL},
 };
 #define NNUMS (sizeof NUMS / sizeof NUMS[0])
 
@@ -78,6 +85,7 @@ int ver_summary_write(const char *dir, const ver_scene *vs, const ver_summary *u
   cJSON_AddStringToObject(o, "scheme", ver_scene_word(vs, "time", "scheme"));
   cJSON_AddStringToObject(o, "bc", ver_scene_word(vs, "grid", "bc"));
   cJSON_AddStringToObject(o, "shape", ver_scene_word(vs, "grid", "shape"));
+  cJSON_AddStringToObject(o, "solver", ver_scene_word(vs, "solver", "type"));
   cJSON_AddNumberToObject(o, "separation_threshold", vs->sc.sep_threshold);
   cJSON_AddNumberToObject(o, "damping", vs->sc.damping);
   cJSON_AddNumberToObject(o, "damping_beta", vs->sc.damping_beta);

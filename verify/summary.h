@@ -41,6 +41,12 @@ typedef struct {
   int threads_max;               /* the most threads a step could use                */
   long steps_multi;              /* steps that ran on more than one thread           */
   long probes, probes_busy;      /* thread probes made; skipped for want of an idle core */
+  /* solver.type = static (kernel/mpm_static.c): its work; 0 for an explicit run */
+  int static_run;                /* 1 for the static solver                           */
+  long increments, newton, factorizations, cuts; /* load increments, Newton iterations,
+                                    LU factorizations, increments retried smaller   */
+  int unknowns;                  /* free degrees of freedom                          */
+  double t_eval, t_factor, t_solve; /* seconds: laws and assembly, factorization, solves */
 } ver_summary;
 
 /* The ledger's booked losses at the end (the seven columns after D in energy.csv); a

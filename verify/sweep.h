@@ -62,6 +62,8 @@ typedef struct {
   double W_scheme;             /* of those, the discretisation's own: L_bc + L_flip + L_scheme;
                                   NaN without those columns */
   double k_soft, curve_l2, band_width, band_extent, angle;
+  double curve_path, delta5; /* static runs: distance from the analytic path and where the
+                                load falls to 5 % of the peak (ver_curve_path); NaN otherwise */
   double curve_wave; /* the curve error against the bar at the run's grip speed (ver_case_wave) */
   double wave_peak;  /* that solution's peak load (ver_case_wave; NaN where it does not apply) */
   double D_diffuse;  /* dissipation outside the band, over U0 x area (ver_diffuse_share) */

@@ -282,6 +282,7 @@ void ver_case_read(const ver_verify_opts *o, ver_case *c)
   c->D_final = c->W_ext_final = c->energy_residual = c->energy_unbooked = c->delta_end = NAN;
   c->W_booked = 0.0;
   c->W_scheme = NAN;
+  c->curve_path = c->delta5 = NAN;
   c->k_soft = c->curve_l2 = c->curve_wave = c->wave_peak = c->band_width = c->band_extent = c->angle = c->D_diffuse = c->P_after = c->P_after_t = c->P_after_c = NAN;
   ver_summary_doc sd;
   if (ver_summary_read(dir, &sd) == 0) {
@@ -332,7 +333,9 @@ void ver_case_read(const ver_verify_opts *o, ver_case *c)
   const long nl = ver_csv_read(path, lcols, 2, lc);
   if (nl > 0 && c->have_ana) {
     c->k_soft = ver_softening_slope(lc[0], lc[1], (size_t)nl, VER_SOFT_HI, VER_SOFT_LO);
-    c->curve_l2 = ver_curve_err_bar(&c->ana, lc[0], lc[1], (size_t)nl, ver_curve_end(&c->ana, c->vs.sc.sep_threshold), NULL);
+    const int pts = c->vs.sc.solver == MPM_SOLVER_STATIC;
+    c->curve_l2 = ver_curve_err_bar(&c->ana, lc[0], lc[1], (size_t)nl, ver_curve_end(&c->ana, c->vs.sc.sep_threshold), NULL, pts);
+    c->curve_path = pts ? ver_curve_path(&c->ana, lc[0], lc[1], (size_t)nl, &c->delta5) : NAN;
     ver_case_wave(c, lc[0], lc[1], (size_t)nl);
   }
   if (nl > 0)

@@ -10,6 +10,8 @@
  *  - the flow directions of eqs. 24 (Model 1) and 26 (Model 2) evaluated here;
  *  - the decisions in the header of mpm_decohesion.c: Macaulay bracket, contact of a
  *    separated particle, purity, and the reversed-shear option (closing).
+ * The algorithmic tangent mpm_dcoh_tangent is checked against central differences of
+ * mpm_dcoh_update on every path (and against the closed form of a Mode I band).
  * Material (the paper's Fig. 6 data): E 1024, nu 0.25, rho 1, U0 0.375, s0 1,
  * separation threshold 0.98, Le 8 (one cell of the Fig. 6 grid).
  */
@@ -714,6 +716,369 @@ static void test_mpm_decohesion_not_finite_default_gsl_handler(void **state)
   assert_int_equal(WEXITSTATUS(status), 0);
 }
 
+/* ---- the algorithmic tangent mpm_dcoh_tangent ---- */
+
+/* A stress given in the n-t frame of plane alpha, as (sxx, syy, sxy):
+ * sigma = snn n n + stt t t + snt (n t + t n). */
+static mpm_dstate nt_state(double alpha_deg, double snn, double stt, double snt, double lam, double upn,
+                           double upt, int sep)
+{
+  const double a = alpha_deg * PI / 180.0;
+  const double nx = sin(a), ny = -cos(a), tx = cos(a), ty = sin(a);
+  mpm_dstate s = zero_state();
+  s.sxx = snn * nx * nx + stt * tx * tx + 2.0 * snt * nx * tx;
+  s.syy = snn * ny * ny + stt * ty * ty + 2.0 * snt * ny * ty;
+  s.sxy = snn * nx * ny + stt * tx * ty + snt * (nx * ty + ny * tx);
+  s.lam = lam;
+  s.upn = upn;
+  s.upt = upt;
+  s.sep = sep;
+  return s;
+}
+
+/* Drives a particle from rest by increments de0 until lambda reaches lam_min, or to its
+ * last softening step before separation; fails unless it softened in that last step. */
+static mpm_dstate soften_to(const mpm_material *m, const double de0[3], double lam_min, mpm_dwork *w)
+{
+  mpm_dstate s = zero_state();
+  mpm_dinfo info = {.path = MPM_DPATH_ELASTIC};
+  for (int k = 0; k < 100000 && s.lam < lam_min; k++) {
+    mpm_dstate next = s;
+    mpm_dinfo ni;
+    step(m, &next, de0, &ni, w);
+    if (next.sep)
+      break;
+    s = next;
+    info = ni;
+  }
+  if (s.lam == 0.0 || info.path != MPM_DPATH_SOFTEN)
+    fail_msg("soften_to: lambda %g, path %d", s.lam, info.path);
+  return s;
+}
+
+/*
+ * D of mpm_dcoh_tangent against central differences of mpm_dcoh_update at (in, de):
+ * step h = 1e-7 x the strain scale (the largest of |de| and |sigma_in| / E1); every
+ * evaluation must take the path `path`.  Fails when the largest error passes 1e-5 of the
+ * largest entry of D; returns that relative error (reported as a TAP comment).
+ */
+static double fd_check(const mpm_material *m, const mpm_dstate *in, const double de[3], int path,
+                       const char *what, mpm_dwork *w)
+{
+  double D[3][3], L[3];
+  assert_int_equal(mpm_dcoh_tangent(m, in, de, D, L, w), MPM_OK);
+  mpm_dstate o;
+  mpm_dinfo info;
+  assert_int_equal(mpm_dcoh_update(m, in, de, &o, &info, w), MPM_OK);
+  if (info.path != path)
+    fail_msg("%s: path %d, want %d", what, info.path, path);
+  double scale = fmax(fmax(fabs(de[0]), fabs(de[1])), fabs(de[2]));
+  scale = fmax(scale, fmax(fmax(fabs(in->sxx), fabs(in->syy)), fabs(in->sxy)) / m->E1);
+  const double h = 1e-7 * scale;
+  double err = 0.0, dmax = 0.0, lerr = 0.0, lmax = 0.0;
+  for (int j = 0; j < 3; j++) {
+    double dp[3] = {de[0], de[1], de[2]}, dm[3] = {de[0], de[1], de[2]};
+    dp[j] += h;
+    dm[j] -= h;
+    mpm_dstate op, om;
+    mpm_dinfo ip, im;
+    assert_int_equal(mpm_dcoh_update(m, in, dp, &op, &ip, w), MPM_OK);
+    assert_int_equal(mpm_dcoh_update(m, in, dm, &om, &im, w), MPM_OK);
+    if (ip.path != path || im.path != path)
+      fail_msg("%s: de[%d] +- h changes the path (%d, %d; want %d)", what, j, ip.path, im.path, path);
+    const double fd[3] = {(op.sxx - om.sxx) / (2.0 * h), (op.syy - om.syy) / (2.0 * h),
+                          (op.sxy - om.sxy) / (2.0 * h)};
+    for (int i = 0; i < 3; i++) {
+      err = fmax(err, fabs(D[i][j] - fd[i]));
+      dmax = fmax(dmax, fabs(D[i][j]));
+    }
+    /* d lambda / d de, the static solver's dissipation control, on the same differences */
+    const double fl = (op.lam - om.lam) / (2.0 * h);
+    lerr = fmax(lerr, fabs(L[j] - fl));
+    lmax = fmax(lmax, fabs(fl));
+  }
+  if (lmax > 0.0 && !(lerr < 1e-5 * lmax))
+    fail_msg("%s: d lambda / d de vs central differences: abs err %.3g (max %g)", what, lerr, lmax);
+  if (lmax == 0.0 && !(lerr == 0.0))
+    fail_msg("%s: d lambda / d de is %g where lambda does not move", what, lerr);
+  const double rel = err / dmax;
+  print_message("# tangent vs FD, %s: rel err %.2e (max |D| %.4g)\n", what, rel, dmax);
+  if (!(rel < 1e-5))
+    fail_msg("%s: tangent vs central differences: rel err %.3g (max |D| %g)", what, rel, dmax);
+  return rel;
+}
+
+/* Elastic: D = C (from E and nu) exactly, symmetric, and FD agrees; also model NONE. */
+static void test_mpm_decohesion_tangent_elastic(void **state)
+{
+  (void)state;
+  mpm_dwork *w = mpm_dwork_alloc();
+  const double E = 1024.0, nu = 0.25;
+  const double alphas[] = {90.0, 60.0, 0.0};
+  for (size_t ia = 0; ia < 3; ia++) {
+    const mpm_material m = make_mat(MPM_DCOH_MODEL1, alphas[ia], 1.0, 2.0, 1.0, 1.0);
+    const mpm_dstate in = nt_state(alphas[ia], 0.3, -0.5, 0.2, 0.1, 0.01, 0.0, 0);
+    const double de[3] = {1e-4, -2e-4, 5e-5};
+    fd_check(&m, &in, de, MPM_DPATH_ELASTIC, "elastic", w);
+    double D[3][3];
+    assert_int_equal(mpm_dcoh_tangent(&m, &in, de, D, NULL, w), MPM_OK);
+    for (int j = 0; j < 3; j++) {
+      double e[3] = {0.0, 0.0, 0.0}, c[3];
+      e[j] = 1.0;
+      C_apply(E, nu, e, c);
+      for (int i = 0; i < 3; i++)
+        assert_rel(D[i][j], c[i], 1e-14, "elastic D = C");
+    }
+  }
+  const mpm_material m0 = make_mat(MPM_DCOH_NONE, 60.0, 1.0, 2.0, 1.0, 1.0);
+  const mpm_dstate z = zero_state();
+  const double big[3] = {0.01, 0.0, 0.003};
+  fd_check(&m0, &z, big, MPM_DPATH_ELASTIC, "model NONE", w);
+  mpm_dwork_free(w);
+}
+
+/* Sanity: the elastic D is symmetric (plane-stress C with tensor shear). */
+static void test_mpm_decohesion_tangent_elastic_symmetric(void **state)
+{
+  (void)state;
+  mpm_dwork *w = mpm_dwork_alloc();
+  const mpm_material m = make_mat(MPM_DCOH_MODEL2, 30.0, 1.0, 2.0, 1.0, 0.8);
+  const mpm_dstate in = zero_state();
+  const double de[3] = {2e-4, 1e-4, -1e-4};
+  double D[3][3];
+  assert_int_equal(mpm_dcoh_tangent(&m, &in, de, D, NULL, w), MPM_OK);
+  for (int i = 0; i < 3; i++)
+    for (int j = 0; j < i; j++)
+      assert_true(D[i][j] == D[j][i]);
+  mpm_dwork_free(w);
+}
+
+/*
+ * Softening (mixed loading, alpha 60, snf 1, stf 2): Model 1 and Model 2, q = 1, 0.8, 1.2,
+ * eta/dt = 0 and 5, from a particle on the softening branch (lambda about 0.3; 0.04 for
+ * Model 2) with a
+ * mixed increment, and from a particle at rest with one large increment that crosses
+ * from elastic into softening (a static load step).
+ */
+static void test_mpm_decohesion_tangent_softening(void **state)
+{
+  (void)state;
+  mpm_dwork *w = mpm_dwork_alloc();
+  const int models[] = {MPM_DCOH_MODEL1, MPM_DCOH_MODEL2};
+  const double qs[] = {1.0, 0.8, 1.2}, viscs[] = {0.0, 5.0};
+  for (int im = 0; im < 2; im++)
+    for (int iq = 0; iq < 3; iq++)
+      for (int iv = 0; iv < 2; iv++) {
+        mpm_material m = make_mat(models[im], 60.0, 1.0, 2.0, 1.0, qs[iq]);
+        m.visc = viscs[iv];
+        char what[120];
+        /* on the branch: small mixed increment */
+        const double de0[3] = {2e-5, -0.25 * 2e-5, 0.0};
+        /* Model 2 keeps the shear (eq. 26): on this path no root exists past lambda
+         * about 0.09 and it separates there */
+        const double lam_at = models[im] == MPM_DCOH_MODEL2 ? 0.04 : 0.3;
+        const mpm_dstate in = soften_to(&m, de0, lam_at, w);
+        assert_true(in.lam >= lam_at);
+        const double de[3] = {3e-5, -1e-5, 1e-5};
+        snprintf(what, sizeof what, "softening, model %d q %g visc %g", models[im], qs[iq], viscs[iv]);
+        fd_check(&m, &in, de, MPM_DPATH_SOFTEN, what, w);
+        /* from rest, one large step: the trial is 1.3 x past initiation (se = 1 at
+         * de = 1.3^-1 of it), the start elastic */
+        const mpm_dstate z = zero_state();
+        const double a = 60.0 * PI / 180.0, nx = sin(a), ny = -cos(a), tx = cos(a), ty = sin(a);
+        /* target traction se = 1.3 at lambda 0: sn/snf = 1.3 x 0.8, st/stf = 1.3 x 0.6; for
+         * Model 2, whose shear never relaxes (no root once st/stf > 1 - lambda), st/stf = 0.3 */
+        const double sn = models[im] == MPM_DCOH_MODEL2 ? sqrt(1.3 * 1.3 - 0.09) : 1.3 * 0.8;
+        const double st = models[im] == MPM_DCOH_MODEL2 ? 0.3 * 2.0 : 1.3 * 0.6 * 2.0;
+        const double sig[3] = {sn * nx * nx + 2.0 * st * nx * tx, sn * ny * ny + 2.0 * st * ny * ty,
+                               sn * nx * ny + st * (nx * ty + ny * tx)};
+        const double E = 1024.0, nu = 0.25, G = E / (2.0 * (1.0 + nu));
+        const double big[3] = {(sig[0] - nu * sig[1]) / E, (sig[1] - nu * sig[0]) / E, sig[2] / (2.0 * G)};
+        assert_true(mpm_dcoh_F(&m, z.sxx, z.syy, z.sxy, z.lam) < 0.0);
+        snprintf(what, sizeof what, "large step from rest, model %d q %g visc %g", models[im], qs[iq], viscs[iv]);
+        fd_check(&m, &z, big, MPM_DPATH_SOFTEN, what, w);
+        /* from an elastic state on the unloaded branch (lambda 0.3, F < 0) */
+        const mpm_dstate un = nt_state(60.0, 0.2, 0.1, 0.3, 0.3, 0.05, 0.02, 0);
+        assert_true(mpm_dcoh_F(&m, un.sxx, un.syy, un.sxy, un.lam) < 0.0);
+        snprintf(what, sizeof what, "large step from unloaded, model %d q %g visc %g", models[im], qs[iq],
+                 viscs[iv]);
+        fd_check(&m, &un, big, MPM_DPATH_SOFTEN, what, w);
+        /* Model 1 without overstress: the step along the direction frozen at the trial
+         * carries s_nn past 0 (a tensile trial ends in compression), where <sn> leaves se
+         * to the shear alone; the tangent there reaches 5 E1 in size */
+        mpm_dstate o;
+        mpm_dinfo info;
+        assert_int_equal(mpm_dcoh_update(&m, &un, big, &o, &info, w), MPM_OK);
+        double sn_o, st_o;
+        traction(60.0, o.sxx, o.syy, o.sxy, &sn_o, &st_o);
+        print_message("#   s_nn after it: %.4g\n", sn_o);
+        if (models[im] == MPM_DCOH_MODEL1 && viscs[iv] == 0.0)
+          assert_true(sn_o < 0.0);
+      }
+  mpm_dwork_free(w);
+}
+
+/*
+ * Mode I closed form, alpha 90 (n = x, t = y), Model 1, q 1, eta 0, no shear.  With one
+ * traction component the flow direction is constant, m* = (s0/snf) n, so the step is
+ * linear: s_nn = sn_tr - B dl with B = E1 (ubar0/Le)(s0/snf) (eqs. 39-41), and F = 0
+ * (eq. 23) gives (sn_tr - B dl)/snf = 1 - lambda - dl, i.e. dl = (sn_tr - snf(1 - lambda))
+ * / (B - snf).  With sn_tr = sxx_in + E1 dexx + E2 deyy and s_tt = s_tt_tr - (E2/E1) B dl:
+ *   d sxx/d dexx = -E1 snf/(B - snf)   (uniaxial strain in n: the band's softening slope)
+ *   d sxx/d deyy = d syy/d dexx = -E2 snf/(B - snf)
+ *   d syy/d deyy = E1 - (E2^2/E1) B/(B - snf)
+ * and along de = (1, -nu, 0) (drive_opening's path) d sxx = -E snf/(B - snf) per unit dexx.
+ */
+static void test_mpm_decohesion_tangent_mode1_closed_form(void **state)
+{
+  (void)state;
+  mpm_dwork *w = mpm_dwork_alloc();
+  const double E = 1024.0, nu = 0.25, E1 = E / (1.0 - nu * nu), E2 = nu * E1, snf = 1.0;
+  const mpm_material m = make_mat(MPM_DCOH_MODEL1, 90.0, snf, 10.0, 1.0, 1.0);
+  const double B = E1 * (0.375 / LE) * (1.0 / snf); /* 51.2 */
+  const double de0[3] = {1e-4, -nu * 1e-4, 0.0};
+  const mpm_dstate in = soften_to(&m, de0, 0.3, w);
+  const double de[3] = {1e-5, 0.0, 0.0};
+  fd_check(&m, &in, de, MPM_DPATH_SOFTEN, "Mode I, alpha 90", w);
+  double D[3][3];
+  assert_int_equal(mpm_dcoh_tangent(&m, &in, de, D, NULL, w), MPM_OK);
+  assert_rel(D[0][0], -E1 * snf / (B - snf), 1e-10, "Mode I: d sxx / d dexx = -E1 snf / (B - snf)");
+  assert_rel(D[0][1], -E2 * snf / (B - snf), 1e-10, "Mode I: d sxx / d deyy");
+  assert_rel(D[1][0], -E2 * snf / (B - snf), 1e-10, "Mode I: d syy / d dexx");
+  assert_rel(D[1][1], E1 - E2 * E2 / E1 * B / (B - snf), 1e-10, "Mode I: d syy / d deyy");
+  assert_rel(D[0][0] - nu * D[0][1], -E * snf / (B - snf), 1e-10, "Mode I: slope along (1, -nu, 0)");
+  mpm_dwork_free(w);
+}
+
+/*
+ * Separation (eqs. 56-58): the separating step (lambda about 0.9 on the branch, then
+ * an increment that takes it past the threshold), a separated particle opening further,
+ * and a separated particle in compression both while its opening closes and once
+ * contact engages (the closing stops at shut and s_nn follows the trial).
+ */
+static void test_mpm_decohesion_tangent_separation(void **state)
+{
+  (void)state;
+  mpm_dwork *w = mpm_dwork_alloc();
+  const double alphas[] = {60.0, 90.0};
+  for (int ia = 0; ia < 2; ia++) {
+    const double alpha = alphas[ia];
+    const mpm_material m = make_mat(MPM_DCOH_MODEL1, alpha, 1.0, 2.0, 1.0, 1.0);
+    char what[120];
+    const double de0[3] = {2e-5, -0.25 * 2e-5, 0.0};
+    const mpm_dstate in = soften_to(&m, de0, 0.9, w);
+    const double de[3] = {2e-3, -5e-4, 4e-4};
+    snprintf(what, sizeof what, "separating step, alpha %g", alpha);
+    fd_check(&m, &in, de, MPM_DPATH_SEPARATE, what, w);
+    /* separated, opening */
+    const mpm_dstate open = nt_state(alpha, 0.0, 0.4, 0.0, 1.1, 0.3, 0.05, 1);
+    const double dt[3] = {1e-4, -2e-5, 3e-5};
+    snprintf(what, sizeof what, "separated, opening, alpha %g", alpha);
+    fd_check(&m, &open, dt, MPM_DPATH_OPEN, what, w);
+    /* separated, compressed, the opening not yet shut: s_nn stays 0 */
+    const double dc[3] = {-1e-4, 2e-5, 5e-5};
+    mpm_dstate o;
+    mpm_dinfo info;
+    snprintf(what, sizeof what, "separated, closing, alpha %g", alpha);
+    fd_check(&m, &open, dc, MPM_DPATH_OPEN, what, w);
+    assert_int_equal(mpm_dcoh_update(&m, &open, dc, &o, &info, w), MPM_OK);
+    assert_true(o.upn > 0.0 && o.upn < open.upn);
+    /* separated and shut (upn 0), compressed: contact */
+    const mpm_dstate shut = nt_state(alpha, -0.5, 0.4, 0.0, 1.1, 0.0, 0.05, 1);
+    snprintf(what, sizeof what, "separated, contact, alpha %g", alpha);
+    fd_check(&m, &shut, dc, MPM_DPATH_OPEN, what, w);
+    assert_int_equal(mpm_dcoh_update(&m, &shut, dc, &o, &info, w), MPM_OK);
+    assert_true(o.upn == 0.0);
+    /* a nearly shut opening that a large compressive step closes: contact too */
+    const mpm_dstate near = nt_state(alpha, 0.0, 0.4, 0.0, 1.1, 1e-3, 0.05, 1);
+    const double dbig[3] = {-2e-3, 4e-4, 1e-3};
+    snprintf(what, sizeof what, "separated, closes into contact, alpha %g", alpha);
+    fd_check(&m, &near, dbig, MPM_DPATH_OPEN, what, w);
+    assert_int_equal(mpm_dcoh_update(&m, &near, dbig, &o, &info, w), MPM_OK);
+    assert_true(o.upn == 0.0);
+  }
+  mpm_dwork_free(w);
+}
+
+/*
+ * decohesion.reversed_shear = closing: a part-softened particle with slip upt > 0 under
+ * normal tension and reversed shear (s_nt < 0): the shear leaves eq. 23 and stays
+ * elastic while the normal traction softens.  The same state under the paper's rule
+ * (even) softens in both components.
+ */
+static void test_mpm_decohesion_tangent_closing(void **state)
+{
+  (void)state;
+  mpm_dwork *w = mpm_dwork_alloc();
+  const double E = 1024.0, nu = 0.25, G = E / (2.0 * (1.0 + nu));
+  const int models[] = {MPM_DCOH_MODEL1, MPM_DCOH_MODEL2};
+  for (int im = 0; im < 2; im++)
+    for (int rule = MPM_SHEAR_EVEN; rule <= MPM_SHEAR_CLOSING; rule++) {
+      mpm_scene sc = base_scene(models[im], 60.0, 1.0, 2.0, 1.0, 1.0);
+      sc.reversed_shear = rule;
+      mpm_material m;
+      mpm_material_init(&m, &sc, 1.0, LE);
+      const mpm_dstate in = nt_state(60.0, 0.6, 0.2, -0.5, 0.3, 0.05, 0.04, 0);
+      /* push s_nn past the strength 0.7, keep s_nt < 0 */
+      const double de[3] = {2e-4, -5e-5, 1e-5};
+      char what[120];
+      snprintf(what, sizeof what, "reversed shear %s, model %d", rule == MPM_SHEAR_CLOSING ? "closing" : "even",
+               models[im]);
+      fd_check(&m, &in, de, MPM_DPATH_SOFTEN, what, w);
+      mpm_dstate o;
+      mpm_dinfo info;
+      assert_int_equal(mpm_dcoh_update(&m, &in, de, &o, &info, w), MPM_OK);
+      double sn, st, sn0, st0;
+      traction(60.0, o.sxx, o.syy, o.sxy, &sn, &st);
+      traction(60.0, in.sxx, in.syy, in.sxy, &sn0, &st0);
+      const double a = 60.0 * PI / 180.0, dent = de[0] * sin(a) * cos(a) + de[1] * (-cos(a)) * sin(a) +
+                                                 de[2] * (sin(a) * sin(a) - cos(a) * cos(a));
+      assert_true(st < 0.0);
+      if (rule == MPM_SHEAR_CLOSING) {
+        assert_abs(st, st0 + 2.0 * G * dent, 1e-10, "closing: s_nt elastic");
+        assert_true(o.upt == in.upt);
+      } else if (models[im] == MPM_DCOH_MODEL1) {
+        assert_true(o.upt < in.upt); /* even: the slip runs back */
+      }
+    }
+  mpm_dwork_free(w);
+}
+
+/*
+ * Shear under normal compression (alpha 60, stf 2, lambda 0.3): the Macaulay bracket
+ * (eq. 23 with <sn>) leaves s_nn out of se and of the flow direction, so Model 1 softens
+ * in shear alone and s_nn follows the trial; Model 2 (eq. 26, flow along n only) has no
+ * root and separates in its step, in contact (the small opening shuts).
+ */
+static void test_mpm_decohesion_tangent_compression(void **state)
+{
+  (void)state;
+  mpm_dwork *w = mpm_dwork_alloc();
+  const double a = 60.0 * PI / 180.0, nx = sin(a), ny = -cos(a), tx = cos(a), ty = sin(a);
+  /* e_nt = 2e-4 (s_nt 1.3 -> 1.46, past stf (1 - lambda) = 1.4) and e_nn = -5e-5 */
+  const double ent = 2e-4, enn = -5e-5;
+  const double de[3] = {enn * nx * nx + 2.0 * ent * nx * tx, enn * ny * ny + 2.0 * ent * ny * ty,
+                        enn * nx * ny + ent * (nx * ty + ny * tx)};
+  const mpm_dstate in = nt_state(60.0, -0.3, 0.1, 1.3, 0.3, 1e-3, 0.1, 0);
+  const mpm_material m1 = make_mat(MPM_DCOH_MODEL1, 60.0, 1.0, 2.0, 1.0, 1.0);
+  fd_check(&m1, &in, de, MPM_DPATH_SOFTEN, "shear softening under compression, model 1", w);
+  mpm_dstate o;
+  mpm_dinfo info;
+  assert_int_equal(mpm_dcoh_update(&m1, &in, de, &o, &info, w), MPM_OK);
+  double sn, st, sn_tr, st_tr;
+  double dsig[3];
+  C_apply(1024.0, 0.25, de, dsig);
+  traction(60.0, o.sxx, o.syy, o.sxy, &sn, &st);
+  traction(60.0, in.sxx + dsig[0], in.syy + dsig[1], in.sxy + dsig[2], &sn_tr, &st_tr);
+  assert_true(sn_tr < 0.0 && o.lam > in.lam);
+  assert_abs(sn, sn_tr, 1e-12, "<sn> = 0: s_nn follows the trial");
+  const mpm_material m2 = make_mat(MPM_DCOH_MODEL2, 60.0, 1.0, 2.0, 1.0, 1.0);
+  fd_check(&m2, &in, de, MPM_DPATH_SEPARATE, "separating step in contact, model 2", w);
+  assert_int_equal(mpm_dcoh_update(&m2, &in, de, &o, &info, w), MPM_OK);
+  assert_true(o.upn == 0.0);
+  mpm_dwork_free(w);
+}
+
 int main(void)
 {
   const struct CMUnitTest tests[] = {
@@ -730,6 +1095,13 @@ int main(void)
       cmocka_unit_test(test_mpm_decohesion_pure_function),
       cmocka_unit_test(test_mpm_decohesion_not_finite),
       cmocka_unit_test(test_mpm_decohesion_not_finite_default_gsl_handler),
+      cmocka_unit_test(test_mpm_decohesion_tangent_elastic),
+      cmocka_unit_test(test_mpm_decohesion_tangent_elastic_symmetric),
+      cmocka_unit_test(test_mpm_decohesion_tangent_softening),
+      cmocka_unit_test(test_mpm_decohesion_tangent_mode1_closed_form),
+      cmocka_unit_test(test_mpm_decohesion_tangent_separation),
+      cmocka_unit_test(test_mpm_decohesion_tangent_closing),
+      cmocka_unit_test(test_mpm_decohesion_tangent_compression),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

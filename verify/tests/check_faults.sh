@@ -10,8 +10,8 @@
 #                the work from the load curve's area), a delta that steps back by 2.0
 #                under grip control, an energy.csv cut to its first tenth, a NUL or a
 #                control byte are refused with exit 2 and the reason (row and column
-#                for the bytes); the same step back under dissipation control is
-#                judged; an energy.csv of every 10th row is judged, its D dated by t;
+#                for the bytes); a step back under dissipation control or from the
+#                static solver (which follows a snapback) is judged; an energy.csv of every 10th row is judged, its D dated by t;
 #                2,000,000 rows are judged within 10 s.
 #   writer-*     one writer per output folder: a second run into a folder a first run
 #                is writing exits 2 naming the folder and the first's pid, and touches
@@ -104,6 +104,14 @@ why=""
 grep -q 'control = dissipation' backdiss/scene.ini || why="scene.ini has no 'control = dissipation'"
 [ "$rc" = 0 ] || [ "$rc" = 1 ] || why="not judged (exit $rc): $(head -c 200 err.txt)"
 result check-delta-back-dissipation "$why"
+"$delam" run "$scene" --h 4 --ppc 4 --solver static --threads 1 --quiet --out static >/dev/null 2>&1
+cp -r static staticback
+awk -F, 'BEGIN { OFS = "," } /^[#t]/ { print; next } { if (++k == 40) $2 -= 0.01; print }' static/load.csv >staticback/load.csv
+chk staticback
+why=""
+grep -q '^type = static' staticback/scene.ini || why="scene.ini has no 'type = static'"
+[ "$rc" = 0 ] || [ "$rc" = 1 ] || why="not judged (exit $rc): $(head -c 200 err.txt)"
+result check-delta-back-static-solver "$why"
 cp -r base tenth && head -n 1002 base/energy.csv >tenth/energy.csv
 chk tenth
 result check-energy-tenth "$(expect 2 "energy.csv ends at t 500, load.csv at t 5000: they do not cover the same run")"

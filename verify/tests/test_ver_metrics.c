@@ -219,8 +219,8 @@ static void test_ver_metrics_curve_l2(void **state)
     P[i] = k * (d[i] - 0.005) + 0.5; /* interval average of k delta, plus 0.5 */
   }
   P[N - 1] = 1e6; /* beyond delta_end */
-  assert_rel(ver_curve_l2(d, P, N, 0.995, 10.0, line_ref, &k, NULL), 0.05, 1e-9, "constant offset");
-  assert_true(isnan(ver_curve_l2(d, P, N, 0.0, 10.0, line_ref, &k, NULL)));
+  assert_rel(ver_curve_l2(d, P, N, 0.995, 10.0, line_ref, &k, NULL, 0), 0.05, 1e-9, "constant offset");
+  assert_true(isnan(ver_curve_l2(d, P, N, 0.0, 10.0, line_ref, &k, NULL, 0)));
 }
 
 static void test_ver_metrics_judge(void **state)
@@ -323,10 +323,10 @@ static void test_ver_metrics_curve_by_hand(void **state)
   (void)state;
   const double d[3] = {0.1, 0.2, 0.3}, P[3] = {1, 2, 2};
   double mx;
-  assert_rel(ver_curve_l2(d, P, 3, 0.3, 2.0, ten_delta, NULL, &mx), 0.25, 1e-12, "RMS / scale");
+  assert_rel(ver_curve_l2(d, P, 3, 0.3, 2.0, ten_delta, NULL, &mx, 0), 0.25, 1e-12, "RMS / scale");
   assert_rel(mx, 0.25, 1e-12, "max dev / scale");
   /* only the first two rows: delta_end 0.2 */
-  assert_rel(ver_curve_l2(d, P, 3, 0.2, 1.0, ten_delta, NULL, NULL), 0.5, 1e-12, "two rows");
+  assert_rel(ver_curve_l2(d, P, 3, 0.2, 1.0, ten_delta, NULL, NULL, 0), 0.5, 1e-12, "two rows");
 }
 
 /* Order with its constant: e = 0.01 h^2 at h = 8, 4, 2 -> p 2, log C = log 0.01. */

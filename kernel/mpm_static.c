@@ -1,0 +1,471 @@
+/*
+ * mpm_static.c - the quasi-static solver: load increments solved by Newton's method on
+ * the nodal force balance f_int(u) = 0 at the free degrees of freedom (eq. 3 without the
+ * inertia of eq. 4), with the constitutive update of secs. 3-4 at every particle and its
+ * algorithmic tangent (mpm_static_asm.c), and a path-following control:
+ *
+ *  - up to the first softening the grip's displacement delta leads.  The bar is linear
+ *    there and starts unstressed, so the first increment is solved at a small delta and
+ *    scaled to an eighth of the first particle's initiation (F = 0, eq. 23); seven more
+ *    equal ones meet it exactly;
+ *  - from then on the dissipation leads: C = sum U0 lambda V / Le, the dissipation of
+ *    eq. 10 without its cap at lambda = 1 (a separated particle's lambda grows on with its
+ *    opening, eq. 58, so C has no flat end where delta would be undetermined).  Each
+ *    increment adds tau to it, with delta an unknown (the constraint C(u, delta) = C_n +
+ *    tau borders the system; two solves with one factorization).  C never decreases, so
+ *    the control passes the peak and any snapback, where delta moves back as a test
+ *    machine under crack-opening control does;
+ *  - once the bar is cut (or C stops answering delta) the grip leads again, and the cut
+ *    part's vertical rigid motion is held.
+ * Increments adapt to Newton's work: larger after an easy one, smaller after a hard one,
+ * halved and retried when an increment fails.
+ *
+ * Convergence: the largest residual force below MPM_QS_FTOL times the largest load so far
+ * (the curve is judged to 1e-3 of the peak load: nine orders below it), and D within
+ * MPM_QS_DTOL of its target per unit of the full dissipation U0 H / sin a.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "mpm_static.h"
+
+#define MPM_QS_FTOL 1e-9
+#define MPM_QS_DTOL 1e-10
+#define MPM_QS_MAXIT 25   /* Newton iterations an increment may take                */
+#define MPM_QS_LS 4       /* halvings of a Newton step that raises the residual      */
+#define MPM_QS_MAXCUT 40  /* halvings of one increment before the run gives up       */
+#define MPM_QS_EASY 4     /* iterations at or below which the next increment grows   */
+#define MPM_QS_HARD 10    /* ... at or above which it shrinks                        */
+#define MPM_QS_TURN 0.15  /* radians: an increment whose chord turns more than this from the last
+                             one's, in (delta / delta at the peak, P / the peak), is retried at
+                             half its size, so that rows resolve the curve's corners (the peak,
+                             the separation) and stay few along its straight pieces            */
+#define MPM_QS_STALL 100  /* increments over which the control must advance by MPM_QS_STALL_C */
+#define MPM_QS_STALL_C 1e-3 /* ... of U0 H / sin a, or the run stops with an error: it stalls */
+#define MPM_QS_NEL 8      /* equal increments of the linear branch up to the first initiation */
+
+static double now(void)
+{
+  struct timespec ts;
+  clock_gettime(CLOCK_MONOTONIC, &ts);
+  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+void mpm_static_free(mpm_static *q)
+{
+  if (!q)
+    return;
+  void *f[] = {q->pid, q->cnt, q->node, q->N, q->Gx, q->Gy, q->eq, q->held, q->map, q->Un, q->Ut, q->R, q->kfd,
+               q->ga, q->x1, q->x2, q->du, q->pdir, q->tsxx, q->tsyy, q->tsxy, q->tlam, q->tupn, q->tupt, q->tw,
+               q->tsep, q->tpath};
+  for (size_t i = 0; i < sizeof f / sizeof f[0]; i++)
+    free(f[i]);
+  mpm_lin_free(q->lin);
+  mpm_dwork_free(q->dw);
+  free(q);
+}
+
+void mpm_static_stats_get(const mpm_static *q, mpm_static_stats *out)
+{
+  *out = q->st;
+}
+
+/* What the static solver cannot solve, refused before anything is built. */
+static mpm_status refuse(const mpm_scene *sc, char *err, size_t errlen)
+{
+  if (sc->le_mode == MPM_LE_ROW || sc->le_mode == MPM_LE_ZONE) {
+    snprintf(err, errlen, "solver.type = static: decohesion.Le = %s is measured as an explicit run goes; use cell, "
+             "particle or staircase", sc->le_mode == MPM_LE_ROW ? "row" : "zone");
+    return MPM_EINVAL;
+  }
+  if (sc->path == MPM_PATH_IFACE) {
+    snprintf(err, errlen, "solver.type = static: decohesion.path = interface is not solved statically yet; use "
+             "path = free or line");
+    return MPM_EINVAL;
+  }
+  if (sc->shape == MPM_SHAPE_LINEAR && sc->ppc == 1) {
+    /* one quadrature point per cell: the bilinear cell's two hourglass modes carry no
+     * strain at it, so the tangent is singular (docs/static.md) */
+    snprintf(err, errlen, "solver.type = static: grid.ppc = 1 with grid.shape = linear leaves one quadrature point per "
+             "cell, whose stiffness has zero-energy (hourglass) modes; use ppc 4 or 9, or shape = gimp");
+    return MPM_EINVAL;
+  }
+  return MPM_OK;
+}
+
+mpm_status mpm_static_alloc(mpm_sim *s, mpm_static **out, char *err, size_t errlen)
+{
+  *out = NULL;
+  mpm_status st = refuse(&s->sc, err, errlen);
+  if (st != MPM_OK)
+    return st;
+  mpm_static *q = calloc(1, sizeof *q);
+  if (!q)
+    return MPM_ENOMEM;
+  q->s = s;
+  if ((st = mpm_static_setup(q, err, errlen)) != MPM_OK || (st = mpm_static_number(q, err, errlen)) != MPM_OK) {
+    mpm_static_free(q);
+    return st;
+  }
+  const mpm_scene *sc = &s->sc;
+  const double sa = fabs(sin(sc->alpha_deg * (3.14159265358979323846 / 180.0)));
+  q->Dref = sc->model != MPM_DCOH_NONE ? sc->U0 * sc->H / fmax(sa, 1e-3) : 1.0;
+  q->Fref = 1e-3 * fmin(sc->snf, sc->stf) * sc->H;
+  q->step_d = 1e-3 * sc->L * fmin(sc->snf, sc->stf) / sc->E; /* the first, elastic, increment */
+  q->step_D = 1e-3 * q->Dref;
+  q->mode = MPM_QS_GRIP;
+  /* a static bar has no velocity: the explicit run's starting field is not its */
+  for (size_t k = 0; k < s->p->n; k++)
+    s->p->vx[k] = s->p->vy[k] = 0.0;
+  *out = q;
+  return MPM_OK;
+}
+
+static double dot(const double *a, const double *b, int n)
+{
+  double d = 0.0;
+  for (int i = 0; i < n; i++)
+    d += a[i] * b[i];
+  return d;
+}
+
+static double norm_inf(const double *a, int n)
+{
+  double d = 0.0;
+  for (int i = 0; i < n; i++)
+    d = fmax(d, fabs(a[i]));
+  return d;
+}
+
+static mpm_status factor(mpm_static *q)
+{
+  const double t0 = now();
+  const mpm_status st = mpm_lin_factor(q->lin);
+  q->st.t_factor += now() - t0;
+  q->st.factorizations++;
+  q->have_factor = st == MPM_OK;
+  return st;
+}
+
+static mpm_status solve(mpm_static *q, const double *b, double *x)
+{
+  const double t0 = now();
+  const mpm_status st = mpm_lin_solve(q->lin, b, x);
+  q->st.t_solve += now() - t0;
+  return st;
+}
+
+/* Adds du (unknowns) to the trial displacement. */
+static void add_free(mpm_static *q, const double *du, double a)
+{
+  for (size_t i = 0; i < 2 * q->nn; i++)
+    if (q->eq[i] >= 0)
+      q->Ut[i] += a * du[q->eq[i]];
+}
+
+/* The predictor of the next increment: the tangent at the committed state (its last
+ * evaluation, at the converged trial) factorized, d u / d delta = -K^-1 d R / d delta, and
+ * the control's answer to delta along it. */
+static mpm_status predictor(mpm_static *q)
+{
+  const int n = q->nfree;
+  if (!q->have_eval && mpm_static_eval(q, 1) != MPM_OK)
+    return MPM_ENOTFINITE;
+  mpm_status st = factor(q);
+  for (int i = 0; st == MPM_OK && i < n; i++)
+    q->x1[i] = -q->kfd[i];
+  if (st == MPM_OK)
+    st = solve(q, q->x1, q->pdir);
+  q->pden = st == MPM_OK ? dot(q->ga, q->pdir, n) + q->gb : NAN;
+  q->have_pred = st == MPM_OK;
+  return st;
+}
+
+/* The residual over its tolerance: the largest force over MPM_QS_FTOL Fref and, under
+ * the dissipation control, the constraint's miss over MPM_QS_DTOL Dref; <= 1 converged. */
+static double merit(const mpm_static *q, double Fref, double g, int grip)
+{
+  const double r = norm_inf(q->R, q->nfree) / (MPM_QS_FTOL * Fref);
+  return grip ? r : fmax(r, fabs(g) / (MPM_QS_DTOL * q->Dref));
+}
+
+/* One increment from the committed state under the current control; 1 if it converged
+ * (the trial state is then the increment's), 0 if not, or a negative status. */
+static int increment(mpm_static *q, int *iters)
+{
+  const int n = q->nfree;
+  memcpy(q->Ut, q->Un, sizeof(double) * 2 * q->nn);
+  q->dt = q->dn;
+  if (!q->have_pred && predictor(q) != MPM_OK)
+    return 0;
+  /* predictor: the committed state's tangent response to delta, scaled to the step */
+  const int grip = q->mode == MPM_QS_GRIP || q->kick;
+  double dd = q->kick ? q->kick_d : q->step_d;
+  if (!grip) {
+    /* pden < 0: C grows as delta falls, the snapback branch */
+    if (!(fabs(q->pden) * fmax(q->dn, 1e-300) > 1e-9 * q->Dref))
+      return -2; /* C does not answer delta here: the grip must lead */
+    dd = q->step_D / q->pden;
+  }
+  add_free(q, q->pdir, dd);
+  q->dt += dd;
+  const double Dtarget = q->Cn + q->step_D;
+  q->x2[0] = 0.0; /* (no unknowns: nothing to correct) */
+  if (mpm_static_eval(q, 1) != MPM_OK)
+    return 0;
+  for (int it = 0;; it++) {
+    *iters = it + 1;
+    q->st.newton++;
+    const double Fref = fmax(fmax(q->s->P_peak, fabs(q->Pg)), q->Fref);
+    const double g = q->Ct - Dtarget, m0 = merit(q, Fref, g, grip);
+    if (it < 32) {
+      q->st.res[it] = norm_inf(q->R, n) / Fref;
+      q->st.nres = it + 1;
+    }
+    if (m0 <= 1.0)
+      return 1;
+    if (it + 1 >= MPM_QS_MAXIT || factor(q) != MPM_OK)
+      return 0;
+    for (int i = 0; i < n; i++)
+      q->x1[i] = -q->R[i];
+    if (solve(q, q->x1, q->du) != MPM_OK)
+      return 0;
+    double ddl = 0.0;
+    if (!grip) {
+      for (int i = 0; i < n; i++)
+        q->x1[i] = -q->kfd[i];
+      if (solve(q, q->x1, q->x2) != MPM_OK)
+        return 0;
+      const double den = dot(q->ga, q->x2, n) + q->gb;
+      if (!(fabs(den) > 0.0))
+        return 0;
+      ddl = (-g - dot(q->ga, q->du, n)) / den;
+      for (int i = 0; i < n; i++)
+        q->du[i] += ddl * q->x2[i];
+    }
+    if (!isfinite(norm_inf(q->du, n)) || !isfinite(ddl))
+      return 0;
+    /* backtracking: a full step that raises the residual is halved, up to MPM_QS_LS
+     * times (near the peak particles flip between elastic and softening across a full
+     * step and Newton cycles) */
+    double a = 1.0;
+    add_free(q, q->du, a);
+    q->dt += a * ddl;
+    for (int ls = 0;; ls++) {
+      if (mpm_static_eval(q, 1) != MPM_OK)
+        return 0;
+      if (ls == MPM_QS_LS || merit(q, fmax(fmax(q->s->P_peak, fabs(q->Pg)), q->Fref), q->Ct - Dtarget, grip) < m0)
+        break;
+      a *= 0.5;
+      add_free(q, q->du, -a);
+      q->dt -= a * ddl;
+      q->st.backtracks++;
+    }
+  }
+  return 0;
+}
+
+/* The linear first increment scaled to 1 / MPM_QS_NEL of the first initiation (F = 0,
+ * eq. 23); the grip's step is set to the rest's share. */
+static void scale_to_initiation(mpm_static *q)
+{
+  const mpm_sim *s = q->s;
+  double kmin = INFINITY;
+  for (size_t c = 0; c < q->np; c++) {
+    const mpm_material *m = &s->mat[s->p->mat[q->pid[c]]];
+    if (m->model == MPM_DCOH_NONE)
+      continue;
+    const double F = mpm_dcoh_F(m, q->tsxx[c], q->tsyy[c], q->tsxy[c], 0.0), se = F + 1.0;
+    if (se > 0.0)
+      kmin = fmin(kmin, 1.0 / se);
+  }
+  if (!(kmin > 1.0) || !isfinite(kmin))
+    return;
+  const double k = kmin * (1.0 - 1e-12) / MPM_QS_NEL;
+  for (size_t i = 0; i < 2 * q->nn; i++)
+    if (q->eq[i] >= 0)
+      q->Ut[i] *= k;
+  q->dt *= k;
+  q->step_d = q->dt;
+  q->nel = MPM_QS_NEL - 1;
+  mpm_static_eval(q, 1);
+}
+
+/* Makes the trial state the committed one: particles, displacements, loads, energies. */
+static void commit(mpm_static *q)
+{
+  mpm_sim *s = q->s;
+  mpm_particles *p = s->p;
+  const size_t M = MPM_ST_MAX;
+  for (size_t c = 0; c < q->np; c++) {
+    const size_t i = q->pid[c];
+    const mpm_material *m = &s->mat[p->mat[i]];
+    if (m->model != MPM_DCOH_NONE)
+      p->dis[i] += m->U0 * (fmin(q->tlam[c], 1.0) - fmin(p->lam[i], 1.0)) * p->V[i] / m->Le;
+    p->sxx[i] = q->tsxx[c];
+    p->syy[i] = q->tsyy[c];
+    p->sxy[i] = q->tsxy[c];
+    p->lam[i] = q->tlam[c];
+    p->upn[i] = q->tupn[c];
+    p->upt[i] = q->tupt[c];
+    p->sep[i] = q->tsep[c];
+    p->str2[i] = mpm_dcoh_str2(m, q->tlam[c], q->tsep[c]);
+    p->wcoh[i] += q->tw[c];
+    s->n_soften += q->tpath[c] == MPM_DPATH_SOFTEN;
+    s->n_separate += q->tpath[c] == MPM_DPATH_SEPARATE;
+    double ux = 0.0, uy = 0.0;
+    for (int a = 0; a < q->cnt[c]; a++) {
+      ux += q->N[c * M + (size_t)a] * q->Ut[2 * (size_t)q->node[c * M + (size_t)a]];
+      uy += q->N[c * M + (size_t)a] * q->Ut[2 * (size_t)q->node[c * M + (size_t)a] + 1];
+    }
+    p->x[i] = p->x0[i] + ux;
+    p->y[i] = p->y0[i] + uy;
+  }
+  s->W_ext += 0.5 * (s->P_grip + q->Pg) * (q->dt - q->dn); /* trapezoid: exact on straight pieces */
+  if (q->Pg >= s->P_peak)
+    q->pk_d = q->dt;
+  if (q->pk_d > 0.0 && s->P_peak > 0.0) { /* this chord, for the next one's turn */
+    q->ch_d = (q->dt - q->dn) / q->pk_d;
+    q->ch_P = (q->Pg - s->P_grip) / fmax(s->P_peak, q->Pg);
+  }
+  memcpy(q->Un, q->Ut, sizeof(double) * 2 * q->nn);
+  q->dn = q->dt;
+  q->Dn = q->Dt;
+  q->Cn = q->Ct;
+  s->P_grip = q->Pg;
+  s->P_fixed = q->Pf;
+  s->P_peak = fmax(s->P_peak, q->Pg);
+  s->D_run = q->Dt;
+  s->ugrip = q->dt;
+  s->step++;
+  s->t = (double)s->step;
+  mpm_sim_cut(s);
+}
+
+/* 1 if the trial increment's chord turns more than MPM_QS_TURN from the last one's and
+ * the step can still be halved. */
+static int turns(const mpm_static *q)
+{
+  const mpm_sim *s = q->s;
+  if (s->step < MPM_QS_NEL || !(q->pk_d > 0.0) || !(s->P_peak > 0.0))
+    return 0;
+  const double ax = q->ch_d, ay = q->ch_P, bx = (q->dt - q->dn) / q->pk_d, by = (q->Pg - s->P_grip) / s->P_peak;
+  const double la = hypot(ax, ay), lb = hypot(bx, by);
+  if (!(la > 0.0) || !(lb > 1e-4)) /* a short chord: no corner to resolve */
+    return 0;
+  const double c = (ax * bx + ay * by) / (la * lb);
+  /* the separation's corner: the load falling from above 3 % of the peak to below 1 % in
+   * one increment cuts it whatever the chords' angle */
+  const int lands = q->Pg < 0.01 * s->P_peak && s->P_grip > 0.03 * s->P_peak;
+  return c < cos(MPM_QS_TURN) || lands;
+}
+
+/* 1 if the control's measure moved by less than MPM_QS_STALL_C Dref over the last
+ * MPM_QS_STALL increments (a ring of their values). */
+static int stalls(mpm_static *q)
+{
+  const int k = (int)(q->st.increments % MPM_QS_STALL);
+  const double old = q->cring[k];
+  q->cring[k] = q->Cn;
+  return q->st.increments >= MPM_QS_STALL && q->Cn - old < MPM_QS_STALL_C * q->Dref;
+}
+
+static void set_mode(mpm_static *q, int mode)
+{
+  if (q->mode == mode)
+    return;
+  q->mode = mode;
+  q->st.switches++;
+  if (mode == MPM_QS_GRIP) /* after the softening: a fiftieth of delta, growing */
+    q->step_d = 0.02 * fabs(q->dn) + 1e-6 * q->s->sc.L * fmin(q->s->sc.snf, q->s->sc.stf) / q->s->sc.E;
+}
+
+mpm_status mpm_static_step(mpm_static *q, char *err, size_t errlen)
+{
+  mpm_sim *s = q->s;
+  for (int cut = 0; cut <= MPM_QS_MAXCUT; cut++) {
+    int iters = 0;
+    const int r = increment(q, &iters);
+    if (r == -2) {
+      /* C does not answer delta: nothing softens at the committed state (the initiation,
+       * or a particle that stopped): a small grip increment starts it again; if that
+       * does not, the grip leads to the end */
+      if (q->nkick < 3) {
+        q->kick = 1;
+        q->kick_d = 1e-4 * q->dn;
+      } else
+        set_mode(q, MPM_QS_GRIP);
+      continue;
+    }
+    /* the kick and the linear branch are taken as they are */
+    const int dis = q->mode == MPM_QS_DISSIPATION && !q->kick, grip = q->mode == MPM_QS_GRIP && q->nel == 0;
+    if (r == 1 && (dis ? q->step_D > 1e-6 * q->Dref : grip && q->step_d > 1e-9 * s->sc.L) && turns(q)) {
+      q->st.turns++;
+      if (dis)
+        q->step_D *= 0.5;
+      else
+        q->step_d *= 0.5;
+      continue;
+    }
+    if (r == 1) {
+      const int first = s->step == 0;
+      if (first && q->mode == MPM_QS_GRIP)
+        scale_to_initiation(q);
+      commit(q);
+      const int grip_stalls = q->mode == MPM_QS_GRIP && q->nel == 0 && q->step_d < 1e-9 * fmax(q->dn, 1e-300);
+      if ((q->mode == MPM_QS_DISSIPATION && stalls(q)) || grip_stalls) {
+        snprintf(err, errlen, "static solver: the path stalls at delta = %.9g, P = %.6g: the %s control "
+                 "advanced by less than %g of its scale over the last %d increments (docs/static.md, \"Where it "
+                 "stops\")", q->dn, s->P_grip, grip_stalls ? "grip" : "dissipation",
+                 grip_stalls ? 1e-9 : MPM_QS_STALL_C, grip_stalls ? 1 : MPM_QS_STALL);
+        return MPM_ENOTFINITE;
+      }
+      q->nkick = q->kick ? q->nkick + 1 : 0;
+      q->kick = 0;
+      /* the next increment's predictor from this state's tangent (the trial's last
+       * evaluation is at the committed state) */
+      q->have_eval = 1;
+      q->have_pred = 0;
+      if (predictor(q) != MPM_OK)
+        q->have_eval = 0;
+      q->st.increments++;
+      q->st.mode = q->mode;
+      const double grow = iters <= MPM_QS_EASY ? 1.5 : iters >= MPM_QS_HARD ? 0.6 : 1.0;
+      if (q->mode == MPM_QS_DISSIPATION)
+        q->step_D = fmin(q->step_D * grow, 0.1 * q->Dref);
+      else if (q->nel > 0 && !first) {
+        /* the linear branch: equal steps to the initiation, then the dissipation leads */
+        if (--q->nel == 0 && s->sc.model != MPM_DCOH_NONE)
+          set_mode(q, MPM_QS_DISSIPATION);
+      } else if (!first)
+        q->step_d *= grow;
+      /* the grip never passes the run's end */
+      if (q->mode == MPM_QS_GRIP && q->dn + q->step_d > s->sc.end_delta)
+        q->step_d = fmax(s->sc.end_delta - q->dn, 1e-12 * s->sc.end_delta);
+      if (s->cut && !q->pinned) {
+        q->pinned = 1;
+        set_mode(q, MPM_QS_GRIP);
+        const mpm_status st = mpm_static_number(q, err, errlen);
+        if (st != MPM_OK)
+          return st;
+      }
+      return MPM_OK;
+    }
+    q->st.cuts++;
+    if (q->kick) {
+      q->kick_d *= 0.5;
+    } else if (q->mode == MPM_QS_DISSIPATION) {
+      q->step_D *= 0.5;
+      if (q->step_D < 1e-9 * q->Dref)
+        set_mode(q, MPM_QS_GRIP);
+    } else {
+      q->step_d *= 0.5;
+    }
+  }
+  snprintf(err, errlen, "static solver: no equilibrium found after %d smaller increments at delta = %.9g (increment "
+           "%ld, %s control)", MPM_QS_MAXCUT, q->dn, s->step + 1, q->mode == MPM_QS_GRIP ? "grip" : "dissipation");
+  return MPM_ENOTFINITE;
+}

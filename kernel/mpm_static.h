@@ -1,0 +1,83 @@
+/*
+ * mpm_static.h - private to kernel/: the parts of the quasi-static solver
+ * (mpm_static.c): the particles' stencils and the tangent's assembly
+ * (mpm_static_asm.c), and the sparse linear solve (mpm_static_lin.c).
+ */
+#ifndef DELAM_MPM_STATIC_H
+#define DELAM_MPM_STATIC_H
+
+#include "mpm.h"
+
+/* ---- the sparse system over the free degrees of freedom (UMFPACK) ---- */
+typedef struct mpm_lin mpm_lin;
+/* The pattern from triplets (ti, tj) of n x n; map[k] receives the position of triplet k
+ * in the compressed values (duplicates share one).  NULL when out of memory. */
+mpm_lin *mpm_lin_alloc(int n, size_t nz, const int *ti, const int *tj, int *map);
+void mpm_lin_free(mpm_lin *l);
+double *mpm_lin_values(mpm_lin *l); /* the values to assemble into, nnz of them */
+size_t mpm_lin_nnz(const mpm_lin *l);
+/* LU of the values (the pattern's ordering is computed once); MPM_ENOTFINITE when the
+ * matrix is singular or not finite. */
+mpm_status mpm_lin_factor(mpm_lin *l);
+/* x = A^-1 b with the last factors; x and b may not alias. */
+mpm_status mpm_lin_solve(mpm_lin *l, const double *b, double *x);
+
+/* ---- a bar particle's stencil at its reference place (total Lagrangian) ---- */
+#define MPM_ST_MAX 9 /* uGIMP: 3 x 3 nodes */
+
+/* Degrees of freedom: each node's x and y; eq >= 0 is the unknown's row, else the
+ * component is held (MPM_DOF_*) or the node carries no particle. */
+enum { MPM_DOF_OFF = -1, MPM_DOF_GRIP = -2, MPM_DOF_HELD = -3 };
+
+struct mpm_static {
+  mpm_sim *s;             /* borrowed: scene, materials, particles, grid, loads, energies */
+  size_t np;              /* bar particles (the head is the explicit run's machine)      */
+  size_t *pid;            /* their indices in s->p                                      */
+  int *cnt;               /* stencil nodes per particle (those with a weight or gradient) */
+  int *node;              /* np x MPM_ST_MAX node indices                                */
+  double *N, *Gx, *Gy;    /* np x MPM_ST_MAX weights and gradients at the reference place */
+  size_t nn;              /* grid nodes                                                 */
+  int *eq;                /* 2 nn: the unknown of each component, or MPM_DOF_*           */
+  double *held;           /* 2 nn: the value of a held component (MPM_DOF_HELD)           */
+  int nfree;              /* unknowns                                                   */
+  int pinned;             /* 1 once the cut part's vertical rigid motion is held          */
+  int *map;               /* per particle, (2 MPM_ST_MAX)^2 positions in the values, -1 off */
+  mpm_lin *lin;
+  /* displacements: committed (Un) and trial (Ut), 2 nn each; the grip's delta */
+  double *Un, *Ut;
+  double dn, dt;
+  /* vectors over the unknowns */
+  double *R, *kfd, *ga, *x1, *x2, *du;
+  double gb;              /* d Ct / d delta through the gripped components               */
+  /* the particles' trial state (np each) and what the increment booked */
+  double *tsxx, *tsyy, *tsxy, *tlam, *tupn, *tupt, *tw;
+  uint8_t *tsep, *tpath;
+  mpm_dwork *dw;
+  /* loads and dissipation of the trial state */
+  double Pg, Pf, Dt, Dn;
+  double Ct, Cn;          /* the control's measure: sum U0 lambda V / Le, lambda uncapped  */
+  /* the control: MPM_QS_* mode, the grip step or the dissipation step */
+  int mode;
+  double step_d, step_D, Dref, Fref;
+  int kick;               /* 1: one small grip increment starts the softening            */
+  double cring[100];      /* the control's measure over the last increments (stalls)     */
+  int nkick;
+  double kick_d;          /* its grip step                                              */              /* such increments in a row                                   */
+  double pk_d;             /* delta at the largest load so far                          */
+  double ch_d, ch_P;      /* the last increment's chord over (pk_d, the peak load)       */
+  int nel;                /* equal grip increments left before the first initiation      */
+  int have_factor;        /* factors of some tangent are held                           */
+  int have_eval;          /* the last evaluation is of the committed state               */
+  int have_pred;          /* pdir, pden are the committed state's                        */
+  double *pdir;           /* d u / d delta at the committed state (unknowns)             */
+  double pden;            /* d C / d delta along pdir                                    */
+  mpm_static_stats st;
+};
+
+/* mpm_static_asm.c: the stencils and unknowns (setup), the trial state of every particle
+ * from Ut with the residual, tangent and the dissipation's gradient (eval). */
+mpm_status mpm_static_setup(mpm_static *q, char *err, size_t errlen);
+mpm_status mpm_static_number(mpm_static *q, char *err, size_t errlen);
+mpm_status mpm_static_eval(mpm_static *q, int tangent);
+
+#endif

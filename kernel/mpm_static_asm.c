@@ -1,0 +1,311 @@
+/*
+ * mpm_static_asm.c - the quasi-static solver's discrete equations (total Lagrangian):
+ * each bar particle's stencil at its reference place, the unknowns, and at a trial
+ * displacement the particles' constitutive state (secs. 3-4, the same update as the
+ * explicit step), the nodal force residual f_int = sum_p V_p B_p^T sigma_p (eq. 3), its
+ * tangent K = sum_p V_p B_p^T C_p B_p with C_p the update's algorithmic tangent, and the
+ * dissipation D = sum_p U0 min(lambda_p, 1) V_p / Le (eq. 10), and the control's measure,
+ * the same sum without the cap (lambda grows on with the opening once separated, eq. 58),
+ * with its gradient.
+ *
+ * Total Lagrangian: shape functions and gradients are taken once, where the particles
+ * were laid (small strain; the paper's displacements stay below a cell until the
+ * separation: docs/static.md measures the updated-Lagrangian alternative).
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "mpm_shape.h"
+#include "mpm_static.h"
+
+static double now(void)
+{
+  struct timespec ts;
+  clock_gettime(CLOCK_MONOTONIC, &ts);
+  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/* One particle's stencil: nodes with a weight or a gradient, at reference (x0, y0). */
+static int stencil(const mpm_sim *s, double x0, double y0, int *node, double *N, double *Gx, double *Gy)
+{
+  const mpm_grid *g = s->g;
+  const double h = s->sc.h, fx = (x0 - s->grid_ox0) / h, fy = (y0 - g->oy) / h;
+  int c = 0;
+  if (s->sc.shape == MPM_SHAPE_GIMP) {
+    const double lc = 0.5 / sqrt((double)s->sc.ppc);
+    mpm_gimp1 gx, gy;
+    mpm_gimp_1d(fx, lc, &gx);
+    mpm_gimp_1d(fy, lc, &gy);
+    for (int a = 0; a < 3; a++)
+      for (int b = 0; b < 3; b++) {
+        const double n = gx.S[a] * gy.S[b], dx = gx.dS[a] * gy.S[b] / h, dy = gx.S[a] * gy.dS[b] / h;
+        if (n == 0.0 && dx == 0.0 && dy == 0.0)
+          continue;
+        node[c] = (int)mpm_grid_node(g, gx.i0 + a, gy.i0 + b);
+        N[c] = n;
+        Gx[c] = dx;
+        Gy[c] = dy;
+        c++;
+      }
+    return c;
+  }
+  const int i = (int)floor(fx), j = (int)floor(fy);
+  const double rx = fx - i, ry = fy - j, wx[2] = {1.0 - rx, rx}, wy[2] = {1.0 - ry, ry};
+  const double dxs[2] = {-1.0 / h, 1.0 / h};
+  for (int b = 0; b < 2; b++)
+    for (int a = 0; a < 2; a++) {
+      node[c] = (int)mpm_grid_node(g, i + a, j + b);
+      N[c] = wx[a] * wy[b];
+      Gx[c] = dxs[a] * wy[b];
+      Gy[c] = wx[a] * dxs[b];
+      c++;
+    }
+  return c;
+}
+
+mpm_status mpm_static_setup(mpm_static *q, char *err, size_t errlen)
+{
+  const mpm_sim *s = q->s;
+  const mpm_particles *p = s->p;
+  size_t np = 0;
+  for (size_t k = 0; k < p->n; k++)
+    np += p->mat[k] != MPM_MAT_HEAD && p->mat[k] != MPM_MAT_DEBRIS;
+  q->np = np;
+  q->nn = (size_t)s->g->nnx * (size_t)s->g->nny;
+  const size_t M = MPM_ST_MAX;
+  q->pid = malloc(np * sizeof *q->pid);
+  q->cnt = malloc(np * sizeof *q->cnt);
+  q->node = malloc(np * M * sizeof *q->node);
+  q->N = malloc(np * M * sizeof(double));
+  q->Gx = malloc(np * M * sizeof(double));
+  q->Gy = malloc(np * M * sizeof(double));
+  q->eq = malloc(2 * q->nn * sizeof *q->eq);
+  q->held = calloc(2 * q->nn, sizeof(double));
+  q->Un = calloc(2 * q->nn, sizeof(double));
+  q->Ut = calloc(2 * q->nn, sizeof(double));
+  double **t[] = {&q->tsxx, &q->tsyy, &q->tsxy, &q->tlam, &q->tupn, &q->tupt, &q->tw};
+  int ok = q->pid && q->cnt && q->node && q->N && q->Gx && q->Gy && q->eq && q->held && q->Un && q->Ut;
+  for (size_t i = 0; ok && i < sizeof t / sizeof t[0]; i++)
+    ok = (*t[i] = malloc((np ? np : 1) * sizeof(double))) != NULL;
+  ok = ok && (q->tsep = malloc(np ? np : 1)) && (q->tpath = malloc(np ? np : 1)) && (q->dw = mpm_dwork_alloc());
+  if (!ok) {
+    snprintf(err, errlen, "out of memory for the static solver's %zu particles", np);
+    return MPM_ENOMEM;
+  }
+  size_t c = 0;
+  for (size_t k = 0; k < p->n; k++) {
+    if (p->mat[k] == MPM_MAT_HEAD || p->mat[k] == MPM_MAT_DEBRIS)
+      continue;
+    q->pid[c] = k;
+    q->cnt[c] = stencil(s, p->x0[k], p->y0[k], q->node + c * M, q->N + c * M, q->Gx + c * M, q->Gy + c * M);
+    c++;
+  }
+  return MPM_OK;
+}
+
+/* Numbers the unknowns (active components that are not held) and builds the tangent's
+ * pattern; again after a hold is added (the cut). */
+mpm_status mpm_static_number(mpm_static *q, char *err, size_t errlen)
+{
+  const mpm_sim *s = q->s;
+  const size_t M = MPM_ST_MAX, nn = q->nn;
+  for (size_t i = 0; i < 2 * nn; i++)
+    q->eq[i] = MPM_DOF_OFF;
+  for (size_t c = 0; c < q->np; c++)
+    for (int a = 0; a < q->cnt[c]; a++)
+      q->eq[2 * (size_t)q->node[c * M + (size_t)a]] = q->eq[2 * (size_t)q->node[c * M + (size_t)a] + 1] = 0;
+  for (int i = 0; i < s->ngrip; i++)
+    if (q->eq[2 * (size_t)s->grip[i]] != MPM_DOF_OFF)
+      q->eq[2 * (size_t)s->grip[i]] = MPM_DOF_GRIP;
+  for (int i = 0; i < s->nfixx; i++)
+    if (q->eq[2 * (size_t)s->fixx[i]] != MPM_DOF_OFF)
+      q->eq[2 * (size_t)s->fixx[i]] = MPM_DOF_HELD;
+  if (q->eq[2 * (size_t)s->fixy + 1] != MPM_DOF_OFF)
+    q->eq[2 * (size_t)s->fixy + 1] = MPM_DOF_HELD;
+  if (q->pinned) {
+    /* the gripped part's vertical rigid motion, free once the bar is cut: held at the
+     * gripped node nearest mid-height, where it is now (no force: the part is unloaded) */
+    int best = -1;
+    double bd = INFINITY;
+    for (int i = 0; i < s->ngrip; i++) {
+      const size_t n = (size_t)s->grip[i];
+      const double y = s->g->oy + s->sc.h * (double)(n % (size_t)s->g->nny), d = fabs(y - 0.5 * s->sc.H);
+      if (q->eq[2 * n] == MPM_DOF_GRIP && d < bd) {
+        bd = d;
+        best = (int)n;
+      }
+    }
+    if (best >= 0) {
+      q->eq[2 * (size_t)best + 1] = MPM_DOF_HELD;
+      q->held[2 * (size_t)best + 1] = q->Un[2 * (size_t)best + 1];
+    }
+  }
+  int n = 0;
+  for (size_t i = 0; i < 2 * nn; i++)
+    if (q->eq[i] == 0)
+      q->eq[i] = n++;
+  q->nfree = n;
+  /* the pattern: every pair of free components of a particle's stencil */
+  size_t nz = 0;
+  for (size_t c = 0; c < q->np; c++)
+    nz += 4 * (size_t)q->cnt[c] * (size_t)q->cnt[c];
+  int *ti = malloc((nz ? nz : 1) * sizeof *ti), *tj = malloc((nz ? nz : 1) * sizeof *tj);
+  free(q->map);
+  q->map = malloc((nz ? nz : 1) * sizeof *q->map);
+  double **v[] = {&q->R, &q->kfd, &q->ga, &q->x1, &q->x2, &q->du, &q->pdir};
+  int ok = ti && tj && q->map;
+  for (size_t i = 0; ok && i < sizeof v / sizeof v[0]; i++) {
+    free(*v[i]);
+    ok = (*v[i] = calloc((size_t)(n ? n : 1), sizeof(double))) != NULL;
+  }
+  size_t k = 0, m = 0;
+  for (size_t c = 0; ok && c < q->np; c++) {
+    const int cn = q->cnt[c];
+    for (int a = 0; a < 2 * cn; a++)
+      for (int b = 0; b < 2 * cn; b++, k++) {
+        const int ea = q->eq[2 * (size_t)q->node[c * M + (size_t)(a / 2)] + (size_t)(a % 2)];
+        const int eb = q->eq[2 * (size_t)q->node[c * M + (size_t)(b / 2)] + (size_t)(b % 2)];
+        q->map[k] = -1;
+        if (ea >= 0 && eb >= 0) {
+          ti[m] = ea;
+          tj[m] = eb;
+          q->map[k] = (int)m++; /* the triplet's number until the map is filled below */
+        }
+      }
+  }
+  int *tmap = ok ? malloc((m ? m : 1) * sizeof *tmap) : NULL;
+  mpm_lin_free(q->lin);
+  q->lin = tmap ? mpm_lin_alloc(n, m, ti, tj, tmap) : NULL;
+  if (q->lin)
+    for (size_t i = 0; i < k; i++)
+      if (q->map[i] >= 0)
+        q->map[i] = tmap[q->map[i]];
+  free(ti);
+  free(tj);
+  free(tmap);
+  if (!q->lin) {
+    snprintf(err, errlen, "out of memory for the tangent of %d unknowns", n);
+    return MPM_ENOMEM;
+  }
+  q->st.unknowns = n;
+  q->st.nnz = mpm_lin_nnz(q->lin);
+  q->have_factor = q->have_eval = q->have_pred = 0;
+  return MPM_OK;
+}
+
+mpm_status mpm_static_eval(mpm_static *q, int tangent)
+{
+  const double t0 = now();
+  mpm_sim *s = q->s;
+  mpm_particles *p = s->p;
+  const size_t M = MPM_ST_MAX, nn = q->nn;
+  double *Ut = q->Ut, *Ax = tangent ? mpm_lin_values(q->lin) : NULL;
+  for (size_t i = 0; i < 2 * nn; i++)
+    if (q->eq[i] == MPM_DOF_GRIP)
+      Ut[i] = -q->dt;
+    else if (q->eq[i] == MPM_DOF_HELD)
+      Ut[i] = q->held[i];
+  memset(q->R, 0, sizeof(double) * (size_t)q->nfree);
+  if (tangent) {
+    memset(Ax, 0, sizeof(double) * mpm_lin_nnz(q->lin));
+    memset(q->kfd, 0, sizeof(double) * (size_t)q->nfree);
+    memset(q->ga, 0, sizeof(double) * (size_t)q->nfree);
+    q->gb = 0.0;
+  }
+  double Pg = 0.0, Pf = 0.0, D = 0.0, C = 0.0;
+  size_t k = 0; /* position in the map */
+  mpm_status bad = MPM_OK;
+  for (size_t c = 0; c < q->np; c++) {
+    const size_t i = q->pid[c];
+    const int cn = q->cnt[c];
+    const int *nd = q->node + c * M;
+    const double *Gx = q->Gx + c * M, *Gy = q->Gy + c * M;
+    double de[3] = {0.0, 0.0, 0.0};
+    for (int a = 0; a < cn; a++) {
+      const double ux = Ut[2 * nd[a]] - q->Un[2 * nd[a]], uy = Ut[2 * nd[a] + 1] - q->Un[2 * nd[a] + 1];
+      de[0] += Gx[a] * ux;
+      de[1] += Gy[a] * uy;
+      de[2] += 0.5 * (Gy[a] * ux + Gx[a] * uy);
+    }
+    const mpm_material *m = &s->mat[p->mat[i]];
+    const mpm_dstate in = {p->sxx[i], p->syy[i], p->sxy[i], p->lam[i], p->upn[i], p->upt[i], p->sep[i]};
+    mpm_dstate o;
+    mpm_dinfo info;
+    const mpm_status st = mpm_dcoh_update(m, &in, de, &o, &info, q->dw);
+    if (st != MPM_OK && bad == MPM_OK)
+      bad = st;
+    q->tsxx[c] = o.sxx;
+    q->tsyy[c] = o.syy;
+    q->tsxy[c] = o.sxy;
+    q->tlam[c] = o.lam;
+    q->tupn[c] = o.upn;
+    q->tupt[c] = o.upt;
+    q->tsep[c] = (uint8_t)o.sep;
+    q->tpath[c] = (uint8_t)info.path;
+    q->tw[c] = info.w * p->V[i] / (info.path == MPM_DPATH_SOFTEN ? m->Le : m->Lopen);
+    const double wD = m->model != MPM_DCOH_NONE ? m->U0 * p->V[i] / m->Le : 0.0;
+    D += wD * fmin(o.lam, 1.0);
+    C += wD * o.lam;
+    const double V = p->V[i];
+    for (int a = 0; a < cn; a++) { /* eq. 3: f_a = V B_a^T sigma */
+      const double fx = V * (Gx[a] * o.sxx + Gy[a] * o.sxy), fy = V * (Gy[a] * o.syy + Gx[a] * o.sxy);
+      const int ex = q->eq[2 * nd[a]], ey = q->eq[2 * nd[a] + 1];
+      if (ex >= 0)
+        q->R[ex] += fx;
+      else if (ex == MPM_DOF_GRIP)
+        Pg -= fx;
+      else if (ex == MPM_DOF_HELD)
+        Pf += fx;
+      if (ey >= 0)
+        q->R[ey] += fy;
+    }
+    if (!tangent)
+      continue;
+    double C[3][3], dl[3]; /* the update's algorithmic tangent and d lambda / d de */
+    mpm_dcoh_tangent(m, &in, de, C, dl, q->dw);
+    const int ld = wD > 0.0 && info.path != MPM_DPATH_ELASTIC;
+    for (int b = 0; b < 2 * cn; b++) {
+      /* d de / d u_b: (Gx, 0, Gy / 2) for an x component, (0, Gy, Gx / 2) for y */
+      const int bn = nd[b / 2], bc = b % 2;
+      const double d0 = bc ? 0.0 : Gx[b / 2], d1 = bc ? Gy[b / 2] : 0.0, d2 = 0.5 * (bc ? Gx[b / 2] : Gy[b / 2]);
+      const double sx = C[0][0] * d0 + C[0][1] * d1 + C[0][2] * d2;
+      const double sy = C[1][0] * d0 + C[1][1] * d1 + C[1][2] * d2;
+      const double sxy = C[2][0] * d0 + C[2][1] * d1 + C[2][2] * d2;
+      const int eb = q->eq[2 * bn + bc];
+      if (ld) {
+        const double gd = wD * (dl[0] * d0 + dl[1] * d1 + dl[2] * d2);
+        if (eb >= 0)
+          q->ga[eb] += gd;
+        else if (eb == MPM_DOF_GRIP)
+          q->gb -= gd; /* u = -delta there */
+      }
+      for (int a = 0; a < cn; a++) {
+        const double kx = V * (Gx[a] * sx + Gy[a] * sxy), ky = V * (Gy[a] * sy + Gx[a] * sxy);
+        const int ex = q->eq[2 * nd[a]], ey = q->eq[2 * nd[a] + 1];
+        const int kx_at = q->map[k + (size_t)(2 * a) * (size_t)(2 * cn) + (size_t)b];
+        const int ky_at = q->map[k + (size_t)(2 * a + 1) * (size_t)(2 * cn) + (size_t)b];
+        if (eb >= 0) {
+          if (kx_at >= 0)
+            Ax[kx_at] += kx;
+          if (ky_at >= 0)
+            Ax[ky_at] += ky;
+        } else if (eb == MPM_DOF_GRIP) { /* d R / d delta = -K_{f,grip} */
+          if (ex >= 0)
+            q->kfd[ex] -= kx;
+          if (ey >= 0)
+            q->kfd[ey] -= ky;
+        }
+      }
+    }
+    k += 4 * (size_t)cn * (size_t)cn;
+  }
+  q->Pg = Pg;
+  q->Pf = Pf;
+  q->Dt = D;
+  q->Ct = C;
+  q->st.t_eval += now() - t0;
+  return bad;
+}
