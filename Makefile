@@ -66,7 +66,7 @@ build-fuzz/fuzz_scene: $(FUZZ_SRC) verify/scene.h kernel/mpm.h $(FUZZ_GEN)
 	@mkdir -p build-fuzz/corpus
 	$(FUZZ_CC) -g -O1 -std=c11 -D_POSIX_C_SOURCE=200809L -Wall -Wextra -Wno-unknown-pragmas -Wno-psabi \
 	  -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined -Ikernel -Ianalytic -Iverify \
-	  -I$(BUILD)/verify $(FUZZ_SRC) -linih -lgsl -lm -o $@
+	  -I$(BUILD)/verify $(FUZZ_SRC) -linih -lgsl -lumfpack -lm -o $@
 
 # clang and its libFuzzer runtime, installed only when missing (as deps does).
 fuzz-deps:
