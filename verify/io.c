@@ -251,7 +251,7 @@ int ver_io_lock_dir(const char *dir, char *err, size_t errlen)
   else
     snprintf(err, errlen, "%s: cannot lock: %s", path, strerror(e));
   close(fd);
-  errno = e;
+  errno = e == EACCES ? EAGAIN : e; /* EAGAIN: held by another process */
   return -1;
 }
 

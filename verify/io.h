@@ -34,7 +34,8 @@ int ver_io_copy(const char *src, const char *dst);
 
 /* One writer per folder: locks DIR/.delam.lock (created if missing) for this process
  * until it closes the returned descriptor or ends.  The descriptor, or -1 with err:
- * "DIR: another delam process (pid N) is writing this folder ..." when another holds it. */
+ * "DIR: another delam process (pid N) is writing this folder ..." and errno EAGAIN when
+ * another holds it. */
 #define VER_LOCK_NAME ".delam.lock"
 int ver_io_lock_dir(const char *dir, char *err, size_t errlen);
 /* The pid of the process that holds DIR's lock now, 0 if none. */

@@ -444,7 +444,9 @@ void ver_report_gnuplot(report *R)
     char p[2 * REP_PATH];
     struct stat fs;
     snprintf(p, sizeof p, "%s/%s", r->out, names[i]);
-    if (st[i] == 0 && (stat(p, &fs) != 0 || fs.st_size == 0)) {
+    if (st[i] > 0) /* failed or stopped: what it wrote is no figure */
+      remove(p);
+    else if (st[i] == 0 && (stat(p, &fs) != 0 || fs.st_size == 0)) {
       fprintf(stderr, PROG ": %s: %s after gnuplot: removed, the figure is missing\n", p,
               access(p, F_OK) == 0 ? "empty" : "not there");
       remove(p);

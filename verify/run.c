@@ -204,7 +204,7 @@ static int prepare_outdir(const char *dir, int *lock, char *err, size_t errlen)
     return e == ENOTDIR || e == ENAMETOOLONG || e == ELOOP ? 2 : 1;
   }
   if ((*lock = ver_io_lock_dir(dir, err, errlen)) < 0)
-    return errno == EACCES || errno == EAGAIN ? 2 : 1;
+    return errno == EAGAIN ? 2 : 1;
   DIR *d = opendir(dir);
   for (struct dirent *e = d ? readdir(d) : NULL; e; e = readdir(d)) {
     const char *n = e->d_name;

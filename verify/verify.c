@@ -181,6 +181,7 @@ int ver_verify(const ver_verify_opts *o)
     return e == ENOTDIR || e == ELOOP || e == ENAMETOOLONG ? 2 : 1;
   }
   const int lock = ver_io_lock_dir(o->outdir, err, sizeof err); /* one sweep per folder */
+  const int held = lock < 0 && errno == EAGAIN;
   char *started = calloc((size_t)n + 1, 1);
   if (lock < 0 || !started) {
     fprintf(stderr, "delam verify: %s\n", lock < 0 ? err : "out of memory");
@@ -188,7 +189,7 @@ int ver_verify(const ver_verify_opts *o)
     free(started);
     if (lock >= 0)
       close(lock);
-    return 2;
+    return held ? 2 : 1;
   }
   ver_pool_catch();
   const double w0 = ver_now_wall();

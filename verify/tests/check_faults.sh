@@ -17,7 +17,8 @@
 #                is writing exits 2 naming the folder and the first's pid, and touches
 #                nothing (the first's scene.ini still says ppc 4, its summary.json is
 #                its own), and `delam check` refuses the folder while it is written;
-#                once the first has ended, the same second run works there.
+#                once the first has ended, the same second run works there; a second
+#                verify into a folder a verify is writing is refused the same way.
 #   out-*        --out that is a regular file, a path under one, a symlink loop: exit 2
 #                naming it; a full disk (a 300 KiB tmpfs, where mount is allowed): exit 1
 #                naming the file that could not be written and why, no *.tmp and no
@@ -240,6 +241,15 @@ stop_extra() { # verify: verify.json says 130; every case summary says complete:
 }
 stop_cmd TERM stop-verify-sigterm "$delam" verify --quick --jobs 2 --out v
 stop_cmd INT stop-verify-rerun-sigint "$delam" verify --quick --jobs 2 --out v
+# a second sweep (here --merge) into a folder a sweep is writing: refused, pid named
+"$delam" verify --quick --jobs 2 --out v >/dev/null 2>&1 &
+pid=$!
+for _ in $(seq 100); do [ -n "$(descendants "$pid")" ] && break; sleep 0.1; done
+timeout 60 "$delam" verify --merge v >/dev/null 2>err.txt
+rc=$?
+result writer-verify-refused "$(expect 2 "v: another delam process \\(pid $pid\\) is writing this folder")"
+kill -TERM "$pid"
+wait "$pid"
 stop_cmd HUP stop-verify-sighup "$delam" verify --quick --jobs 2 --out v
 # SIGKILL cannot be caught: the cases get SIGTERM from the system as their parent dies
 "$delam" verify --quick --jobs 2 --out v >/dev/null 2>&1 &
