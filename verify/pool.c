@@ -9,8 +9,8 @@
 #include <fcntl.h>
 #include <signal.h>
 #include <stdio.h>
-#include <string.h>
 #include <stdlib.h>
+#include <string.h>
 #include <sys/types.h>
 #include <sys/wait.h>
 #ifdef __linux__
@@ -22,7 +22,7 @@
 #include "io.h"
 #include "pool.h"
 
-/* The signal SIGINT or SIGTERM that stopped the command (0: none), set by the handler
+/* The signal (SIGINT, SIGTERM, SIGHUP) that stopped the command (0: none), set by the handler
  * ver_pool_catch installs.  Global because a signal handler can reach nothing else; a
  * forked child keeps its own copy, which its ver_run polls (ver_pool_stop_flag). */
 static volatile sig_atomic_t caught;
