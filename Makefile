@@ -55,8 +55,8 @@ check-asan: deps $(BUILD_ASAN)/build.ninja
 FUZZ_CC ?= clang
 FUZZ_TIME ?= 60
 FUZZ_DEBS = clang libclang-rt-dev
-FUZZ_SRC = fuzz/fuzz_scene.c verify/scene.c verify/scene_check.c verify/scene_ini.c verify/datadir.c \
-  verify/build_info.c $(wildcard kernel/*.c)
+FUZZ_SRC = fuzz/fuzz_scene.c verify/scene.c verify/scene_keys.c verify/scene_method.c verify/scene_check.c \
+  verify/scene_ini.c verify/datadir.c verify/build_info.c $(wildcard kernel/*.c)
 # build_info.c reads two headers that meson generates into $(BUILD)/verify.
 FUZZ_GEN = $(BUILD)/verify/delam_config.h $(BUILD)/verify/delam_vcs.h
 $(FUZZ_GEN): $(BUILD)/build.ninja

@@ -201,6 +201,11 @@ double mpm_scene_path_halfwidth(const mpm_scene *sc);
 mpm_status mpm_scene_check(const mpm_scene *sc, char *err, size_t errlen);
 /* Critical time step h / (c sqrt 2), c = sqrt(E1 / rho) (measured; see mpm_sim.c). */
 double mpm_scene_dt_crit(const mpm_scene *sc);
+/* The rules between the method options (mpm_rules.c; mpm_scene_check ends with them):
+ * MPM_OK, or MPM_EINVAL with the first one broken in err, which starts with the key at
+ * fault ("time.damping_beta: ...") and names the allowed values; *key (if key is not
+ * NULL) is that key, "section.key". */
+mpm_status mpm_scene_rules(const mpm_scene *sc, const char **key, char *err, size_t errlen);
 
 /* ---- material ---- */
 typedef struct {
@@ -444,6 +449,7 @@ void mpm_threads_init(mpm_threads *t, int requested, size_t particles);
 typedef struct {
   double L_bc, L_flip, L_scheme, W_head, L_contact, L_debris, L_damp;
   double W_iface;          /* the interface's cohesive work so far (mpm_iface.c): in W_coh */
+  double D_static;         /* the static solver's interface dissipation (mpm_static_iface.c): in D */
   double KE_head0;         /* the head's kinetic energy at the start                   */
   double head_reset;       /* kinetic energy the head's rigid projection removed so far */
   /* this step's held-node and serial sums (mpm_nodes.c, mpm_step.c; reset every step) */

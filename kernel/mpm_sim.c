@@ -70,19 +70,6 @@ mpm_status mpm_scene_check(const mpm_scene *sc, char *err, size_t errlen)
     if (sc->imp_size != MPM_IMP_PARTICLE && sc->imp_size != MPM_IMP_CELL) BAD("imperfection.size must be particle or cell");
     if (sc->path < MPM_PATH_FREE || sc->path > MPM_PATH_IFACE) BAD("decohesion.path must be free, line or interface");
     if (sc->share != MPM_SHARE_STICK && sc->share != MPM_SHARE_LINE) BAD("decohesion.share must be stick or line");
-    if (sc->share == MPM_SHARE_LINE && (sc->path != MPM_PATH_IFACE || sc->alpha_deg != 90.0 || sc->grid_motion != MPM_GRID_STRETCH))
-      BAD("decohesion.share = line needs decohesion.path = interface, alpha = 90 and grid.motion = stretch");
-  }
-  if (sc->model && sc->path == MPM_PATH_IFACE) { /* what mpm_iface.c implements, no more */
-    if (sc->fields != MPM_FIELDS_TWO || sc->shape != MPM_SHAPE_GIMP || sc->scheme != MPM_SCHEME_MUSL)
-      BAD("decohesion.path = interface needs grid.fields = two, grid.shape = gimp and time.scheme = musl");
-    if (sc->model != MPM_DCOH_MODEL1 || sc->q != 1.0 || sc->s0 != sc->snf || sc->eta != 0.0)
-      BAD("decohesion.path = interface implements Model 1 with q = 1, s0 = snf and eta = 0");
-    const double a = sc->alpha_deg * (3.14159265358979323846 / 180.0), c = cos(a) / sin(a);
-    if (!(sin(a) > 0.0) || !(sc->imp_x - sc->imp_y * c > 0.0 && sc->imp_x - sc->imp_y * c < sc->L &&
-                             sc->imp_x + (sc->H - sc->imp_y) * c > 0.0 && sc->imp_x + (sc->H - sc->imp_y) * c < sc->L))
-      BAD("decohesion.path = interface: the line at alpha = %g through the flaw must cross the bar from y = 0 to y = H "
-          "inside 0 < x < L", sc->alpha_deg);
   }
   if (!(sc->h > 0.0)) BAD("grid.h must be > 0");
   if (whole_cells(sc->L, sc->h) < 0 || whole_cells(sc->H, sc->h) < 0)
@@ -101,8 +88,6 @@ mpm_status mpm_scene_check(const mpm_scene *sc, char *err, size_t errlen)
     BAD("a body force needs grid.shape = linear and grid.fields = one");
   if (sc->grid_motion != MPM_GRID_STRETCH && sc->grid_motion != MPM_GRID_FIXED) BAD("grid.motion must be stretch or fixed");
   if (sc->weights != MPM_WEIGHTS_CURRENT && sc->weights != MPM_WEIGHTS_LAID) BAD("grid.weights must be current or laid");
-  if (sc->weights == MPM_WEIGHTS_LAID && sc->grid_motion != MPM_GRID_STRETCH)
-    BAD("grid.weights = laid needs grid.motion = stretch (the laid places follow the grid's stretch)");
   if (sc->shape != MPM_SHAPE_LINEAR && sc->shape != MPM_SHAPE_GIMP) BAD("grid.shape must be linear or gimp");
   if (sc->fields != MPM_FIELDS_ONE && sc->fields != MPM_FIELDS_TWO) BAD("grid.fields must be one or two");
   if (!(sc->dt > 0.0)) BAD("time.dt must be > 0");
@@ -113,16 +98,10 @@ mpm_status mpm_scene_check(const mpm_scene *sc, char *err, size_t errlen)
     BAD("time.damping must be >= 0 and below 1 / time.dt = %g", 1.0 / sc->dt);
   if (!(sc->damping_tau >= 0.0 && isfinite(sc->damping_tau))) BAD("time.damping_tau must be >= 0 (0: 2 L / c)");
   if (!(sc->damping_beta >= 0.0 && isfinite(sc->damping_beta))) BAD("time.damping_beta must be >= 0");
-  if (sc->damping_beta > 0.0 && sc->scheme != MPM_SCHEME_MUSL)
-    BAD("time.damping_beta needs time.scheme = musl (usl: fig8.ini's beta = h / c throws a "
-        "particle off the grid after the cut at h 4, 1 ppc; usf, usavg: two strain passes)");
   if (sc->damping_from != MPM_DAMP_CUT && sc->damping_from != MPM_DAMP_START) BAD("time.damping_from must be cut or start");
   if (sc->damping_about != MPM_DAMP_DRIFT && sc->damping_about != MPM_DAMP_PARTS) BAD("time.damping_about must be drift or parts");
-  if (sc->damping > 0.0 && sc->node_mass == MPM_NODEMASS_LIMITED && sc->shape == MPM_SHAPE_LINEAR &&
-      (sc->scheme == MPM_SCHEME_USL || sc->scheme == MPM_SCHEME_USAVG))
-    BAD("time.damping needs grid.node_mass = lumped here (the mass limit's v^L is not the node's velocity)");
   if (!(sc->end_delta > 0.0)) BAD("run.end_delta must be > 0");
-  return MPM_OK;
+  return mpm_scene_rules(sc, NULL, err, errlen); /* the rules between options, last */
 #undef BAD
 }
 
@@ -453,7 +432,7 @@ void mpm_sim_energy(const mpm_sim *s, mpm_energy *e)
   e->SE = se;
   if (s->g && s->g->fld && s->g->fld->ifc) { /* the interface's (mpm_iface.c) */
     wc += s->led.W_iface;
-    dd += mpm_iface_D(s);
+    dd += mpm_iface_D(s) + s->led.D_static;
   }
   e->W_coh = wc;
   e->D = dd;

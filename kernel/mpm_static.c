@@ -63,6 +63,7 @@ void mpm_static_free(mpm_static *q)
                q->tsep, q->tpath};
   for (size_t i = 0; i < sizeof f / sizeof f[0]; i++)
     free(f[i]);
+  mpm_static_iface_free(q);
   mpm_lin_free(q->lin);
   mpm_dwork_free(q->dw);
   free(q);
@@ -79,11 +80,6 @@ static mpm_status refuse(const mpm_scene *sc, char *err, size_t errlen)
   if (sc->le_mode == MPM_LE_ROW || sc->le_mode == MPM_LE_ZONE) {
     snprintf(err, errlen, "solver.type = static: decohesion.Le = %s is measured as an explicit run goes; use cell, "
              "particle or staircase", sc->le_mode == MPM_LE_ROW ? "row" : "zone");
-    return MPM_EINVAL;
-  }
-  if (sc->path == MPM_PATH_IFACE) {
-    snprintf(err, errlen, "solver.type = static: decohesion.path = interface is not solved statically yet; use "
-             "path = free or line");
     return MPM_EINVAL;
   }
   if (sc->shape == MPM_SHAPE_LINEAR && sc->ppc == 1) {
@@ -161,7 +157,7 @@ static mpm_status solve(mpm_static *q, const double *b, double *x)
 /* Adds du (unknowns) to the trial displacement. */
 static void add_free(mpm_static *q, const double *du, double a)
 {
-  for (size_t i = 0; i < 2 * q->nn; i++)
+  for (size_t i = 0; i < 2 * q->nslot; i++)
     if (q->eq[i] >= 0)
       q->Ut[i] += a * du[q->eq[i]];
 }
@@ -197,7 +193,7 @@ static double merit(const mpm_static *q, double Fref, double g, int grip)
 static int increment(mpm_static *q, int *iters)
 {
   const int n = q->nfree;
-  memcpy(q->Ut, q->Un, sizeof(double) * 2 * q->nn);
+  memcpy(q->Ut, q->Un, sizeof(double) * 2 * q->nslot);
   q->dt = q->dn;
   if (!q->have_pred && predictor(q) != MPM_OK)
     return 0;
@@ -282,10 +278,16 @@ static void scale_to_initiation(mpm_static *q)
     if (se > 0.0)
       kmin = fmin(kmin, 1.0 / se);
   }
+  for (int pi = 0; pi < q->npair; pi++) { /* the interface's ties */
+    const mpm_dstate *o = &q->ptr[pi];
+    const double se = mpm_dcoh_F(&q->imat, o->sxx, o->syy, o->sxy, 0.0) + 1.0;
+    if (q->pA[pi] > 0.0 && se > 0.0)
+      kmin = fmin(kmin, 1.0 / se);
+  }
   if (!(kmin > 1.0) || !isfinite(kmin))
     return;
   const double k = kmin * (1.0 - 1e-12) / MPM_QS_NEL;
-  for (size_t i = 0; i < 2 * q->nn; i++)
+  for (size_t i = 0; i < 2 * q->nslot; i++)
     if (q->eq[i] >= 0)
       q->Ut[i] *= k;
   q->dt *= k;
@@ -331,7 +333,7 @@ static void commit(mpm_static *q)
     q->ch_d = (q->dt - q->dn) / q->pk_d;
     q->ch_P = (q->Pg - s->P_grip) / fmax(s->P_peak, q->Pg);
   }
-  memcpy(q->Un, q->Ut, sizeof(double) * 2 * q->nn);
+  memcpy(q->Un, q->Ut, sizeof(double) * 2 * q->nslot);
   q->dn = q->dt;
   q->Dn = q->Dt;
   q->Cn = q->Ct;
@@ -342,6 +344,8 @@ static void commit(mpm_static *q)
   s->ugrip = q->dt;
   s->step++;
   s->t = (double)s->step;
+  if (q->iface)
+    mpm_static_iface_commit(q);
   mpm_sim_cut(s);
 }
 

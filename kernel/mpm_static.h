@@ -37,13 +37,16 @@ struct mpm_static {
   int *node;              /* np x MPM_ST_MAX node indices                                */
   double *N, *Gx, *Gy;    /* np x MPM_ST_MAX weights and gradients at the reference place */
   size_t nn;              /* grid nodes                                                 */
-  int *eq;                /* 2 nn: the unknown of each component, or MPM_DOF_*           */
-  double *held;           /* 2 nn: the value of a held component (MPM_DOF_HELD)           */
+  size_t nslot;           /* displacement slots: a node's, and with the interface a second
+                             one (nn + node) for the particles on the line's far side where
+                             the node is split; node[] holds slots                      */
+  int *eq;                /* 2 nslot: the unknown of each component, or MPM_DOF_*         */
+  double *held;           /* 2 nslot: the value of a held component (MPM_DOF_HELD)        */
   int nfree;              /* unknowns                                                   */
   int pinned;             /* 1 once the cut part's vertical rigid motion is held          */
   int *map;               /* per particle, (2 MPM_ST_MAX)^2 positions in the values, -1 off */
   mpm_lin *lin;
-  /* displacements: committed (Un) and trial (Ut), 2 nn each; the grip's delta */
+  /* displacements: committed (Un) and trial (Ut), 2 nslot each; the grip's delta */
   double *Un, *Ut;
   double dn, dt;
   /* vectors over the unknowns */
@@ -72,7 +75,27 @@ struct mpm_static {
   double *pdir;           /* d u / d delta at the committed state (unknowns)             */
   double pden;            /* d C / d delta along pdir                                    */
   mpm_static_stats st;
+  /* decohesion.path = interface (mpm_static_iface.c): the line's law between the two
+   * copies of each split node, as a stiff elastic tie until it initiates */
+  int iface;
+  int npair;              /* split nodes                                                */
+  int *pnode;             /* their node indices                                        */
+  double *pA;             /* their share of the line, a_0 . n with a_0 = sum over the near
+                             side's particles of V grad N (the nodal force of a uniform
+                             traction, so a uniform state is in equilibrium)            */
+  mpm_dstate *pst, *ptr;  /* the law's committed and trial state per pair               */
+  double *pw;             /* trial: the law's work this increment, times pA             */
+  double *pf;             /* trial: the law's force on each pair's two slots (x, y of slot 0,
+                             then of slot 1)                                           */
+  size_t kpair;           /* where the pairs' entries start in map                      */
+  mpm_material imat;      /* the law as a material of the update: E1 = G = k0, E2 = 0, Le 1 */
 };
+
+/* mpm_static_iface.c */
+mpm_status mpm_static_iface_setup(mpm_static *q, char *err, size_t errlen);
+void mpm_static_iface_eval(mpm_static *q, int tangent, double *Ax, double *D, double *C);
+void mpm_static_iface_commit(mpm_static *q);
+void mpm_static_iface_free(mpm_static *q);
 
 /* mpm_static_asm.c: the stencils and unknowns (setup), the trial state of every particle
  * from Ut with the residual, tangent and the dissipation's gradient (eval). */

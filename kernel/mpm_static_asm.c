@@ -75,6 +75,8 @@ mpm_status mpm_static_setup(mpm_static *q, char *err, size_t errlen)
     np += p->mat[k] != MPM_MAT_HEAD && p->mat[k] != MPM_MAT_DEBRIS;
   q->np = np;
   q->nn = (size_t)s->g->nnx * (size_t)s->g->nny;
+  q->iface = s->sc.model != MPM_DCOH_NONE && s->sc.path == MPM_PATH_IFACE;
+  q->nslot = q->iface ? 2 * q->nn : q->nn;
   const size_t M = MPM_ST_MAX;
   q->pid = malloc(np * sizeof *q->pid);
   q->cnt = malloc(np * sizeof *q->cnt);
@@ -82,10 +84,10 @@ mpm_status mpm_static_setup(mpm_static *q, char *err, size_t errlen)
   q->N = malloc(np * M * sizeof(double));
   q->Gx = malloc(np * M * sizeof(double));
   q->Gy = malloc(np * M * sizeof(double));
-  q->eq = malloc(2 * q->nn * sizeof *q->eq);
-  q->held = calloc(2 * q->nn, sizeof(double));
-  q->Un = calloc(2 * q->nn, sizeof(double));
-  q->Ut = calloc(2 * q->nn, sizeof(double));
+  q->eq = malloc(2 * q->nslot * sizeof *q->eq);
+  q->held = calloc(2 * q->nslot, sizeof(double));
+  q->Un = calloc(2 * q->nslot, sizeof(double));
+  q->Ut = calloc(2 * q->nslot, sizeof(double));
   double **t[] = {&q->tsxx, &q->tsyy, &q->tsxy, &q->tlam, &q->tupn, &q->tupt, &q->tw};
   int ok = q->pid && q->cnt && q->node && q->N && q->Gx && q->Gy && q->eq && q->held && q->Un && q->Ut;
   for (size_t i = 0; ok && i < sizeof t / sizeof t[0]; i++)
@@ -103,7 +105,7 @@ mpm_status mpm_static_setup(mpm_static *q, char *err, size_t errlen)
     q->cnt[c] = stencil(s, p->x0[k], p->y0[k], q->node + c * M, q->N + c * M, q->Gx + c * M, q->Gy + c * M);
     c++;
   }
-  return MPM_OK;
+  return q->iface ? mpm_static_iface_setup(q, err, errlen) : MPM_OK;
 }
 
 /* Numbers the unknowns (active components that are not held) and builds the tangent's
@@ -111,20 +113,23 @@ mpm_status mpm_static_setup(mpm_static *q, char *err, size_t errlen)
 mpm_status mpm_static_number(mpm_static *q, char *err, size_t errlen)
 {
   const mpm_sim *s = q->s;
-  const size_t M = MPM_ST_MAX, nn = q->nn;
-  for (size_t i = 0; i < 2 * nn; i++)
+  const size_t M = MPM_ST_MAX, nn = q->nn, ns = q->nslot;
+  for (size_t i = 0; i < 2 * ns; i++)
     q->eq[i] = MPM_DOF_OFF;
   for (size_t c = 0; c < q->np; c++)
     for (int a = 0; a < q->cnt[c]; a++)
       q->eq[2 * (size_t)q->node[c * M + (size_t)a]] = q->eq[2 * (size_t)q->node[c * M + (size_t)a] + 1] = 0;
-  for (int i = 0; i < s->ngrip; i++)
-    if (q->eq[2 * (size_t)s->grip[i]] != MPM_DOF_OFF)
-      q->eq[2 * (size_t)s->grip[i]] = MPM_DOF_GRIP;
-  for (int i = 0; i < s->nfixx; i++)
-    if (q->eq[2 * (size_t)s->fixx[i]] != MPM_DOF_OFF)
-      q->eq[2 * (size_t)s->fixx[i]] = MPM_DOF_HELD;
-  if (q->eq[2 * (size_t)s->fixy + 1] != MPM_DOF_OFF)
-    q->eq[2 * (size_t)s->fixy + 1] = MPM_DOF_HELD;
+  /* a held node holds both its slots */
+  for (size_t o = 0; o < ns; o += nn) {
+    for (int i = 0; i < s->ngrip; i++)
+      if (q->eq[2 * (o + (size_t)s->grip[i])] != MPM_DOF_OFF)
+        q->eq[2 * (o + (size_t)s->grip[i])] = MPM_DOF_GRIP;
+    for (int i = 0; i < s->nfixx; i++)
+      if (q->eq[2 * (o + (size_t)s->fixx[i])] != MPM_DOF_OFF)
+        q->eq[2 * (o + (size_t)s->fixx[i])] = MPM_DOF_HELD;
+    if (q->eq[2 * (o + (size_t)s->fixy) + 1] != MPM_DOF_OFF)
+      q->eq[2 * (o + (size_t)s->fixy) + 1] = MPM_DOF_HELD;
+  }
   if (q->pinned) {
     /* the gripped part's vertical rigid motion, free once the bar is cut: held at the
      * gripped node nearest mid-height, where it is now (no force: the part is unloaded) */
@@ -138,18 +143,19 @@ mpm_status mpm_static_number(mpm_static *q, char *err, size_t errlen)
         best = (int)n;
       }
     }
-    if (best >= 0) {
-      q->eq[2 * (size_t)best + 1] = MPM_DOF_HELD;
-      q->held[2 * (size_t)best + 1] = q->Un[2 * (size_t)best + 1];
-    }
+    for (size_t o = 0; best >= 0 && o < ns; o += nn)
+      if (q->eq[2 * (o + (size_t)best) + 1] != MPM_DOF_OFF) {
+        q->eq[2 * (o + (size_t)best) + 1] = MPM_DOF_HELD;
+        q->held[2 * (o + (size_t)best) + 1] = q->Un[2 * (o + (size_t)best) + 1];
+      }
   }
   int n = 0;
-  for (size_t i = 0; i < 2 * nn; i++)
+  for (size_t i = 0; i < 2 * ns; i++)
     if (q->eq[i] == 0)
       q->eq[i] = n++;
   q->nfree = n;
   /* the pattern: every pair of free components of a particle's stencil */
-  size_t nz = 0;
+  size_t nz = 16 * (size_t)q->npair; /* a pair: both slots' x and y */
   for (size_t c = 0; c < q->np; c++)
     nz += 4 * (size_t)q->cnt[c] * (size_t)q->cnt[c];
   int *ti = malloc((nz ? nz : 1) * sizeof *ti), *tj = malloc((nz ? nz : 1) * sizeof *tj);
@@ -173,6 +179,21 @@ mpm_status mpm_static_number(mpm_static *q, char *err, size_t errlen)
           ti[m] = ea;
           tj[m] = eb;
           q->map[k] = (int)m++; /* the triplet's number until the map is filled below */
+        }
+      }
+  }
+  q->kpair = k;
+  for (int pi = 0; ok && pi < q->npair; pi++) {
+    const size_t nd = (size_t)q->pnode[pi];
+    const size_t sl[2] = {nd, nn + nd};
+    for (int a = 0; a < 4; a++)
+      for (int b = 0; b < 4; b++, k++) {
+        const int ea = q->eq[2 * sl[a / 2] + (size_t)(a % 2)], eb = q->eq[2 * sl[b / 2] + (size_t)(b % 2)];
+        q->map[k] = -1;
+        if (ea >= 0 && eb >= 0) {
+          ti[m] = ea;
+          tj[m] = eb;
+          q->map[k] = (int)m++;
         }
       }
   }
@@ -201,9 +222,9 @@ mpm_status mpm_static_eval(mpm_static *q, int tangent)
   const double t0 = now();
   mpm_sim *s = q->s;
   mpm_particles *p = s->p;
-  const size_t M = MPM_ST_MAX, nn = q->nn;
+  const size_t M = MPM_ST_MAX, ns = q->nslot;
   double *Ut = q->Ut, *Ax = tangent ? mpm_lin_values(q->lin) : NULL;
-  for (size_t i = 0; i < 2 * nn; i++)
+  for (size_t i = 0; i < 2 * ns; i++)
     if (q->eq[i] == MPM_DOF_GRIP)
       Ut[i] = -q->dt;
     else if (q->eq[i] == MPM_DOF_HELD)
@@ -301,6 +322,21 @@ mpm_status mpm_static_eval(mpm_static *q, int tangent)
       }
     }
     k += 4 * (size_t)cn * (size_t)cn;
+  }
+  if (q->iface) { /* the line's law between the split nodes' two slots */
+    double Dl = 0.0, Cl = 0.0;
+    mpm_static_iface_eval(q, tangent, Ax, &Dl, &Cl);
+    D += Dl;
+    C += Cl;
+    for (int pi = 0; pi < q->npair; pi++) /* the law's forces at held slots are loads too */
+      for (int sd = 0; sd < 2; sd++) {
+        const size_t sl = sd ? q->nn + (size_t)q->pnode[pi] : (size_t)q->pnode[pi];
+        const double fx = q->pf[4 * pi + 2 * sd];
+        if (q->eq[2 * sl] == MPM_DOF_GRIP)
+          Pg -= fx;
+        else if (q->eq[2 * sl] == MPM_DOF_HELD)
+          Pf += fx;
+      }
   }
   q->Pg = Pg;
   q->Pf = Pf;

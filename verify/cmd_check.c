@@ -55,6 +55,9 @@ static void usage(FILE *f)
     "  --scene SCENE     the scene the run was meant to compute (a file, or a name: fig6)\n"
     "  --h H, --ppc N    the run's grid spacing and particles per cell (default: from\n"
     "                    DIR/scene.ini when delam wrote the folder, else the scene's)\n"
+    "  --method NAME     the method preset the run used (paper, band or interface),\n"
+    "                    as for delam run (default: DIR/scene.ini's when delam wrote\n"
+    "                    the folder, else the scene's)\n"
     "  --set S.K=V       set a key of the scene, as for delam run (repeatable)\n"
     "  --particles FILE  the final particle CSV (default DIR/final.csv when present)\n"
     "  --out FILE        where check.json goes (default DIR/check.json)\n"
@@ -71,13 +74,13 @@ static void usage(FILE *f)
 }
 
 /* The scene the folder is judged against: SCENE with --set, h and ppc. */
-static int build_scene(const char *arg, const char *dir, double h, double ppc, const char **sets, int nset,
-                       ver_scene *vs, char *err, size_t errlen)
+static int build_scene(const char *arg, const char *dir, const char *method, double h, double ppc, const char **sets,
+                       int nset, ver_scene *vs, char *err, size_t errlen)
 {
   char path[4400], buf[160], num[40];
   if (ver_scene_resolve(arg, path, sizeof path, err, errlen) || ver_scene_parse(path, vs, err, errlen))
     return 2;
-  if (h <= 0 || ppc <= 0) { /* a folder delam wrote says its own */
+  if (h <= 0 || ppc <= 0 || !method) { /* a folder delam wrote says its own */
     char own[1400];
     ver_scene ds;
     struct stat st;
@@ -92,7 +95,14 @@ static int build_scene(const char *arg, const char *dir, double h, double ppc, c
       /* rows of equilibrium states, not interval averages: judged as such */
       if (ds.sc.solver == MPM_SOLVER_STATIC && ver_scene_set(vs, "solver.type=static", err, errlen))
         return 2;
+      if (!method && ds.preset >= 0 && ds.preset != vs->preset)
+        method = ver_method_name(ds.preset); /* the run's --method */
     }
+  }
+  if (method) {
+    snprintf(buf, sizeof buf, "method.preset=%s", method);
+    if (ver_scene_set(vs, buf, err, errlen))
+      return 2;
   }
   if (h > 0) {
     ver_scene_fmt_num(vs->sc.dt * h / vs->sc.h, num, sizeof num); /* the file's Courant number */
@@ -194,7 +204,7 @@ static int num_opt(const char *opt, const char *v, double *out)
 
 /* The command line of delam check. */
 typedef struct {
-  const char *scene, *dir, *out, *pfile, *sets[VER_MAX_OVER];
+  const char *scene, *dir, *out, *pfile, *method, *sets[VER_MAX_OVER];
   int nset;
   double h, ppc;
 } check_opts;
@@ -209,7 +219,8 @@ static int check_args(int argc, char **argv, check_opts *o)
     if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
       usage(stdout);
       return 1;
-    } else if (!strcmp(a, "--scene") || !strcmp(a, "--out") || !strcmp(a, "--particles") || !strcmp(a, "--set")) {
+    } else if (!strcmp(a, "--scene") || !strcmp(a, "--out") || !strcmp(a, "--particles") || !strcmp(a, "--set") ||
+               !strcmp(a, "--method")) {
       if (!v) {
         fprintf(stderr, PROG ": %s needs a value (see delam check --help)\n", a);
         return 2;
@@ -217,6 +228,7 @@ static int check_args(int argc, char **argv, check_opts *o)
       if (!strcmp(a, "--scene")) o->scene = v;
       else if (!strcmp(a, "--out")) o->out = v;
       else if (!strcmp(a, "--particles")) o->pfile = v;
+      else if (!strcmp(a, "--method")) o->method = v;
       else if (o->nset < VER_MAX_OVER) o->sets[o->nset++] = v;
       else { fprintf(stderr, PROG ": more than %d --set\n", VER_MAX_OVER); return 2; }
       i++;
@@ -464,7 +476,7 @@ int ver_cmd_check(int argc, char **argv)
   static ver_case c; /* large; one per process */
   memset(&c, 0, sizeof c);
   char err[4800];
-  if (build_scene(scene, dir, o.h, o.ppc, o.sets, o.nset, &c.vs, err, sizeof err)) {
+  if (build_scene(scene, dir, o.method, o.h, o.ppc, o.sets, o.nset, &c.vs, err, sizeof err)) {
     fprintf(stderr, PROG ": %s\n", err);
     return 2;
   }

@@ -36,7 +36,11 @@ static void usage(FILE *f)
     "  --ppc N           particles per cell, a perfect square (1, 4, 9, ..., 1024)\n"
     "  --dt DT           time step (must be below the CFL bound h / (c sqrt 2))\n"
     "  --until DELTA     run to this end displacement exactly (no early stop)\n"
-    "  --set S.K=V       set key K of section S, as in the file (repeatable)\n"
+    "  --method NAME     the run's method is the preset NAME (paper, band or\n"
+    "                    interface) instead of the file's: every method key takes\n"
+    "                    NAME's value or its default; --set still applies after it\n"
+    "  --set S.K=V       set key K of section S, as in the file (repeatable; grid.h\n"
+    "                    scales dt as --h does unless time.dt was set before it)\n"
     "  --solver NAME     explicit (the paper's dynamic step) or static (load\n"
     "                    increments in equilibrium; the same as --set solver.type=NAME)\n"
     "  --allow-unstable  accept a time step at or above the CFL bound\n"
@@ -63,10 +67,15 @@ static int num_arg(const char *opt, const char *v, double *out)
 
 /* The command line's overrides, as --set assignments (dt scaled with h unless given:
  * the file's Courant number is kept); 0, or 2 with err. */
-static int apply_overrides(ver_scene *vs, double h, double ppc, double dt, double until, const char *const *sets,
-                           int nset, char *err, size_t len)
+static int apply_overrides(ver_scene *vs, const char *method, double h, double ppc, double dt, double until,
+                           const char *const *sets, int nset, char *err, size_t len)
 {
   char buf[128], num[40];
+  if (method) { /* first: the --set overrides after it hold */
+    snprintf(buf, sizeof buf, "method.preset=%s", method);
+    if (ver_scene_set(vs, buf, err, len))
+      return 2;
+  }
   if (h > 0 && dt <= 0 && vs->sc.h > 0)
     dt = vs->sc.dt * h / vs->sc.h;
   const char *key[4] = {"grid.h", "grid.ppc", "time.dt", "run.end_delta"};
@@ -153,7 +162,7 @@ static void catch_signals(void)
 
 int ver_cmd_run(int argc, char **argv)
 {
-  const char *path = NULL, *outdir = NULL;
+  const char *path = NULL, *outdir = NULL, *method = NULL;
   const char *sets[64];
   char solver_set[80];
   int nset = 0, quiet = 0, allow = 0, threads = 0;
@@ -171,6 +180,9 @@ int ver_cmd_run(int argc, char **argv)
     } else if (!strcmp(a, "--out")) {
       if (!v) { fprintf(stderr, "delam run: --out needs a folder\n"); return 2; }
       outdir = v; i++;
+    } else if (!strcmp(a, "--method")) {
+      if (!v || v[0] == '-') { fprintf(stderr, "delam run: --method needs a preset (paper, band or interface)\n"); return 2; }
+      method = v; i++;
     } else if (!strcmp(a, "--h")) { r = num_arg(a, v, &h); i++; }
     else if (!strcmp(a, "--ppc")) { r = num_arg(a, v, &ppc); i++; }
     else if (!strcmp(a, "--dt")) { r = num_arg(a, v, &dt); i++; }
@@ -216,7 +228,7 @@ int ver_cmd_run(int argc, char **argv)
     fprintf(stderr, "%s\n", err);
     return 2;
   }
-  if (apply_overrides(&vs, h, ppc, dt, until, sets, nset, err, sizeof err)) {
+  if (apply_overrides(&vs, method, h, ppc, dt, until, sets, nset, err, sizeof err)) {
     fprintf(stderr, "%s\n", err);
     return 2;
   }

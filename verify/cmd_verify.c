@@ -10,6 +10,7 @@
 
 #include "cmd.h"
 #include "datadir.h"
+#include "scene.h"
 #include "verify.h"
 
 static void usage(FILE *f)
@@ -34,6 +35,9 @@ static void usage(FILE *f)
     "                 snf and stf exchanged (the other mode; case ids end in -swap), at\n"
     "                 h = 4, 2 and ppc = 1, 4: the files' method on bands and modes they\n"
     "                 were not written for\n"
+    "  --method NAME  every case with the method preset NAME (paper, band or interface)\n"
+    "                 instead of its file's, as delam run --method; case ids say\n"
+    "                 -method=NAME\n"
     "  --jobs N       cases run in parallel (default: the number of cores)\n"
     "  --out DIR      per-case folders DIR/<case-id>/, DIR/verify.json, DIR/verify.csv\n"
     "                 (default out/verify-quick, out/verify-full or out/verify-angles)\n"
@@ -55,7 +59,7 @@ static void usage(FILE *f)
 int ver_cmd_verify(int argc, char **argv)
 {
   const char *scenes = ver_scene_dir();
-  ver_verify_opts o = {0, 0, 0, NULL, scenes ? scenes : "data/scenes", "delam", 0, 0, 0};
+  ver_verify_opts o = {0, 0, 0, NULL, scenes ? scenes : "data/scenes", "delam", 0, 0, NULL, 0};
   int quick = 0;
   for (int i = 1; i < argc; i++) {
     const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
@@ -78,6 +82,15 @@ int ver_cmd_verify(int argc, char **argv)
         return 2;
       }
       o.jobs = (int)j;
+      i++;
+    } else if (!strcmp(a, "--method")) {
+      if (!v || ver_method_find(v) < 0) {
+        char all[64];
+        ver_method_list(all, sizeof all);
+        fprintf(stderr, "delam verify: --method: '%s' is not a preset (allowed: %s)\n", v ? v : "", all);
+        return 2;
+      }
+      o.method = v;
       i++;
     } else if (!strcmp(a, "--out") || !strcmp(a, "--merge") || !strcmp(a, "--scenes")) {
       if (!v || !v[0]) {

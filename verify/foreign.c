@@ -272,6 +272,15 @@ void ver_foreign_measure(ver_case *c, const ver_table *ld, const ver_table *en, 
       c->delta_sep = sep.delta_sep;
     ver_sep_free(&sep);
   }
+  if (sc->solver == MPM_SOLVER_STATIC) { /* rows are states, not a time series: no window */
+    c->delta_sep = NAN;
+    int past = 0;
+    for (size_t i = 0; i < n && isnan(c->delta_sep); i++) {
+      past = past || P[i] >= c->peak_P;
+      if (past && P[i] <= c->vs.sep_load_frac * c->peak_P)
+        c->delta_sep = d[i];
+    }
+  }
   c->P_after = ver_load_after(d, P, n, c->delta_sep, c->peak_P, &c->P_after_t, &c->P_after_c);
   if (en) { /* W_ext, KE, SE, W_coh, D */
     const size_t m = (size_t)en->n;

@@ -15,8 +15,8 @@
 #include "mpm.h"
 
 #define VER_MAX_SNAP 16
-#define VER_NKEYS 53
-#define VER_NSECT 12
+#define VER_NKEYS 54
+#define VER_NSECT 14
 #define VER_MAX_OVER 32
 
 typedef struct {
@@ -30,6 +30,7 @@ typedef struct {
   double sep_load_frac;       /* run: separation detected when |P| < this fraction of the peak */
   int allow_unstable;         /* accept dt above the CFL bound                           */
   int damping_beta_cell;      /* time.damping_beta = cell: h / sqrt(E / rho), likewise      */
+  int preset;                 /* method.preset: a preset of scene_method.c (-1: none)      */
   int damping_critical;       /* time.damping = critical: the rate is set from the bar, to
                                  2 pi sqrt(E / rho) / L, after the file and each override */
   int line[VER_NKEYS];        /* line each key was set on (0: default, -1: command line) */
@@ -41,8 +42,26 @@ typedef struct {
   double file_h, file_dt;     /* grid.h and time.dt as the file gave them               */
 } ver_scene;
 
-/* The overrides ("section.key=value") that turn any scene file's method into the
- * paper's (scene_bar.c). */
+/* Method presets (scene_method.c): each a list of "section.key=value" rows of method
+ * keys; a method key a preset does not name takes its default.  A file's
+ * [method] preset gives the keys the file does not set (ver_method_apply_file, with
+ * line, the preset's line, for messages); the override method.preset=NAME (delam run
+ * --method NAME) makes every method key NAME's, dropping the file's and the earlier
+ * overrides of method keys (ver_method_apply_cmd).  Both use vs->preset. */
+int ver_method_find(const char *name);        /* index of a preset, or -1            */
+const char *ver_method_name(int preset);      /* its name; "none" for -1             */
+int ver_method_rows(int preset, const char *const **sets); /* its rows: how many     */
+int ver_method_key(int ki);
+const char *ver_method_where(const ver_scene *vs); /* "scene file", "command line" or "none" */                   /* 1 if key ki of the table is a method key */
+void ver_method_list(char *buf, size_t len);  /* "paper, band or interface"         */
+int ver_method_apply_file(ver_scene *vs, int line, char *msg, size_t len);
+int ver_method_apply_cmd(ver_scene *vs, char *msg, size_t len);
+/* The method keys whose values differ from the preset's (or, without one, from their
+ * defaults), as "section.key=value" into out: how many (at most max). */
+int ver_method_overrides(const ver_scene *vs, char out[][64], int max);
+
+/* The paper preset's rows: the overrides that turn any scene file's method into the
+ * paper's (the report's and the bench's paper runs). */
 #define VER_PAPER_NSETS 13
 extern const char *const ver_paper_sets[VER_PAPER_NSETS];
 
@@ -50,7 +69,7 @@ extern const char *const ver_paper_sets[VER_PAPER_NSETS];
  * method it ran until it took the cohesive interface (scene_bar.c; docs/interface.md).
  * Returns how many (at most VER_BAND_NSETS) and points *sets at them; 0 for a scene
  * without one. */
-#define VER_BAND_NSETS 3
+#define VER_BAND_NSETS 6
 int ver_band_sets(const char *scene, const char *const **sets);
 
 /* Reads and validates a scene file.  Returns 0, or 2 with one line in err. */
@@ -61,7 +80,9 @@ int ver_scene_load(const char *path, ver_scene *vs, char *err, size_t errlen);
 int ver_scene_parse(const char *path, ver_scene *vs, char *err, size_t errlen);
 /* The same for a scene held in memory; name stands for the file in messages. */
 int ver_scene_parse_string(const char *text, const char *name, ver_scene *vs, char *err, size_t errlen);
-/* Sets one key ("section.key=value" style override, as from --set). */
+/* Sets one key ("section.key=value" style override, as from --set).  grid.h=H also
+ * scales time.dt with it, keeping the file's Courant number as --h does, unless time.dt
+ * was set on the command line before it. */
 int ver_scene_set(ver_scene *vs, const char *assignment, char *err, size_t errlen);
 /* Checks presence, ranges, the rules between keys (h divides L and H, ppc a square,
  * the CFL bound, sizes the kernel can allocate) and fills the defaults.  Returns 0 or 2. */

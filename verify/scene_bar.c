@@ -1,8 +1,7 @@
 /*
  * scene_bar.c - what the paper fixes about a scene, in one place: the conversion to the
  * closed-form bar of analytic/ (ver_scene_bar; verify, report and bench all take their
- * analytic numbers from here) and the overrides that give the paper's method
- * (ver_paper_sets; the report's and the bench's paper runs) and the band method the
+ * analytic numbers from here) and the overrides that give the band method the
  * inclined files ran before the interface (ver_band_sets; the report's and the bench's).
  */
 #include <string.h>
@@ -27,28 +26,22 @@ int ver_scene_bar(const mpm_scene *sc, ana_bar *bar, char *err, size_t len)
   return ana_bar_init(&p, bar, err, (int)len) == ANA_OK ? 0 : 2;
 }
 
-/* The paper's method where the scene table has the keys for another one: its bilinear
- * shapes, one field, Le of the cell, the snf-only imperfection (0.9) at one particle, every
- * particle free to soften, a fixed grid, no damping and USL, with the nodal mass limit, which changes
- * nothing until a node passes its stable stiffness-to-mass ratio
- * (the paper's lumped USL blows up (KE + SE at the end 5e3 to 3e13) in 14 of 24 inclined
- * runs at h 8-2, 1 and 4 ppc; docs/bands.md sec. 4). */
-const char *const ver_paper_sets[VER_PAPER_NSETS] = {
-    "grid.shape=linear",         "grid.fields=one", "decohesion.Le=cell",
-    "imperfection.stf_factor=1", "time.scheme=usl", "grid.node_mass=limited", "time.damping=0", "time.damping_beta=0",
-    "imperfection.size=particle", "decohesion.path=free", "grid.motion=fixed", "decohesion.reversed_shear=even",
-    "imperfection.snf_factor=0.9"};
-
-/* The band method as fig7.ini and fig8.ini ran it until session 16: the band held to its
- * line with the paper's flaw on snf (fig8: on stf too, shear governs), and fig7 on the grid
- * that follows the bar's stretch; the files' band keys (Le, path_reach, reversed_shear)
- * stay as written. */
+/* The band method as fig7.ini and fig8.ini ran it before the interface: the band held to
+ * its line with the paper's flaw on snf (fig8: on stf too, shear governs), Le measured
+ * over the zone (fig8: the row), shear against the slip closing, and fig7 with the
+ * flaw's whole cell on the grid that follows the bar's stretch; the rest is the file's
+ * (its preset's MUSL, uGIMP, two fields and damping).  fig7's are the band preset's
+ * keys that differ from its file's. */
 int ver_band_sets(const char *scene, const char *const **sets)
 {
-  static const char *const fig7[VER_BAND_NSETS] = {"decohesion.path=line", "imperfection.snf_factor=0.9",
-                                                   "grid.motion=stretch"};
-  static const char *const fig8[VER_BAND_NSETS] = {"decohesion.path=line", "imperfection.snf_factor=0.9",
-                                                   "imperfection.stf_factor=0.9"};
+  static const char *const fig7[] = {"decohesion.path=line", "imperfection.snf_factor=0.9", "grid.motion=stretch",
+                                     "decohesion.Le=zone", "decohesion.reversed_shear=closing", "imperfection.size=cell"};
+  static const char *const fig8[] = {"decohesion.path=line", "imperfection.snf_factor=0.9",
+                                     "imperfection.stf_factor=0.9", "decohesion.Le=row",
+                                     "decohesion.reversed_shear=closing"};
+  _Static_assert(sizeof fig7 / sizeof fig7[0] <= VER_BAND_NSETS && sizeof fig8 / sizeof fig8[0] <= VER_BAND_NSETS,
+                 "VER_BAND_NSETS too small");
   *sets = !strcmp(scene, "fig7") ? fig7 : !strcmp(scene, "fig8") ? fig8 : NULL;
-  return *sets ? VER_BAND_NSETS : 0;
+  return !strcmp(scene, "fig7") ? (int)(sizeof fig7 / sizeof fig7[0])
+         : !strcmp(scene, "fig8") ? (int)(sizeof fig8 / sizeof fig8[0]) : 0;
 }

@@ -2,7 +2,8 @@
  * scene_check.c - validation of a parsed scene (scene.h: ver_scene_validate): every
  * key present that must be, the rules between keys (h divides L and H, ppc a square,
  * the CFL bound), sizes the kernel can allocate, and the kernel's own check; one line
- * file:line: section.key: what is wrong (what is allowed).  And ver_scene_load: parse,
+ * file:line: section.key: what is wrong (what is allowed); the rules between the method
+ * options are the kernel's (mpm_scene_rules).  And ver_scene_load: parse,
  * then validate.
  */
 #include <assert.h>
@@ -197,48 +198,14 @@ int ver_scene_validate(ver_scene *vs, char *err, size_t errlen)
              sc->damping, sc->dt, sc->damping * sc->dt, 1.0 / sc->dt);
     return 2;
   }
-  /* the viscous stress is measured stable with MUSL only (kernel/mpm_sim.c says why) */
-  if (sc->damping_beta > 0.0 && sc->scheme != MPM_SCHEME_MUSL) {
-    snprintf(err, errlen, "%s: time.damping_beta: %g needs time.scheme = musl (allowed: 0 with %s)",
-             ver_scene_key_at(vs, ver_scene_key_idx("time", "damping_beta"), at, sizeof at), sc->damping_beta,
-             ver_scene_word(vs, "time", "scheme"));
-    return 2;
-  }
-  /* the interface implements what the scene files use, no more (kernel/mpm_iface.c) */
-  if (sc->model && sc->path == MPM_PATH_IFACE &&
-      (sc->fields != MPM_FIELDS_TWO || sc->shape != MPM_SHAPE_GIMP || sc->scheme != MPM_SCHEME_MUSL ||
-       sc->model != MPM_DCOH_MODEL1 || sc->q != 1.0 || sc->s0 != sc->snf || sc->eta != 0.0)) {
-    snprintf(err, errlen, "%s: decohesion.path: interface needs grid.fields = two, grid.shape = gimp, time.scheme = "
-             "musl and Model 1 with q = 1, s0 = snf, eta = 0 (here: fields %s, shape %s, scheme %s, model %d, q %g, "
-             "s0 %g, snf %g, eta %g; allowed otherwise: path = free or line)",
-             ver_scene_key_at(vs, ver_scene_key_idx("decohesion", "path"), at, sizeof at),
-             ver_scene_word(vs, "grid", "fields"), ver_scene_word(vs, "grid", "shape"), ver_scene_word(vs, "time", "scheme"),
-             sc->model, sc->q, sc->s0, sc->snf, sc->eta);
-    return 2;
-  }
-  /* share = line is built for a line along a node column that the grid follows
-   * (kernel/mpm_iface.c; the crack's column is checked when the particles are laid) */
-  if (sc->model && sc->share == MPM_SHARE_LINE &&
-      (sc->path != MPM_PATH_IFACE || sc->alpha_deg != 90.0 || sc->grid_motion != MPM_GRID_STRETCH)) {
-    snprintf(err, errlen, "%s: decohesion.share: line needs decohesion.path = interface, alpha = 90 and grid.motion = "
-             "stretch (here: path %s, alpha %g, motion %s; allowed otherwise: share = stick)",
-             ver_scene_key_at(vs, ver_scene_key_idx("decohesion", "share"), at, sizeof at),
-             ver_scene_word(vs, "decohesion", "path"), sc->alpha_deg, ver_scene_word(vs, "grid", "motion"));
-    return 2;
-  }
-  /* the laid places are carried by the grid's stretch (kernel/mpm.h, grid.weights) */
-  if (sc->weights == MPM_WEIGHTS_LAID && sc->grid_motion != MPM_GRID_STRETCH) {
-    snprintf(err, errlen, "%s: grid.weights: laid needs grid.motion = stretch (here: motion %s; allowed otherwise: "
-             "weights = current)",
-             ver_scene_key_at(vs, ver_scene_key_idx("grid", "weights"), at, sizeof at),
-             ver_scene_word(vs, "grid", "motion"));
-    return 2;
-  }
-  if (sc->damping > 0.0 && sc->node_mass == MPM_NODEMASS_LIMITED && sc->shape == MPM_SHAPE_LINEAR &&
-      (sc->scheme == MPM_SCHEME_USL || sc->scheme == MPM_SCHEME_USAVG)) {
-    snprintf(err, errlen, "%s: time.damping: %g needs grid.node_mass = lumped with usl or usavg on linear shapes "
-             "(allowed: 0 here, or another node_mass, scheme or shape)",
-             ver_scene_key_at(vs, ver_scene_key_idx("time", "damping"), at, sizeof at), sc->damping);
+  /* the rules between the method options: the kernel's one function (kernel/mpm_rules.c) */
+  const char *key;
+  char why[700];
+  if (mpm_scene_rules(sc, &key, why, sizeof why) != MPM_OK) {
+    char sec[32];
+    const char *dot = strchr(key, '.');
+    snprintf(sec, sizeof sec, "%.*s", (int)(dot - key), key);
+    snprintf(err, errlen, "%s: %s", ver_scene_key_at(vs, ver_scene_key_idx(sec, dot + 1), at, sizeof at), why);
     return 2;
   }
   /* Quasi-static: the grip must be slow against the wave speed (ver_scene_rate_ratio). */

@@ -50,7 +50,9 @@ void ver_scene_case_id(const ver_scene *vs, char *buf, size_t len)
     for (char *c = val; *c; c++)
       if (*c == '/' || *c == ' ' || *c == ',')
         *c = '_'; /* a folder name */
-    if (n < len)
+    if (!strncmp(o, "method.preset=", 14)) /* --method NAME */
+      n += n < len ? (size_t)snprintf(buf + n, len - n, "-method=%s", val) : 0;
+    else if (n < len)
       n += (size_t)snprintf(buf + n, len - n, "-%.*s=%s", (int)klen, o, val);
   }
 }
@@ -89,6 +91,8 @@ int ver_scene_write_ini(const ver_scene *vs, FILE *f)
     if (ver_scene_enum_type(k->type)) {
       int v;
       memcpy(&v, base + k->off, sizeof v);
+      if (k->type == K_PRESET && v < 0)
+        continue; /* no preset: every key below says the method */
       fprintf(f, "%s = %s\n", k->key, ver_scene_enum_word(k->type, v));
       continue;
     }

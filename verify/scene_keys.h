@@ -1,7 +1,8 @@
 /*
- * scene_keys.h - private to the scene module (scene.c: the key table and the parser;
- * scene_check.c: validation; scene_ini.c: case ids and writing a scene back): the
- * table of keys, each with its type, range and default, and the helpers on it.
+ * scene_keys.h - private to the scene module (scene_keys.c: the key table; scene.c: the
+ * parser; scene_check.c: validation; scene_ini.c: case ids and writing a scene back;
+ * scene_method.c: the method presets): the table of keys, each with its type, range and
+ * default, and the helpers on it.
  */
 #ifndef DELAM_VER_SCENE_KEYS_H
 #define DELAM_VER_SCENE_KEYS_H
@@ -10,7 +11,7 @@
 
 #include "scene.h"
 
-typedef enum { K_DBL, K_INT, K_LE, K_SCHEME, K_MOTION, K_SHAPE, K_FIELDS, K_NODEMASS, K_BC, K_HEAD, K_CONTROL, K_IMPSIZE, K_DAMPFROM, K_DAMPABOUT, K_PATH, K_SHEAR, K_SHARE, K_WEIGHTS, K_SOLVER, K_LIST } ktype;
+typedef enum { K_DBL, K_INT, K_LE, K_SCHEME, K_MOTION, K_SHAPE, K_FIELDS, K_NODEMASS, K_BC, K_HEAD, K_CONTROL, K_IMPSIZE, K_DAMPFROM, K_DAMPABOUT, K_PATH, K_SHEAR, K_SHARE, K_WEIGHTS, K_PRESET, K_SOLVER, K_LIST } ktype;
 
 /* Range kinds: (lo, hi) open, [lo, hi) half open, etc. encoded by flags. */
 enum { LO_OPEN = 1, LO_CLOSED = 2, HI_OPEN = 4, HI_CLOSED = 8 };
@@ -54,6 +55,11 @@ int ver_scene_key_num(const char *s, double *v);
 int ver_scene_enum_type(ktype t);
 int ver_scene_enum_value(ktype t, const char *word, int *value);
 const char *ver_scene_enum_word(ktype t, int value);
+/* Checks value for key ki and stores it; 0, or 2 with a message (no location) in msg. */
+int ver_scene_key_set(ver_scene *vs, int ki, const char *value, char *msg, size_t len);
+/* User text fit for a one-line message: at most 40 characters, control characters
+ * shown as '?'. */
+const char *ver_scene_shown(const char *s, char *buf, size_t len);
 /* "file:line" of key ki: its line, else its section's header, else the file's end. */
 const char *ver_scene_key_at(const ver_scene *vs, int ki, char *buf, size_t len);
 

@@ -67,6 +67,20 @@ static const struct {
 };
 #define NNUMS (sizeof NUMS / sizeof NUMS[0])
 
+/* The run's method: its preset, where that was named, and the method keys that differ
+ * from it (from the file or the command line). */
+static void add_method(cJSON *o, const ver_scene *vs)
+{
+  cJSON *m = cJSON_AddObjectToObject(o, "method");
+  cJSON_AddStringToObject(m, "preset", ver_method_name(vs->preset));
+  cJSON_AddStringToObject(m, "named_in", ver_method_where(vs));
+  char diff[32][64];
+  const int n = ver_method_overrides(vs, diff, 32);
+  cJSON *d = cJSON_AddArrayToObject(m, "differs");
+  for (int i = 0; i < n; i++)
+    cJSON_AddItemToArray(d, cJSON_CreateString(diff[i]));
+}
+
 int ver_summary_write(const char *dir, const ver_scene *vs, const ver_summary *u, const char *errmsg)
 {
   cJSON *o = cJSON_CreateObject();
@@ -130,6 +144,7 @@ int ver_summary_write(const char *dir, const ver_scene *vs, const ver_summary *u
   cJSON *ov = cJSON_AddArrayToObject(o, "overrides");
   for (int i = 0; i < vs->nover; i++)
     cJSON_AddItemToArray(ov, cJSON_CreateString(vs->over[i]));
+  add_method(o, vs);
   char *ini = NULL;
   size_t inilen = 0;
   FILE *mf = open_memstream(&ini, &inilen);

@@ -18,7 +18,7 @@
 #include "scene.h"
 #include "verify.h"
 
-#define VER_MAXSET 6
+#define VER_MAXSET 7
 #define VER_NCHECK 16
 #define VER_MAXCROSS 64
 
@@ -99,10 +99,11 @@ void ver_case_wave(ver_case *c, const double *delta, const double *P, size_t n);
 
 /* The case's check of that name, or NULL if it has none. */
 const ver_check *ver_case_check(const ver_case *c, const char *name);
-/* Sets up case c of scene file path (name scene) at h, ppc with variant v: id,
- * overrides, analytic bar, end displacement.  0, or 2 with err. */
-int ver_case_init(ver_case *c, const char *path, const char *scene, double h, int ppc, ver_variant v, char *err,
-                  size_t len);
+/* Sets up case c of scene file path (name scene) at h, ppc with variant v, and with
+ * method a preset (as --method; NULL: the file's): id, overrides, analytic bar, end
+ * displacement.  0, or 2 with err. */
+int ver_case_init(ver_case *c, const char *path, const char *scene, const char *method, double h, int ppc,
+                  ver_variant v, char *err, size_t len);
 /* The case list of o (quick or full); 0, or 2 with a message on stderr. */
 int ver_sweep_cases(const ver_verify_opts *o, ver_case **out, int *nout);
 /* With o->merge_found: the cases of both lists whose folders DIR holds; 0 or 2. */

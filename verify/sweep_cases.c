@@ -90,8 +90,8 @@ void ver_case_wave(ver_case *c, const double *delta, const double *P, size_t n)
  * several times U0 per area (paper, Fig. 7) and separate later: at least 1.2, past
  * every separation measured (0.61 to 0.87 on h = 2 and 4); a band that has not cut the
  * bar by then is reported as not separating. */
-int ver_case_init(ver_case *c, const char *path, const char *scene, double h, int ppc, ver_variant v, char *err,
-                     size_t len)
+int ver_case_init(ver_case *c, const char *path, const char *scene, const char *method, double h, int ppc,
+                  ver_variant v, char *err, size_t len)
 {
   memset(c, 0, sizeof *c);
   snprintf(c->path, sizeof c->path, "%s", path);
@@ -101,6 +101,8 @@ int ver_case_init(ver_case *c, const char *path, const char *scene, double h, in
   c->ppc = ppc;
   c->exit_code = -1;
   c->delta_sep = NAN;
+  if (method) /* first: the variant's own key holds over it */
+    snprintf(c->sets[c->nset++], sizeof c->sets[0], "method.preset=%s", method);
   if (v.set)
     snprintf(c->sets[c->nset++], sizeof c->sets[0], "%s", v.set);
   if (build_scene(path, h, ppc, c->sets, c->nset, &c->vs, err, len))
@@ -125,6 +127,8 @@ int ver_case_init(ver_case *c, const char *path, const char *scene, double h, in
     c->end_delta = c->vs.sc.end_delta;
   }
   c->nset = 0;
+  if (method)
+    snprintf(c->sets[c->nset++], sizeof c->sets[0], "method.preset=%s", method);
   /* one snapshot at delta 0 stands for none: an empty list is refused by the scene
    * reader, and snapshots later than separation would keep the run going */
   snprintf(c->sets[c->nset++], sizeof c->sets[0], "output.snapshots=0");
@@ -142,7 +146,8 @@ int ver_case_init(ver_case *c, const char *path, const char *scene, double h, in
     return 2;
   char base[100];
   ver_scene_base_id(&c->vs, base, sizeof base);
-  snprintf(c->id, sizeof c->id, "%s%s%s", base, v.suffix[0] ? "-" : "", v.suffix);
+  snprintf(c->id, sizeof c->id, "%s%s%s%s%s", base, method ? "-method=" : "", method ? method : "",
+           v.suffix[0] ? "-" : "", v.suffix);
   const mpm_scene *sc = &c->vs.sc;
   c->cost = (sc->L / sc->h) * (sc->H / sc->h) * sc->ppc * (c->end_delta / (sc->speed * sc->dt));
   return 0;
@@ -206,7 +211,7 @@ int ver_sweep_cases(const ver_verify_opts *o, ver_case **out, int *nout)
     for (int i = 0; i < nq; i++) {
       char path[600];
       snprintf(path, sizeof path, "%s/%s.ini", o->scenes, q[i].scene);
-      if (ver_case_init(&cs[n], path, q[i].scene, q[i].h, q[i].ppc, *q[i].v, err, sizeof err)) {
+      if (ver_case_init(&cs[n], path, q[i].scene, o->method, q[i].h, q[i].ppc, *q[i].v, err, sizeof err)) {
         fprintf(stderr, "delam verify: %s\n", err);
         free(cs);
         return 2;
@@ -242,7 +247,7 @@ int ver_sweep_cases(const ver_verify_opts *o, ver_case **out, int *nout)
           continue; /* the file's own angle and mode: --full's case */
         for (int a = 0; a < nh && !rc; a++)
           for (int b = 0; b < np && !rc; b++) {
-            if (ver_case_init(&cs[n], path, scene, hv[a], pv[b], *v, err, sizeof err)) {
+            if (ver_case_init(&cs[n], path, scene, o->method, hv[a], pv[b], *v, err, sizeof err)) {
               fprintf(stderr, "delam verify: %s\n", err);
               rc = 2;
             } else

@@ -26,6 +26,7 @@ typedef struct {
   const char *self;      /* path of the delam program, for --list                        */
   int list;              /* 1: print one `delam run` line per case and stop               */
   int merge;             /* 1: do not run; check what DIR already holds                  */
+  const char *method;    /* a preset every case runs with (--method NAME), or NULL        */
   int merge_found;       /* with merge: the cases of either list whose folders DIR holds
                             (neither --quick nor --full given)                           */
 } ver_verify_opts;

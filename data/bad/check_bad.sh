@@ -64,7 +64,7 @@ check opt-until-nan "--until: 'nan' is not a number > 0" "$fig6" --until nan
 check opt-threads-word "--threads: 'x' is not a number > 0" "$fig6" --threads x
 check opt-set-nokey "'nokey': expected section.key=value" "$fig6" --set nokey
 check opt-set-unknown "material.Ex=1: unknown key (allowed in [material]: E, nu, rho)" "$fig6" --set material.Ex=1
-check opt-set-section "nosuch.E=1: unknown key (allowed sections: bar," "$fig6" --set nosuch.E=1
+check opt-set-section "nosuch.E=1: unknown key (allowed sections: method, bar," "$fig6" --set nosuch.E=1
 check opt-set-range "command line: material.nu: 0.5 is out of range (in (-1, 0.5))" "$fig6" --set material.nu=0.5
 check opt-set-junk "command line: material.E: '10x' is not a number" "$fig6" --set material.E=10x
 check opt-set-empty "command line: material.E: empty value" "$fig6" --set material.E=
@@ -72,6 +72,11 @@ check opt-set-damping-from "command line: time.damping_from: 'later' is not allo
 check opt-set-imp-size "command line: imperfection.size: 'big' is not allowed (particle" "$scenes/fig7.ini" --set imperfection.size=big
 check opt-set-damping-limited "time.damping: 1.0472 needs grid.node_mass = lumped" "$scenes/fig8.ini" --set decohesion.path=line --set grid.shape=linear --set time.scheme=usl --set grid.node_mass=limited --set time.damping_beta=0
 check opt-set-beta-usl "time.damping_beta: 0.0625 needs time.scheme = musl" "$scenes/fig8.ini" --set time.scheme=usl
+check opt-method "command line: method.preset: 'fast' is not allowed (paper (the paper's method), band" "$fig6" --method fast
+check opt-method-missing "--method needs a preset (paper, band or interface)" "$fig6" --method
+check opt-rule-iface "fig7.ini:5: decohesion.path: interface needs grid.fields = two, grid.shape = gimp, time.scheme = musl" "$scenes/fig7.ini" --set grid.fields=one
+check opt-rule-share "command line: decohesion.share: line needs decohesion.path = interface, alpha = 90 and grid.motion = stretch (here: path interface, alpha 60, motion fixed; allowed otherwise: share = stick)" "$scenes/fig7.ini" --set decohesion.share=line
+check opt-rule-laid "command line: grid.weights: laid needs grid.motion = stretch (here: motion fixed" "$scenes/fig7.ini" --set grid.weights=laid
 check opt-set-newline "a control character" "$fig6" --set "material.E=1
 2"
 check opt-no-scene "no scene file"

@@ -682,6 +682,22 @@ static void test_mpm_bar_scene_check(void **state)
   /* decohesion keys are not checked when decohesion is off */
   sc = ok; sc.q = -1.0; sc.snf = 0.0;
   assert_int_equal(mpm_scene_check(&sc, err, sizeof err), MPM_OK);
+  /* the rules between options are one function, which mpm_scene_check ends with: the
+   * key at fault first in the message, and the allowed values named */
+  const char *key = NULL;
+  char msg[512];
+  sc = ok; sc.damping_beta = 0.1; /* USL */
+  assert_int_equal(mpm_scene_rules(&sc, &key, msg, sizeof msg), MPM_EINVAL);
+  assert_string_equal(key, "time.damping_beta");
+  assert_non_null(strstr(msg, "time.damping_beta: 0.1 needs time.scheme = musl (here: usl"));
+  assert_int_equal(mpm_scene_check(&sc, err, sizeof err), MPM_EINVAL);
+  assert_int_equal(strncmp(err, msg, strlen(err)), 0);
+  sc = ok; sc.weights = MPM_WEIGHTS_LAID; sc.grid_motion = MPM_GRID_FIXED;
+  assert_int_equal(mpm_scene_rules(&sc, &key, msg, sizeof msg), MPM_EINVAL);
+  assert_string_equal(key, "grid.weights");
+  sc.grid_motion = MPM_GRID_STRETCH;
+  assert_int_equal(mpm_scene_rules(&sc, &key, msg, sizeof msg), MPM_OK);
+  assert_null(key);
   mpm_sim_free(NULL);
 }
 

@@ -147,6 +147,43 @@ static void test_mpm_static_snapback(void **state)
   assert_true(4 * below >= 3 * t.nquad);
 }
 
+/* static-4: the crack as a cohesive interface at 90 deg (decohesion.path = interface):
+ * the uniform state is an exact solution of the discrete problem, so every row lies on
+ * the closed form, elastic line and snapback branch, to the tie's compliance (1e-6 of
+ * the bar's) and the solver's tolerance; D = U0 H. */
+static void test_mpm_static_interface_exact(void **state)
+{
+  (void)state;
+  mpm_scene sc = snap_scene();
+  sc.path = MPM_PATH_IFACE;
+  sc.shape = MPM_SHAPE_GIMP;
+  sc.fields = MPM_FIELDS_TWO;
+  sc.scheme = MPM_SCHEME_MUSL;
+  sc.imp_factor = 1.0; /* the line through the bar's centre places the crack */
+  static trace t;
+  mpm_energy e;
+  run_static(&sc, &t, &e, 500);
+  const double Pmax = sc.snf * sc.H, k = sc.E * sc.H / sc.L, dpk = Pmax / k;
+  double worst = 0.0, dmin = INFINITY, peak = 0.0;
+  for (int i = 1; i < t.n; i++) {
+    peak = fmax(peak, t.P[i]);
+    /* the closed form's delta at this load: on the elastic line before the peak, on the
+     * softening branch after it (eq. 34, q 1, alpha 90) */
+    const double P = fmax(t.P[i], 0.0);
+    const double d_ana = peak < Pmax * (1.0 - 1e-9) ? P / k : P / k + (1.0 - P / Pmax) * sc.U0 / sc.snf;
+    if (t.P[i] > 1e-6 * Pmax)
+      worst = fmax(worst, fabs(t.d[i] - d_ana) / dpk);
+    if (peak >= Pmax * (1.0 - 1e-9))
+      dmin = fmin(dmin, t.d[i]);
+  }
+  print_message("# interface at 90 deg: peak %.9g (Pmax %g), largest delta error %.3g delta_peak, least delta %.6g "
+                "(U0 / snf %.6g), D %.9g (U0 H %.9g)\n", peak, Pmax, worst, dmin, sc.U0 / sc.snf, e.D, sc.U0 * sc.H);
+  assert_rel(peak, Pmax, 1e-6, "peak");
+  assert_true(worst < 1e-5);
+  assert_true(dmin < sc.U0 / sc.snf + 0.01 * dpk); /* back to the branch's end, the opening alone */
+  assert_rel(e.D, sc.U0 * sc.H, 1e-9, "dissipation U0 H");
+}
+
 /* static-2: the elastic bar: the first increments lie on P = E H delta / L (a linear
  * problem, exact to the solver's tolerance), whatever the flaw. */
 static void test_mpm_static_elastic(void **state)
@@ -181,6 +218,7 @@ int main(void)
   const struct CMUnitTest tests[] = {
     cmocka_unit_test(test_mpm_static_elastic),
     cmocka_unit_test(test_mpm_static_snapback),
+    cmocka_unit_test(test_mpm_static_interface_exact),
     cmocka_unit_test(test_mpm_static_refuses_one_point),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);

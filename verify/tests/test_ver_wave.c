@@ -35,7 +35,7 @@ static double run_case(double h, double *peak, double *wave_peak, double *D, dou
 {
   ver_case c;
   char err[1024];
-  if (ver_case_init(&c, DELAM_SRC "/data/scenes/iface90.ini", "iface90", h, 1, (ver_variant){"", NULL, 0, 0, 0}, err,
+  if (ver_case_init(&c, DELAM_SRC "/data/scenes/iface90.ini", "iface90", NULL, h, 1, (ver_variant){"", NULL, 0, 0, 0}, err,
                     sizeof err))
     fail_msg("iface90.ini: %s", err);
   const mpm_scene *sc = &c.vs.sc;
