@@ -402,6 +402,25 @@ void ver_report_write_data(report *R)
   fclose(vars);
 }
 
+/* 1 if the figure file ends as a whole one does: its last 64 bytes hold end (a PNG's
+ * IEND chunk, an SVG's closing tag). */
+static int figure_whole(const char *path, const char *end)
+{
+  FILE *f = fopen(path, "rb");
+  char tail[65] = "";
+  size_t k = 0;
+  if (f && fseek(f, -64, SEEK_END) != 0)
+    rewind(f); /* shorter than 64 bytes */
+  if (f) {
+    k = fread(tail, 1, 64, f);
+    fclose(f);
+  }
+  for (size_t i = 0; i + strlen(end) <= k; i++)
+    if (!memcmp(tail + i, end, strlen(end)))
+      return 1;
+  return 0;
+}
+
 void ver_report_gnuplot(report *R)
 {
   rep_ctx *r = &R->r;
@@ -440,15 +459,14 @@ void ver_report_gnuplot(report *R)
     snprintf(names[i], ALEN, "%s.%s", f->name, fmt);
   }
   ver_report_spawn_all(argvs, r->out, logs, names, n, r->jobs, st, "gnuplot");
-  for (int i = 0; i < n; i++) { /* gnuplot may leave an empty file and exit 0 (a full disk) */
+  for (int i = 0; i < n; i++) { /* gnuplot may exit 0 leaving an empty or cut file (a full disk) */
     char p[2 * REP_PATH];
-    struct stat fs;
     snprintf(p, sizeof p, "%s/%s", r->out, names[i]);
     if (st[i] > 0) /* failed or stopped: what it wrote is no figure */
       remove(p);
-    else if (st[i] == 0 && (stat(p, &fs) != 0 || fs.st_size == 0)) {
-      fprintf(stderr, PROG ": %s: %s after gnuplot: removed, the figure is missing\n", p,
-              access(p, F_OK) == 0 ? "empty" : "not there");
+    else if (st[i] == 0 && !figure_whole(p, i % 2 ? "</svg>" : "IEND")) {
+      fprintf(stderr, PROG ": %s: not whole after gnuplot (no %s at its end): removed, the figure is missing\n",
+              p, i % 2 ? "</svg>" : "PNG IEND chunk");
       remove(p);
       st[i] = 1;
     }
