@@ -178,6 +178,7 @@ int ver_cmd_report(int argc, char **argv)
   memset(&R, 0, sizeof R);
   R.verify_rc = -1;
   rep_ctx *r = &R.r;
+  r->io_bad = &R.data_bad;
   const int pa = parse_args(argc, argv, &R);
   if (pa)
     return pa == 1 ? 0 : 2;
@@ -201,7 +202,10 @@ int ver_cmd_report(int argc, char **argv)
     ver_report_measure(r, &r->c[i]);
   ver_report_plan_figs(&R);
   ver_report_write_data(&R);
-  ver_report_gnuplot(&R);
+  if (R.data_bad)
+    ver_report_no_figures(&R);
+  else
+    ver_report_gnuplot(&R);
   if (ver_pool_caught())
     return stopped(&R);
   ver_report_set_vars(&R);
