@@ -184,6 +184,13 @@ int ver_cmd_report(int argc, char **argv)
     return pa == 1 ? 0 : 2;
   if (check_paths(&R))
     return 2;
+  char lerr[REP_PATH + 200];
+  /* one report per folder; the lock holds until the process ends */
+  if (ver_io_lock_dir(r->out, lerr, sizeof lerr) < 0) {
+    const int held = errno == EAGAIN;
+    fprintf(stderr, PROG ": %s\n", lerr);
+    return held ? 2 : 1;
+  }
   R.t0 = ver_now_wall();
   ver_pool_catch(); /* a signal stops the children (pool.c) and the stages below */
   if (!r->from[0] && ver_report_run_verify(&R) != 0 && !ver_pool_caught())

@@ -18,7 +18,7 @@
 #                nothing (the first's scene.ini still says ppc 4, its summary.json is
 #                its own), and `delam check` refuses the folder while it is written;
 #                once the first has ended, the same second run works there; a second
-#                verify into a folder a verify is writing is refused the same way.
+#                verify (or report) into a folder one is writing is refused the same way.
 #   out-*        --out that is a regular file, a path under one, a symlink loop: exit 2
 #                naming it; a full disk (a 300 KiB tmpfs, where mount is allowed): exit 1
 #                naming the file that could not be written and why, no *.tmp and no
@@ -248,6 +248,16 @@ for _ in $(seq 100); do [ -n "$(descendants "$pid")" ] && break; sleep 0.1; done
 timeout 60 "$delam" verify --merge v >/dev/null 2>err.txt
 rc=$?
 result writer-verify-refused "$(expect 2 "v: another delam process \\(pid $pid\\) is writing this folder")"
+kill -TERM "$pid"
+wait "$pid"
+# the same for two reports into one --out
+"$delam" report --out rep2/out --cache rep2/cache --scenes "$src/data/scenes" --gp "$src/reports" >/dev/null 2>&1 &
+pid=$!
+for _ in $(seq 100); do [ -n "$(descendants "$pid")" ] && break; sleep 0.1; done
+timeout 60 "$delam" report --out rep2/out --cache rep2/other --scenes "$src/data/scenes" --gp "$src/reports" \
+  >/dev/null 2>err.txt
+rc=$?
+result writer-report-refused "$(expect 2 "rep2/out: another delam process \\(pid $pid\\) is writing this folder")"
 kill -TERM "$pid"
 wait "$pid"
 stop_cmd HUP stop-verify-sighup "$delam" verify --quick --jobs 2 --out v
