@@ -203,9 +203,13 @@ else
 fi
 
 # 5. signals to the commands that start children
-descendants() { # every process under pid $1
+descendants() { # every process under pid $1 (from /proc: ps may not be installed)
   local c
-  for c in $(ps -o pid= --ppid "$1"); do echo "$c"; descendants "$c"; done
+  for c in $(cat /proc/[0-9]*/stat 2>/dev/null |
+             awk -v p="$1" '{ s = $0; sub(/^.*\) /, "", s); split(s, f, " "); if (f[2] == p) print $1 }'); do
+    echo "$c"
+    descendants "$c"
+  done
 }
 # stop_cmd SIG ID CMD...: starts CMD, waits for it to have children, sends SIG, checks
 stop_cmd() {
