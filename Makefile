@@ -3,13 +3,14 @@
 #   make check    install what is missing, build, run the test suite
 #   make check-asan   the kernel, analytic, verify unit and robustness tests under AddressSanitizer + UBSan
 #   make fuzz     build the libFuzzer target for the scene parser and run it FUZZ_TIME seconds
+#                 (installs clang and its libFuzzer runtime when missing)
 BUILD     ?= build
 MESONFLAGS ?=
 DEBS = meson ninja-build pkg-config gcc libgsl-dev libcmocka-dev libinih-dev \
        libcjson-dev libsuitesparse-dev gnuplot-nox parallel
 SUDO = $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-.PHONY: all deps build check check-asan fuzz report report-full bench docs-keys clean
+.PHONY: all deps build check check-asan fuzz fuzz-deps report report-full bench docs-keys clean
 
 all: build
 
@@ -53,14 +54,25 @@ check-asan: deps $(BUILD_ASAN)/build.ninja
 # build-fuzz/corpus, crashes to build-fuzz/crash-*: turn those into data/bad/ files.
 FUZZ_CC ?= clang
 FUZZ_TIME ?= 60
-FUZZ_SRC = fuzz/fuzz_scene.c verify/scene.c verify/scene_keys.c verify/scene_method.c verify/scene_check.c verify/scene_ini.c $(wildcard kernel/*.c)
-build-fuzz/fuzz_scene: $(FUZZ_SRC) verify/scene.h kernel/mpm.h
-	@mkdir -p build-fuzz/corpus
-	$(FUZZ_CC) -g -O1 -std=c11 -D_POSIX_C_SOURCE=200809L -Wall -Wextra -Wno-unknown-pragmas \
-	  -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined -Ikernel -Ianalytic -Iverify \
-	  $(FUZZ_SRC) -linih -lgsl -lm -o $@
+FUZZ_DEBS = clang libclang-rt-dev
+FUZZ_SRC = fuzz/fuzz_scene.c verify/scene.c verify/scene_keys.c verify/scene_method.c verify/scene_check.c \
+  verify/scene_ini.c verify/datadir.c verify/build_info.c $(wildcard kernel/*.c)
+# build_info.c reads two headers that meson generates into $(BUILD)/verify.
+FUZZ_GEN = $(BUILD)/verify/delam_config.h $(BUILD)/verify/delam_vcs.h
+$(FUZZ_GEN): $(BUILD)/build.ninja
+	ninja -C $(BUILD) verify/delam_vcs.h
 
-fuzz: deps build-fuzz/fuzz_scene
+build-fuzz/fuzz_scene: $(FUZZ_SRC) verify/scene.h kernel/mpm.h $(FUZZ_GEN)
+	@mkdir -p build-fuzz/corpus
+	$(FUZZ_CC) -g -O1 -std=c11 -D_POSIX_C_SOURCE=200809L -Wall -Wextra -Wno-unknown-pragmas -Wno-psabi \
+	  -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined -Ikernel -Ianalytic -Iverify \
+	  -I$(BUILD)/verify $(FUZZ_SRC) -linih -lgsl -lumfpack -lm -o $@
+
+# clang and its libFuzzer runtime, installed only when missing (as deps does).
+fuzz-deps:
+	@$(MAKE) --no-print-directory deps DEBS="$(FUZZ_DEBS)"
+
+fuzz: deps fuzz-deps build-fuzz/fuzz_scene
 	build-fuzz/fuzz_scene -max_total_time=$(FUZZ_TIME) -dict=fuzz/scene.dict -max_len=8192 \
 	  -artifact_prefix=build-fuzz/ -print_final_stats=1 build-fuzz/corpus fuzz/corpus data/scenes data/bad
 

@@ -15,8 +15,9 @@
  * A first line starting with '#' (delam's schema line) and blank lines are skipped.
  * Output: one line per check, an informational line (D at the separation, never judged),
  * the verdict, DIR/check.json.  Exit status 0 every check
- * passed (or is within a known limit), 1 a check failed, 2 unusable input (the file,
- * line and column are named).
+ * passed (or is within a known limit), 1 a check failed or check.json could not be
+ * written, 2 unusable input (the file, line and column are named): also a run that did
+ * not finish and files that disagree (read_inputs).
  */
 #include <errno.h>
 #include <math.h>
@@ -61,8 +62,15 @@ static void usage(FILE *f)
     "  --particles FILE  the final particle CSV (default DIR/final.csv when present)\n"
     "  --out FILE        where check.json goes (default DIR/check.json)\n"
     "  --help            this text\n"
-    "exit status: 0 all checks pass (or are within a known limit), 1 a check failed,\n"
-    "2 bad usage or unusable input (file, line and column named)\n");
+    "Not judged (exit 2): a run whose summary.json says complete: false or that has\n"
+    "delam's scene.ini without a summary.json; a file that is not a regular text file;\n"
+    "a delta that goes back where the grip only pulls (solver.type = explicit and\n"
+    "loading.control = grip); an energy.csv whose W_ext is more than 1%% of the work\n"
+    "from the area under load.csv's P_grip-delta curve, or that does not cover the\n"
+    "same times; a folder a delam process is writing now.\n\n"
+    "exit status: 0 all checks pass (or are within a known limit), 1 a check failed or\n"
+    "check.json could not be written, 2 bad usage or unusable input (file, line and\n"
+    "column named)\n");
 }
 
 /* The scene the folder is judged against: SCENE with --set, h and ppc. */
@@ -75,8 +83,11 @@ static int build_scene(const char *arg, const char *dir, const char *method, dou
   if (h <= 0 || ppc <= 0 || !method) { /* a folder delam wrote says its own */
     char own[1400];
     ver_scene ds;
+    struct stat st;
     snprintf(own, sizeof own, "%s/scene.ini", dir);
-    if (ver_scene_parse(own, &ds, buf, sizeof buf) == 0) {
+    if (lstat(own, &st) == 0) { /* there but unreadable: not silently judged as another case */
+      if (ver_scene_parse(own, &ds, err, errlen))
+        return 2;
       if (h <= 0)
         h = ds.sc.h;
       if (ppc <= 0)
@@ -240,12 +251,19 @@ static void info_measure(const ver_case *c, const ver_table *ld, const ver_table
   in->D_ref = c->have_ana ? c->ana.D_sep : NAN;
   if (!en)
     snprintf(in->why, sizeof in->why, "no energy.csv");
-  else if (en->n != ld->n)
-    snprintf(in->why, sizeof in->why, "energy.csv has %ld rows, load.csv %ld: its rows are not dated", en->n, ld->n);
+  else if (en->n != ld->n && !(ld->col[3] && en->col[12]))
+    snprintf(in->why, sizeof in->why, "energy.csv has %ld rows, load.csv %ld, and not both a t column: its rows "
+             "are not dated", en->n, ld->n);
   else if (!(c->delta_sep >= 0))
     snprintf(in->why, sizeof in->why, "no separation detected");
   else {
-    in->D_cut = ver_value_at(ld->col[0], en->col[4], (size_t)ld->n, c->delta_sep);
+    /* by time where both files have it (the first energy row at or past the load row
+     * of delta_sep), else row by row */
+    const int by_t = ld->col[3] && en->col[12]; /* else the row counts are equal */
+    const double ts = by_t ? ver_value_at(ld->col[0], ld->col[3], (size_t)ld->n, c->delta_sep) : NAN;
+    in->D_cut = !by_t        ? ver_value_at(ld->col[0], en->col[4], (size_t)ld->n, c->delta_sep)
+                : isfinite(ts) ? ver_value_at(en->col[12], en->col[4], (size_t)en->n, ts)
+                               : NAN;
     in->D_after_cut = en->col[4][en->n - 1] - in->D_cut;
     in->have = isfinite(in->D_cut);
     if (!in->have)
@@ -286,6 +304,164 @@ static void print_verdict(const char *label, const ver_case *c, const check_info
          have_pt ? ", with particles" : ", no particles: band width and angle left out");
 }
 
+/* summary.json's "complete" in *complete, its "delta_end" and "error": 1 if the file is
+ * JSON with a boolean "complete", 0 if it has none (another code's summary), -1 if it
+ * cannot be read or is not JSON. */
+static int summary_complete(const char *path, int *complete, double *delta_end, char *error, size_t len)
+{
+  char *txt = ver_io_slurp(path, NULL, 1 << 20);
+  cJSON *o = txt ? cJSON_Parse(txt) : NULL;
+  free(txt);
+  if (!o)
+    return -1;
+  const cJSON *c = cJSON_GetObjectItemCaseSensitive(o, "complete");
+  const cJSON *d = cJSON_GetObjectItemCaseSensitive(o, "delta_end");
+  const cJSON *e = cJSON_GetObjectItemCaseSensitive(o, "error");
+  const int have = cJSON_IsBool(c);
+  *complete = cJSON_IsTrue(c);
+  *delta_end = cJSON_IsNumber(d) ? d->valuedouble : NAN;
+  snprintf(error, len, "%s", cJSON_IsString(e) ? e->valuestring : "");
+  cJSON_Delete(o);
+  return have;
+}
+
+/* Whether the run in DIR finished: not while a delam process holds its lock; then a
+ * summary.json with "complete" says so (false: not judged); a folder with delam's
+ * scene.ini needs a summary.json that says complete: true.  Another code's folder
+ * without such a summary is judged on its files.  0, or 2 with the reason in err. */
+static int run_finished(const char *dir, char *err, size_t errlen)
+{
+  char path[1400], head[64] = "", error[320];
+  const long holder = ver_io_lock_holder(dir);
+  if (holder > 0) {
+    snprintf(err, errlen, "%s: a delam process (pid %ld) is writing this folder now: not judged", dir, holder);
+    return 2;
+  }
+  snprintf(path, sizeof path, "%s/scene.ini", dir);
+  FILE *f = ver_open_regular(path, NULL);
+  if (f) {
+    if (!fgets(head, sizeof head, f))
+      head[0] = '\0';
+    fclose(f);
+  }
+  const int ours = !strncmp(head, "; delam scene.ini", 17);
+  int complete = 0;
+  double delta_end;
+  snprintf(path, sizeof path, "%s/summary.json", dir);
+  struct stat st;
+  const int there = lstat(path, &st) == 0;
+  const int k = there ? summary_complete(path, &complete, &delta_end, error, sizeof error) : 0;
+  if (k > 0 && !complete)
+    snprintf(err, errlen, "%s says complete: false (the run stopped at delta %.6g%s%.300s): an interrupted or "
+             "failed run is not judged", path, delta_end, error[0] ? ": " : "", error);
+  else if (ours && there && k <= 0)
+    snprintf(err, errlen, "%s: %s: the run's record is damaged; not judged", path,
+             k < 0 ? "cannot be read or is not JSON" : "no \"complete\" key");
+  else if (ours && !there)
+    snprintf(err, errlen, "%s: delam's scene.ini but no summary.json: the run has not finished (killed, or it "
+             "failed to write it); not judged", dir);
+  else
+    return 0;
+  return 2;
+}
+
+/* Whether the run's grip only pulls: the explicit solver under loading.control = grip
+ * (the static solver follows a snapback, the dissipation control may too), as the
+ * folder's own scene.ini says where delam wrote it, else the scene it is judged against. */
+static int grip_pulls(const char *dir, const ver_scene *vs)
+{
+  char path[1400], e[200];
+  ver_scene own;
+  snprintf(path, sizeof path, "%s/scene.ini", dir);
+  const mpm_scene *sc = ver_scene_parse(path, &own, e, sizeof e) == 0 ? &own.sc : &vs->sc;
+  return sc->control == MPM_CONTROL_GRIP && sc->solver == MPM_SOLVER_EXPLICIT;
+}
+
+/* load.csv (delta, P_grip, P_fixed, t) and energy.csv (W_ext first, t at 12; or NULL) say
+ * the same run: delta never goes back where the grip only pulls, and W_ext is the area
+ * under P_grip(delta) within VER_WORK_AGREE.  0, or 2 with the reason in err. */
+static int inputs_agree(const char *dir, int pulls, const ver_table *ld, const ver_table *en, char *err,
+                        size_t errlen)
+{
+  const long b = pulls ? ver_foreign_backstep(ld->col[0], ld->n) : -1;
+  if (b >= 0) {
+    snprintf(err, errlen, "%s/load.csv: data row %ld: delta %.9g is below the row before's %.9g, but the grip only "
+             "pulls (solver.type = explicit, loading.control = grip): not one run's curve", dir, b + 1, ld->col[0][b], ld->col[0][b - 1]);
+    return 2;
+  }
+  if (!en)
+    return 0;
+  double rel, area;
+  long row;
+  char why[300];
+  if (ver_foreign_work(ld->col[3], ld->col[0], ld->col[1], ld->n, en->col[12], en->col[0], en->n, &rel, &row, &area,
+                       why, sizeof why)) {
+    snprintf(err, errlen, "%s: load.csv and energy.csv disagree: %s", dir, why);
+    return 2;
+  }
+  if (!(rel <= VER_WORK_AGREE)) {
+    snprintf(err, errlen, "%s: load.csv and energy.csv disagree: energy.csv's W_ext %.6g (data row %ld) against "
+             "%.6g, the area under load.csv's P_grip-delta curve then: %.3g of the work apart (allowed: %g)", dir,
+             en->col[0][row - 1], row, area, rel, VER_WORK_AGREE);
+    return 2;
+  }
+  return 0;
+}
+
+/* What a folder gives delam check: the load table, and energy and particles if there. */
+typedef struct {
+  ver_table ld, en, pt;
+  int have_en, have_pt;
+  char ppath[1400];   /* the particle file */
+} check_inputs;
+
+static void free_inputs(check_inputs *in)
+{
+  ver_table_free(&in->ld);
+  ver_table_free(&in->en);
+  ver_table_free(&in->pt);
+}
+
+/* Reads DIR's files after run_finished and checks that they agree (inputs_agree).  0,
+ * or 2 with the file and the reason in err (nothing left allocated). */
+static int read_inputs(const char *dir, const char *pfile, const ver_scene *vs, check_inputs *in, char *err,
+                       size_t errlen)
+{
+  static const char *const lnames[] = {"delta", "P_grip", "P_fixed", "t"};
+  static const char *const enames[] = {"W_ext", "KE",       "SE",     "W_coh",    "D",
+                                       "L_bc",  "L_flip",   "L_scheme", "W_head", "L_contact", "L_debris", "L_damp", "t"};
+  static const char *const pnames[] = {"x0", "y0", "lambda"};
+  char path[1400];
+  memset(in, 0, sizeof *in);
+  if (run_finished(dir, err, errlen))
+    return 2;
+  snprintf(path, sizeof path, "%s/load.csv", dir);
+  int r = ver_table_read(path, lnames, 4, 2, &in->ld, err, errlen);
+  if (r == 1)
+    snprintf(err, errlen, "%s: no such file (the load-deflection curve is required)", path);
+  if (r)
+    return 2;
+  snprintf(path, sizeof path, "%s/energy.csv", dir);
+  r = ver_table_read(path, enames, 13, 5, &in->en, err, errlen);
+  in->have_en = r == 0;
+  if (r == 2 || inputs_agree(dir, grip_pulls(dir, vs), &in->ld, in->have_en ? &in->en : NULL, err, errlen)) {
+    free_inputs(in);
+    return 2;
+  }
+  snprintf(in->ppath, sizeof in->ppath, "%s", pfile ? pfile : "");
+  if (!pfile)
+    snprintf(in->ppath, sizeof in->ppath, "%s/final.csv", dir);
+  r = ver_table_read(in->ppath, pnames, 3, 3, &in->pt, err, errlen);
+  in->have_pt = r == 0;
+  if (r == 2 || (r == 1 && pfile)) {
+    if (r == 1)
+      snprintf(err, errlen, "%s: no such file", in->ppath);
+    free_inputs(in);
+    return 2;
+  }
+  return 0;
+}
+
 int ver_cmd_check(int argc, char **argv)
 {
   check_opts o;
@@ -309,44 +485,14 @@ int ver_cmd_check(int argc, char **argv)
   snprintf(c.scene, sizeof c.scene, "%s", c.vs.name);
   snprintf(c.id, sizeof c.id, "%.100s", dir);
 
-  static const char *const lnames[] = {"delta", "P_grip", "P_fixed"};
-  static const char *const enames[] = {"W_ext", "KE",       "SE",     "W_coh",    "D",
-                                       "L_bc",  "L_flip",   "L_scheme", "W_head", "L_contact", "L_debris", "L_damp"};
-  static const char *const pnames[] = {"x0", "y0", "lambda"};
-  char path[1400], ppath[1400];
-  ver_table ld, en, pt;
-  snprintf(path, sizeof path, "%s/load.csv", dir);
-  int r = ver_table_read(path, lnames, 3, 2, &ld, err, sizeof err);
-  if (r == 1)
-    snprintf(err, sizeof err, "%s: no such file (the load-deflection curve is required)", path);
-  if (r) {
+  check_inputs in;
+  if (read_inputs(dir, pfile, &c.vs, &in, err, sizeof err)) {
     fprintf(stderr, PROG ": %s\n", err);
     return 2;
   }
-  snprintf(path, sizeof path, "%s/energy.csv", dir);
-  r = ver_table_read(path, enames, 12, 5, &en, err, sizeof err);
-  if (r == 2) {
-    fprintf(stderr, PROG ": %s\n", err);
-    ver_table_free(&ld);
-    return 2;
-  }
-  const int have_en = r == 0;
-  snprintf(ppath, sizeof ppath, "%s", pfile ? pfile : "");
-  if (!pfile)
-    snprintf(ppath, sizeof ppath, "%s/final.csv", dir);
-  r = ver_table_read(ppath, pnames, 3, 3, &pt, err, sizeof err);
-  if (r == 2 || (r == 1 && pfile)) {
-    if (r == 1)
-      snprintf(err, sizeof err, "%s: no such file", ppath);
-    fprintf(stderr, PROG ": %s\n", err);
-    ver_table_free(&ld);
-    if (have_en)
-      ver_table_free(&en);
-    return 2;
-  }
-  const int have_pt = r == 0;
-
-  ver_foreign_measure(&c, &ld, have_en ? &en : NULL, have_pt ? &pt : NULL);
+  const ver_table *ld = &in.ld;
+  const int have_en = in.have_en, have_pt = in.have_pt;
+  ver_foreign_measure(&c, ld, have_en ? &in.en : NULL, have_pt ? &in.pt : NULL);
   ver_policy_case(&c);
   /* the checks whose input is not there are left out, not failed; "run" (delam's own
    * stop rule) says nothing of another code's folder */
@@ -362,22 +508,19 @@ int ver_cmd_check(int argc, char **argv)
   char label[160];
   snprintf(label, sizeof label, "%s vs %s-h%g-ppc%d", dir, c.vs.name, c.vs.sc.h, c.vs.sc.ppc);
   check_info info;
-  info_measure(&c, &ld, have_en ? &en : NULL, &info);
+  info_measure(&c, ld, have_en ? &in.en : NULL, &info);
   print_verdict(label, &c, &info, have_en, have_pt);
   const int rc = c.verdict == VER_FAIL ? 1 : 0;
   char jpath[1400];
   snprintf(jpath, sizeof jpath, "%s", out ? out : "");
   if (!out)
     snprintf(jpath, sizeof jpath, "%s/check.json", dir);
-  int wrc = write_json(jpath, &c, &info, dir, c.vs.path, have_en, have_pt ? ppath : NULL, rc);
-  ver_table_free(&ld);
-  if (have_en)
-    ver_table_free(&en);
-  if (have_pt)
-    ver_table_free(&pt);
+  const int wrc = write_json(jpath, &c, &info, dir, c.vs.path, have_en, have_pt ? in.ppath : NULL, rc);
+  const int werr = errno;
+  free_inputs(&in);
   if (wrc) {
-    fprintf(stderr, PROG ": %s: cannot write: %s\n", jpath, strerror(errno));
-    return 2;
+    fprintf(stderr, PROG ": %s: cannot write: %s\n", jpath, strerror(werr));
+    return 1;
   }
   printf("check: -> %s\n", jpath);
   return rc;

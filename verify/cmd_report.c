@@ -4,6 +4,7 @@
  * ones.  The steps are in report_*.c (report.h); this file reads the options and runs
  * them in order.
  */
+#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -16,6 +17,7 @@
 #include "cmd.h"
 #include "datadir.h"
 #include "io.h"
+#include "pool.h"
 #include "report.h"
 
 #define PROG "delam report"
@@ -140,7 +142,7 @@ static int write_report(report *R)
     snprintf(path, sizeof path, "%s/%s", R->r.out, names[i]);
     FILE *f = ver_io_open_tmp(path, tmp, sizeof tmp);
     if (!f) {
-      fprintf(stderr, PROG ": cannot write %s\n", path);
+      fprintf(stderr, PROG ": %s: cannot write: %s\n", path, strerror(errno));
       bad = 1;
       continue;
     }
@@ -149,11 +151,25 @@ static int write_report(report *R)
     else
       rep_doc_html(&R->doc, f, "delam: verification report");
     if (ver_io_commit(f, tmp) != 0) {
-      fprintf(stderr, PROG ": cannot write %s\n", path);
+      fprintf(stderr, PROG ": %s: cannot write: %s\n", path, strerror(errno));
       bad = 1;
     }
   }
   return bad;
+}
+
+/* After SIGINT or SIGTERM: the children have been stopped and waited for (pool.c); the
+ * runs that finished stay where they are, for the next report to reuse; no REPORT.md or
+ * index.html is written from a part of the data.  Exit status 130. */
+static int stopped(report *R)
+{
+  fprintf(stderr, PROG ": stopped by a signal after %.1f s: its runs and gnuplot stopped and waited for; the "
+          "finished runs are kept in %s for the next report; REPORT.md and index.html not written\n",
+          ver_now_wall() - R->t0, R->r.cache);
+  rep_doc_free(&R->doc);
+  rep_vars_free(&R->vars);
+  cJSON_Delete(R->verify);
+  return 130;
 }
 
 int ver_cmd_report(int argc, char **argv)
@@ -162,13 +178,22 @@ int ver_cmd_report(int argc, char **argv)
   memset(&R, 0, sizeof R);
   R.verify_rc = -1;
   rep_ctx *r = &R.r;
+  r->io_bad = &R.data_bad;
   const int pa = parse_args(argc, argv, &R);
   if (pa)
     return pa == 1 ? 0 : 2;
   if (check_paths(&R))
     return 2;
+  char lerr[REP_PATH + 200];
+  /* one report per folder; the lock holds until the process ends */
+  if (ver_io_lock_dir(r->out, lerr, sizeof lerr) < 0) {
+    const int held = errno == EAGAIN;
+    fprintf(stderr, PROG ": %s\n", lerr);
+    return held ? 2 : 1;
+  }
   R.t0 = ver_now_wall();
-  if (!r->from[0] && ver_report_run_verify(&R) != 0)
+  ver_pool_catch(); /* a signal stops the children (pool.c) and the stages below */
+  if (!r->from[0] && ver_report_run_verify(&R) != 0 && !ver_pool_caught())
     fprintf(stderr, PROG ": delam verify --quick could not run; the report has no verdicts\n");
   if (r->from[0]) {
     R.verify = ver_report_read_verify(r->from);
@@ -176,13 +201,20 @@ int ver_cmd_report(int argc, char **argv)
       snprintf(R.verify_dir, sizeof R.verify_dir, "%s", r->from);
   }
   ver_report_build_cases(&R);
-  const int missing = ver_report_run_cases(r);
+  const int missing = ver_pool_caught() ? 0 : ver_report_run_cases(r);
+  if (ver_pool_caught())
+    return stopped(&R);
   R.t_runs = ver_now_wall() - R.t0;
   for (int i = 0; i < r->n; i++)
     ver_report_measure(r, &r->c[i]);
   ver_report_plan_figs(&R);
   ver_report_write_data(&R);
-  ver_report_gnuplot(&R);
+  if (R.data_bad)
+    ver_report_no_figures(&R);
+  else
+    ver_report_gnuplot(&R);
+  if (ver_pool_caught())
+    return stopped(&R);
   ver_report_set_vars(&R);
   ver_report_compose(&R);
   int bad = missing;
@@ -197,7 +229,13 @@ int ver_cmd_report(int argc, char **argv)
   rep_doc_free(&R.doc);
   rep_vars_free(&R.vars);
   cJSON_Delete(R.verify);
-  fprintf(stderr, PROG ": %s/index.html and %s/REPORT.md written in %.1f s%s%s\n", r->out, r->out,
-          ver_now_wall() - R.t0, failed ? "; a check FAILED" : "", bad ? " (with missing parts, see above)" : "");
+  if (rc)
+    fprintf(stderr, PROG ": %s: the report is not complete: REPORT.md or index.html could not be written (see above)"
+            "%s\n", r->out, bad ? ", and parts are missing" : "");
+  else
+    fprintf(stderr, PROG ": %s/index.html and %s/REPORT.md written in %.1f s%s%s\n", r->out, r->out,
+            ver_now_wall() - R.t0, failed ? "; a check FAILED" : "", bad ? " (with missing parts, see above)" : "");
+  if (ver_pool_caught()) /* a signal during the last stage: the report is written, as said */
+    return 130;
   return rc || bad || failed ? 1 : 0;
 }

@@ -6,6 +6,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "cmd.h"
 #include "run.h"
@@ -32,7 +33,7 @@ static void usage(FILE *f)
     "options:\n"
     "  --out DIR         output folder (default out/<scene>-h<h>-ppc<n>)\n"
     "  --h H             grid spacing; dt is scaled with it unless --dt is given\n"
-    "  --ppc N           particles per cell, a perfect square (1, 4, 9, ...)\n"
+    "  --ppc N           particles per cell, a perfect square (1, 4, 9, ..., 1024)\n"
     "  --dt DT           time step (must be below the CFL bound h / (c sqrt 2))\n"
     "  --until DELTA     run to this end displacement exactly (no early stop)\n"
     "  --method NAME     the run's method is the preset NAME (paper, band or\n"
@@ -133,6 +134,32 @@ static void print_result(const ver_scene *vs, const char *id, const ver_summary 
          u.wall_s, u.updates_per_s, outdir);
 }
 
+/* After a failed or stopped run: what its folder holds, as it is. */
+static void say_folder(const char *dir)
+{
+  ver_summary_doc d;
+  struct stat st;
+  const int have = ver_summary_read(dir, &d) == 0;
+  if (have && !d.u.complete)
+    fprintf(stderr, "delam run: partial results in %s (summary.json says complete: false)\n", dir);
+  else if (have) /* the run failed before it cleared the folder */
+    fprintf(stderr, "delam run: %s is as an earlier run left it: none of it is this run's\n", dir);
+  else if (stat(dir, &st) == 0 && S_ISDIR(st.st_mode))
+    fprintf(stderr, "delam run: no summary.json in %s: nothing there is a result of this run\n", dir);
+}
+
+/* SIGINT, SIGTERM and SIGHUP (unless nohup ignores it) stop the run cleanly. */
+static void catch_signals(void)
+{
+  struct sigaction sa, old;
+  memset(&sa, 0, sizeof sa);
+  sa.sa_handler = on_signal;
+  sigaction(SIGINT, &sa, NULL);
+  sigaction(SIGTERM, &sa, NULL);
+  if (sigaction(SIGHUP, NULL, &old) == 0 && old.sa_handler != SIG_IGN)
+    sigaction(SIGHUP, &sa, NULL);
+}
+
 int ver_cmd_run(int argc, char **argv)
 {
   const char *path = NULL, *outdir = NULL, *method = NULL;
@@ -217,18 +244,14 @@ int ver_cmd_run(int argc, char **argv)
   char id[600], defdir[700];
   ver_scene_case_id(&vs, id, sizeof id);
   snprintf(defdir, sizeof defdir, "out/%s", id);
-  struct sigaction sa;
-  memset(&sa, 0, sizeof sa);
-  sa.sa_handler = on_signal;
-  sigaction(SIGINT, &sa, NULL);
-  sigaction(SIGTERM, &sa, NULL);
+  catch_signals();
   ver_run_opts o = {outdir ? outdir : defdir, !quiet, 1, &stop_flag, 0, threads};
   ver_summary u;
   const int rc = ver_run(&vs, &o, &u, err, sizeof err);
   if (rc) {
     fprintf(stderr, "delam run: %s\n", err);
     if (rc != 2)
-      fprintf(stderr, "delam run: partial results in %s (summary.json says complete: false)\n", o.outdir);
+      say_folder(o.outdir);
     return rc;
   }
   print_result(&vs, id, &u, o.outdir);

@@ -49,8 +49,11 @@ static void usage(FILE *f)
     "                 --full or --angles: every case of that list, a missing one fails;\n"
     "                 alone: the cases of any list that DIR holds)\n"
     "  --help         this text\n"
-    "exit status: 0 no check failed, 1 a pass-class check failed (or a case crashed),\n"
-    "2 bad usage or input\n");
+    "SIGINT or SIGTERM stops the running cases, waits for them and writes verify.json\n"
+    "with what there is (exit status 130).\n"
+    "exit status: 0 no check failed, 1 a pass-class check failed (or a case crashed, or\n"
+    "verify.json could not be written), 2 bad usage or input (or DIR is another\n"
+    "sweep's, being written), 130 stopped by a signal\n");
 }
 
 int ver_cmd_verify(int argc, char **argv)

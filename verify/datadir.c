@@ -1,6 +1,8 @@
 /*
- * datadir.c - finding the scene files (datadir.h).
+ * datadir.c - finding the scene files and opening them (datadir.h).
  */
+#include <errno.h>
+#include <fcntl.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -9,6 +11,44 @@
 
 #include "datadir.h"
 #include "delam_config.h"
+
+const char *ver_file_kind(unsigned mode)
+{
+  return S_ISDIR(mode)   ? "a directory"
+         : S_ISFIFO(mode) ? "a FIFO"
+         : S_ISCHR(mode)  ? "a character device"
+         : S_ISBLK(mode)  ? "a block device"
+         : S_ISSOCK(mode) ? "a socket"
+         : S_ISREG(mode)  ? "a regular file"
+                          : "not a regular file";
+}
+
+FILE *ver_open_regular(const char *path, const char **what)
+{
+  if (what)
+    *what = NULL;
+  /* O_NONBLOCK: opening a FIFO for reading would otherwise wait for a writer */
+  const int fd = open(path, O_RDONLY | O_NONBLOCK);
+  if (fd < 0)
+    return NULL;
+  struct stat st;
+  const int e = fstat(fd, &st) != 0 ? errno : S_ISREG(st.st_mode) ? 0 : EINVAL;
+  if (e) {
+    if (e == EINVAL && what)
+      *what = ver_file_kind(st.st_mode);
+    close(fd);
+    errno = e;
+    return NULL;
+  }
+  const int fl = fcntl(fd, F_GETFL);
+  FILE *f = fl < 0 || fcntl(fd, F_SETFL, fl & ~O_NONBLOCK) < 0 ? NULL : fdopen(fd, "rb");
+  if (!f) {
+    const int fe = errno;
+    close(fd);
+    errno = fe;
+  }
+  return f;
+}
 
 static int is_dir(const char *p)
 {
@@ -20,6 +60,12 @@ static int is_file(const char *p)
 {
   struct stat st;
   return stat(p, &st) == 0 && S_ISREG(st.st_mode);
+}
+
+static int exists(const char *p)
+{
+  struct stat st;
+  return stat(p, &st) == 0;
 }
 
 /* <folder of the running program>/../share/delam/scenes, or "" */
@@ -85,8 +131,9 @@ const char *ver_scene_dir(void)
 
 int ver_scene_resolve(const char *arg, char *out, size_t len, char *err, size_t errlen)
 {
-  if (is_file(arg) || strchr(arg, '/')) {
-    snprintf(out, len, "%s", arg); /* a path: the scene reader names it if it is missing */
+  if (exists(arg) || strchr(arg, '/')) {
+    /* a path: the scene reader names it if it is missing or not a regular file */
+    snprintf(out, len, "%s", arg);
     return 0;
   }
   const char *dir = ver_scene_dir();

@@ -5,11 +5,13 @@
  */
 #include <errno.h>
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 
+#include "datadir.h"
 #include "foreign.h"
 #include "io.h"
 #include "metrics.h"
@@ -32,94 +34,189 @@ static char *trim(char *s)
   return s;
 }
 
+/* The first byte of line `line`, [s, e), that is not text (NUL, a control byte other
+ * than tab and CR, or DEL), named by line and byte in err; 0 if there is none. */
+static int line_text(const char *path, int line, const char *s, const char *e, char *err, size_t errlen)
+{
+  for (const char *p = s; p < e; p++) {
+    const unsigned char c = (unsigned char)*p;
+    if ((c < 0x20 && c != '\t' && c != '\r') || c == 0x7f) {
+      snprintf(err, errlen, "%s:%d: byte %zu of the line is %s (0x%02x): not a text file", path, line,
+               (size_t)(p - s) + 1, c ? "a control byte" : "a NUL byte", c);
+      return 2;
+    }
+  }
+  return 0;
+}
+
+/* The header line s: want[k] = j where field k is names[j] (ncol fields, want malloc'd);
+ * 0, or 2 with err. */
+static int table_header(const char *path, int line, char *s, const char *const *names, int nname, int nreq,
+                        int **want, int *ncol, char *err, size_t errlen)
+{
+  int found[VER_TABLE_MAXCOL] = {0};
+  *ncol = 1;
+  for (const char *p = s; *p; p++)
+    *ncol += *p == ',';
+  if (!(*want = malloc(sizeof(int) * (size_t)*ncol))) {
+    snprintf(err, errlen, "%s: out of memory", path);
+    return 2;
+  }
+  char *f = s; /* field k of the header is column k of every row, empty ones too */
+  for (int k = 0; k < *ncol; k++) {
+    char *c = strchr(f, ',');
+    if (c)
+      *c = '\0';
+    const char *name = trim(f);
+    (*want)[k] = -1;
+    for (int j = 0; j < nname; j++)
+      if (!found[j] && !strcmp(name, names[j])) {
+        (*want)[k] = j;
+        found[j] = 1;
+        break;
+      }
+    f = c ? c + 1 : f + strlen(f);
+  }
+  for (int j = 0; j < nreq; j++)
+    if (!found[j]) {
+      snprintf(err, errlen, "%s:%d: the header has no column '%s' (needed: ", path, line, names[j]);
+      for (int q = 0; q < nreq; q++)
+        snprintf(err + strlen(err), errlen - strlen(err), "%s%s", q ? ", " : "", names[q]);
+      snprintf(err + strlen(err), errlen - strlen(err), ")");
+      return 2;
+    }
+  return 0;
+}
+
+/* strtod(s, end) of a whole field, with a fast path where the field is a plain decimal
+ * ([-+]digits[.digits][e[-+]digits] and nothing after it):
+ * at most 19 significant digits whose integer fits 2^53 and a power of ten up to 22
+ * are two exact doubles, so one multiplication or division rounds correctly (Clinger
+ * 1990), the same double as strtod; anything else goes to strtod. */
+static double parse_num(const char *s, char **end)
+{
+  static const double p10[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
+                               1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+  const char *p = s;
+  const int neg = *p == '-';
+  p += *p == '-' || *p == '+';
+  uint64_t m = 0;
+  int nd = 0, e = 0;
+  for (; *p >= '0' && *p <= '9'; p++, nd++)
+    m = m * 10 + (uint64_t)(*p - '0');
+  if (*p == '.')
+    for (p++; *p >= '0' && *p <= '9'; p++, nd++, e--)
+      m = m * 10 + (uint64_t)(*p - '0');
+  if (nd > 0 && nd <= 19 && (*p == 'e' || *p == 'E')) {
+    const char *q = p + 1;
+    const int eneg = *q == '-';
+    q += *q == '-' || *q == '+';
+    int x = 0, nx = 0;
+    for (; *q >= '0' && *q <= '9' && nx < 4; q++, nx++)
+      x = x * 10 + (*q - '0');
+    e += eneg ? -x : x;
+    p = nx && !(*q >= '0' && *q <= '9') ? q : s; /* s: not plain, strtod decides */
+  }
+  if (nd == 0 || nd > 19 || p == s || *p || m > (1ull << 53) || e < -22 || e > 22)
+    return strtod(s, end);
+  *end = (char *)(uintptr_t)p; /* as strtod: end points into the caller's string */
+  const double v = e < 0 ? (double)m / p10[-e] : (double)m * p10[e];
+  return neg ? -v : v;
+}
+
+/* One data row s (line `line`) into row t->n of the wanted columns; 0, or 2 with err. */
+static int table_row(const char *path, int line, char *s, const int *want, int ncol, const char *const *names,
+                     ver_table *t, char *err, size_t errlen)
+{
+  int nf = 0, got = 0, nwant = 0;
+  for (int k = 0; k < ncol; k++)
+    nwant += want[k] >= 0;
+  for (char *p = s; p; nf++) {
+    char *c = strchr(p, ',');
+    if (c)
+      *c = '\0';
+    const int j = nf < ncol ? want[nf] : -1;
+    if (j >= 0) {
+      char *f = trim(p), *end;
+      const double v = parse_num(f, &end);
+      if (end == f || *end || !isfinite(v)) {
+        snprintf(err, errlen, "%s:%d:%d: column '%s': '%.40s' is not a finite number", path, line, nf + 1,
+                 names[j], f);
+        return 2;
+      }
+      t->col[j][t->n] = v;
+      got++;
+    }
+    p = c ? c + 1 : NULL;
+  }
+  if (got < nwant)
+    for (int k = nf; k < ncol; k++)
+      if (want[k] >= 0) {
+        snprintf(err, errlen, "%s:%d:%d: no field for column '%s' (the row has %d fields, the header %d)", path,
+                 line, k + 1, names[want[k]], nf, ncol);
+        return 2;
+      }
+  t->n++;
+  return 0;
+}
+
+/* The file's text, NUL-terminated, or NULL: 1 (no such file) or 2 (err) in *rc. */
+static char *table_text(const char *path, size_t *len, int *rc, char *err, size_t errlen)
+{
+  char *txt = ver_io_slurp(path, len, VER_TABLE_MAXBYTES);
+  *rc = 0;
+  if (!txt) {
+    const int e = errno;
+    struct stat st;
+    *rc = 2;
+    if (e == ENOENT)
+      *rc = 1;
+    else if (e == EINVAL && stat(path, &st) == 0)
+      snprintf(err, errlen, "%s: %s, not a CSV file (a regular file is needed)", path, ver_file_kind(st.st_mode));
+    else if (e == EFBIG)
+      snprintf(err, errlen, "%s: larger than %d MiB: refused", path, VER_TABLE_MAXBYTES >> 20);
+    else
+      snprintf(err, errlen, "%s: cannot read: %s", path, strerror(e));
+  }
+  return txt;
+}
+
 int ver_table_read(const char *path, const char *const *names, int nname, int nreq, ver_table *t, char *err,
                    size_t errlen)
 {
   memset(t, 0, sizeof *t);
-  char *txt = ver_io_slurp(path, NULL, 64u << 20);
-  if (!txt) {
-    struct stat st;
-    if (stat(path, &st) != 0 && errno == ENOENT)
-      return 1;
-    snprintf(err, errlen, "%s: cannot read (or larger than 64 MiB): %s", path, strerror(errno));
-    return 2;
-  }
-  long rows = 0;
-  for (const char *s = txt; *s; s++)
-    rows += *s == '\n';
-  int idx[VER_TABLE_MAXCOL];
-  for (int j = 0; j < nname; j++)
-    idx[j] = -1;
-  int line = 0, have_header = 0, rc = 0, ncol = 0;
-  for (char *ln = txt, *next; *ln && !rc; ln = next) {
-    char *nl = strchr(ln, '\n');
-    next = nl ? nl + 1 : ln + strlen(ln);
-    if (nl)
-      *nl = '\0';
-    line++;
+  size_t len = 0;
+  int rc;
+  char *txt = table_text(path, &len, &rc, err, errlen);
+  if (!txt)
+    return rc;
+  long rows = 1;
+  for (const char *s = txt; (s = memchr(s, '\n', len - (size_t)(s - txt))); s++)
+    rows++;
+  int line = 0, ncol = 0, *want = NULL;
+  for (char *ln = txt, *end = txt + len, *next; ln < end && !rc; ln = next) {
+    char *nl = memchr(ln, '\n', (size_t)(end - ln)), *le = nl ? nl : end;
+    next = nl ? nl + 1 : end;
+    if ((rc = line_text(path, ++line, ln, le, err, errlen)))
+      break;
+    *le = '\0'; /* the newline, or the NUL after the text */
+    while (le > ln && (le[-1] == ' ' || le[-1] == '\t' || le[-1] == '\r' || le[-1] == '"'))
+      *--le = '\0';
     char *s = trim(ln);
-    if (!*s || (*s == '#' && !have_header))
+    if (!*s || (*s == '#' && !want))
       continue;
-    if (!have_header) {
-      have_header = 1;
-      char *hs = NULL;
-      ncol = 0;
-      for (char *f = strtok_r(s, ",", &hs); f; f = strtok_r(NULL, ",", &hs), ncol++)
-        for (int j = 0; j < nname; j++)
-          if (!strcmp(trim(f), names[j]))
-            idx[j] = ncol;
-      for (int j = 0; j < nreq; j++)
-        if (idx[j] < 0) {
-          snprintf(err, errlen, "%s:%d: the header has no column '%s' (needed: ", path, line, names[j]);
-          for (int q = 0; q < nreq; q++)
-            snprintf(err + strlen(err), errlen - strlen(err), "%s%s", q ? ", " : "", names[q]);
-          snprintf(err + strlen(err), errlen - strlen(err), ")");
-          rc = 2;
-        }
-      for (int j = 0; j < nname && !rc; j++)
-        if (idx[j] >= 0 && !(t->col[j] = malloc(sizeof(double) * (size_t)(rows + 1)))) {
+    if (!want) {
+      rc = table_header(path, line, s, names, nname, nreq, &want, &ncol, err, errlen);
+      for (int k = 0; k < ncol && !rc; k++)
+        if (want[k] >= 0 && !(t->col[want[k]] = malloc(sizeof(double) * (size_t)rows))) {
           snprintf(err, errlen, "%s: out of memory", path);
           rc = 2;
         }
-      continue;
-    }
-    /* a data row: split it once, then take the wanted fields */
-    char *fields[256];
-    int nf = 0;
-    for (char *p = s;;) {
-      if (nf == 256)
-        break;
-      fields[nf++] = p;
-      char *c = strchr(p, ',');
-      if (!c)
-        break;
-      *c = '\0';
-      p = c + 1;
-    }
-    for (int j = 0; j < nname && !rc; j++) {
-      if (idx[j] < 0)
-        continue;
-      if (idx[j] >= nf) {
-        snprintf(err, errlen, "%s:%d:%d: no field for column '%s' (the row has %d fields, the header %d)", path,
-                 line, idx[j] + 1, names[j], nf, ncol);
-        rc = 2;
-        break;
-      }
-      char *f = trim(fields[idx[j]]), *end;
-      errno = 0;
-      const double v = strtod(f, &end);
-      if (end == f || *end || !isfinite(v)) {
-        snprintf(err, errlen, "%s:%d:%d: column '%s': '%.40s' is not a finite number", path, line, idx[j] + 1,
-                 names[j], f);
-        rc = 2;
-        break;
-      }
-      t->col[j][t->n] = v;
-    }
-    t->n++;
+    } else
+      rc = table_row(path, line, s, want, ncol, names, t, err, errlen);
   }
   free(txt);
-  if (!rc && !have_header) {
+  if (!rc && !want) {
     snprintf(err, errlen, "%s:1: no header line (expected at least: %s%s%s)", path, names[0], nreq > 1 ? ", " : "",
              nreq > 1 ? names[1] : "");
     rc = 2;
@@ -127,6 +224,7 @@ int ver_table_read(const char *path, const char *const *names, int nname, int nr
     snprintf(err, errlen, "%s:%d: %ld data rows; at least 3 are needed", path, line, t->n);
     rc = 2;
   }
+  free(want);
   if (rc)
     ver_table_free(t);
   return rc;
@@ -219,3 +317,90 @@ void ver_foreign_measure(ver_case *c, const ver_table *ld, const ver_table *en, 
   }
 }
 
+
+long ver_foreign_backstep(const double *d, long n)
+{
+  for (long i = 1; i < n; i++)
+    if (d[i] < d[i - 1])
+      return i;
+  return -1;
+}
+
+/* The area under P(delta) from the start to each row (the first row's from delta 0). */
+static double *work_curve(const double *d, const double *P, long n)
+{
+  double *w = malloc(sizeof(double) * (size_t)n);
+  if (!w)
+    return NULL;
+  w[0] = 0.5 * P[0] * d[0];
+  for (long i = 1; i < n; i++)
+    w[i] = w[i - 1] + 0.5 * (P[i] + P[i - 1]) * (d[i] - d[i - 1]);
+  return w;
+}
+
+/* The largest |W[k] - w(row k)| over the rows, where w is the load curve's work at the
+ * energy row's time (lt, et) or at the same row (lt or et NULL); its row in *row. */
+static double work_gap(const double *w, const double *lt, long n, const double *W, const double *et, long m,
+                       long *row, double *area)
+{
+  double gap = -1.0;
+  for (long k = 0, i = 1; k < m; k++) {
+    double wk;
+    if (!lt || !et)
+      wk = w[k];
+    else {
+      if (et[k] < lt[0] || et[k] > lt[n - 1])
+        continue; /* before the first load row: nothing to compare with */
+      while (i < n - 1 && lt[i] < et[k])
+        i++;
+      const double a = lt[i] > lt[i - 1] ? (et[k] - lt[i - 1]) / (lt[i] - lt[i - 1]) : 1.0;
+      wk = w[i - 1] + a * (w[i] - w[i - 1]);
+    }
+    if (fabs(W[k] - wk) > gap) {
+      gap = fabs(W[k] - wk);
+      *row = k + 1;
+      *area = wk;
+    }
+  }
+  return gap;
+}
+
+int ver_foreign_work(const double *lt, const double *d, const double *P, long n, const double *et, const double *W,
+                     long m, double *rel, long *row, double *area, char *why, size_t len)
+{
+  *rel = *area = NAN;
+  *row = 0;
+  if (!(lt && et) && m != n) {
+    snprintf(why, len, "energy.csv has %ld rows and load.csv %ld, and not both have a t column: their rows "
+             "cannot be matched", m, n);
+    return 2;
+  }
+  if (lt && et) {
+    const long bl = ver_foreign_backstep(lt, n), be = ver_foreign_backstep(et, m);
+    if (bl >= 0 || be >= 0) {
+      snprintf(why, len, "%s: t goes back at data row %ld", bl >= 0 ? "load.csv" : "energy.csv",
+               (bl >= 0 ? bl : be) + 1);
+      return 2;
+    }
+    /* both end at the same time, within the longer of their last intervals */
+    const double span = fmax(lt[n - 1] - lt[n - 2], et[m - 1] - et[m - 2]);
+    if (fabs(et[m - 1] - lt[n - 1]) > span * (1.0 + 1e-9)) {
+      snprintf(why, len, "energy.csv ends at t %.9g, load.csv at t %.9g: they do not cover the same run",
+               et[m - 1], lt[n - 1]);
+      return 2;
+    }
+  }
+  double *w = work_curve(d, P, n), scale = 0.0;
+  if (!w) {
+    snprintf(why, len, "out of memory");
+    return 2;
+  }
+  for (long k = 0; k < m; k++)
+    scale = fmax(scale, fabs(W[k]));
+  for (long i = 0; i < n; i++)
+    scale = fmax(scale, fabs(w[i]));
+  const double gap = work_gap(w, lt, n, W, et, m, row, area);
+  free(w);
+  *rel = scale > 0.0 ? fmax(gap, 0.0) / scale : 0.0;
+  return 0;
+}

@@ -11,6 +11,7 @@
 #include "sweep.h"
 
 #define VER_TABLE_MAXCOL 16
+#define VER_TABLE_MAXBYTES (256 << 20) /* a larger CSV file is refused (2 M rows of delam's load.csv: 97 MB) */
 
 /* Numeric columns of a CSV file, picked by header name. */
 typedef struct {
@@ -34,5 +35,23 @@ void ver_table_free(ver_table *t);
  * area under the load curve and D, the energy residual are NaN; without pt the band
  * numbers are NaN. */
 void ver_foreign_measure(ver_case *c, const ver_table *ld, const ver_table *en, const ver_table *pt);
+
+/* The first row i (0-based) where d[i] < d[i - 1], or -1: a delta that goes back. */
+long ver_foreign_backstep(const double *d, long n);
+
+/* How far energy.csv's W_ext (W, m rows, times et or NULL) is from the area under
+ * load.csv's P_grip(delta) (d, P, n rows, times lt or NULL) at the same times (at the
+ * same rows when a file lacks t): the largest gap over the larger of max |W_ext| and
+ * max area, in *rel, the energy.csv data row (1-based) where it is in *row and the
+ * area there in *area.
+ * 0; 2 with why when the rows cannot be matched: different row counts without t in
+ * both, a t that goes back, or files that end at different times. */
+int ver_foreign_work(const double *lt, const double *d, const double *P, long n, const double *et, const double *W,
+                     long m, double *rel, long *row, double *area, char *why, size_t len);
+
+/* W_ext against the load curve's area: the largest gap allowed, as a fraction of the
+ * work (delam's own fig6 runs: 0.0013, the trapezoid over output rows against the
+ * work summed every step). */
+#define VER_WORK_AGREE 0.01
 
 #endif

@@ -3,28 +3,35 @@
  * (io.h).
  */
 #include <errno.h>
+#include <fcntl.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 #include <time.h>
+#include <unistd.h>
 
+#include "datadir.h"
 #include "io.h"
 
 char *ver_io_slurp(const char *path, size_t *len, size_t max)
 {
-  FILE *f = fopen(path, "rb");
+  FILE *f = ver_open_regular(path, NULL);
   if (!f)
     return NULL;
-  size_t cap = 1 << 16, n = 0;
+  struct stat st; /* room for the whole file at once where its size is known */
+  size_t cap = fstat(fileno(f), &st) == 0 && st.st_size > 0 ? (size_t)st.st_size + 2 : 1 << 16, n = 0;
+  if (max && cap > max + 2)
+    cap = max + 2;
   char *buf = malloc(cap);
   while (buf) {
     n += fread(buf + n, 1, cap - n - 1, f);
     if (max && n > max) {
+      fclose(f);
       free(buf);
-      buf = NULL;
-      break;
+      errno = EFBIG;
+      return NULL;
     }
     if (n + 1 < cap)
       break;
@@ -33,10 +40,11 @@ char *ver_io_slurp(const char *path, size_t *len, size_t max)
       free(buf);
     buf = nb;
   }
-  const int bad = ferror(f);
+  const int bad = ferror(f), e = buf ? errno : ENOMEM;
   fclose(f);
   if (!buf || bad) {
     free(buf);
+    errno = e;
     return NULL;
   }
   buf[n] = '\0';
@@ -59,35 +67,56 @@ int ver_mkdir_p(const char *dir)
         return -1;
       *p = '/';
     }
-  return (mkdir(buf, 0777) != 0 && errno != EEXIST) ? -1 : 0;
+  if (mkdir(buf, 0777) == 0)
+    return 0;
+  struct stat st; /* there already: as a folder, or the path is not one */
+  if (errno != EEXIST)
+    return -1;
+  if (stat(buf, &st) != 0)
+    return -1; /* a dangling or looping link: stat's errno */
+  if (S_ISDIR(st.st_mode))
+    return 0;
+  errno = ENOTDIR;
+  return -1;
 }
 
 FILE *ver_io_open_tmp(const char *path, char *tmp, size_t len)
 {
-  if (snprintf(tmp, len, "%s.tmp", path) >= (int)len) {
+  /* the pid makes the name this process's own: two writers never share a temporary */
+  if (snprintf(tmp, len, "%s.%ld.tmp", path, (long)getpid()) >= (int)len) {
     errno = ENAMETOOLONG;
     return NULL;
   }
   return fopen(tmp, "w");
 }
 
+int ver_io_tmp_final(const char *tmp, char *fin, size_t len)
+{
+  const char *dot = strrchr(tmp, '.');
+  const char *p = dot;
+  while (p && p > tmp && p[-1] >= '0' && p[-1] <= '9')
+    p--;
+  if (!dot || strcmp(dot, ".tmp") || p == dot || p <= tmp || p[-1] != '.' || (size_t)(p - 1 - tmp) >= len)
+    return -1;
+  memcpy(fin, tmp, (size_t)(p - 1 - tmp));
+  fin[p - 1 - tmp] = '\0';
+  return 0;
+}
+
 int ver_io_commit(FILE *f, const char *tmp)
 {
   const int bad = ferror(f);
-  if (fclose(f) != 0 || bad) {
-    remove(tmp);
-    return -1;
-  }
+  int e = bad ? (errno ? errno : EIO) : 0;
+  if (fclose(f) != 0 && !e)
+    e = errno;
   char fin[4096];
-  const size_t n = strlen(tmp);
-  if (n < 5 || n >= sizeof fin) {
+  if (!e && ver_io_tmp_final(tmp, fin, sizeof fin) != 0)
+    e = EINVAL;
+  if (!e && rename(tmp, fin) != 0)
+    e = errno;
+  if (e) {
     remove(tmp);
-    return -1;
-  }
-  memcpy(fin, tmp, n - 4);
-  fin[n - 4] = '\0';
-  if (rename(tmp, fin) != 0) {
-    remove(tmp);
+    errno = e;
     return -1;
   }
   return 0;
@@ -193,6 +222,50 @@ long ver_csv_read(const char *path, const char *const *cols, int ncol, double **
     return -1;
   }
   return n;
+}
+
+int ver_io_lock_dir(const char *dir, char *err, size_t errlen)
+{
+  char path[4200];
+  snprintf(path, sizeof path, "%s/" VER_LOCK_NAME, dir);
+  const int fd = open(path, O_RDWR | O_CREAT | O_CLOEXEC, 0666);
+  if (fd < 0) {
+    const int e = errno;
+    snprintf(err, errlen, "%s: cannot create: %s", path, strerror(e));
+    errno = e;
+    return -1;
+  }
+  /* a POSIX record lock on the whole file: the system drops it when this process ends
+   * (however it ends), and F_GETLK names the process that holds it */
+  struct flock lk = {.l_type = F_WRLCK, .l_whence = SEEK_SET, .l_start = 0, .l_len = 0};
+  if (fcntl(fd, F_SETLK, &lk) == 0)
+    return fd;
+  const int e = errno;
+  struct flock q = {.l_type = F_WRLCK, .l_whence = SEEK_SET, .l_start = 0, .l_len = 0};
+  if ((e == EACCES || e == EAGAIN) && fcntl(fd, F_GETLK, &q) == 0 && q.l_type != F_UNLCK)
+    snprintf(err, errlen, "%s: another delam process (pid %ld) is writing this folder; wait for it to end or choose "
+             "another folder", dir, (long)q.l_pid);
+  else if (e == EACCES || e == EAGAIN)
+    snprintf(err, errlen, "%s: another delam process is writing this folder; wait for it to end or choose another "
+             "folder", dir);
+  else
+    snprintf(err, errlen, "%s: cannot lock: %s", path, strerror(e));
+  close(fd);
+  errno = e == EACCES ? EAGAIN : e; /* EAGAIN: held by another process */
+  return -1;
+}
+
+long ver_io_lock_holder(const char *dir)
+{
+  char path[4200];
+  snprintf(path, sizeof path, "%s/" VER_LOCK_NAME, dir);
+  const int fd = open(path, O_RDWR | O_CLOEXEC);
+  if (fd < 0)
+    return 0;
+  struct flock q = {.l_type = F_WRLCK, .l_whence = SEEK_SET, .l_start = 0, .l_len = 0};
+  const long pid = fcntl(fd, F_GETLK, &q) == 0 && q.l_type != F_UNLCK ? (long)q.l_pid : 0;
+  close(fd);
+  return pid;
 }
 
 double ver_now_wall(void)

@@ -7,6 +7,7 @@
 #ifndef DELAM_VER_POOL_H
 #define DELAM_VER_POOL_H
 
+#include <signal.h>
 #include <sys/types.h>
 
 typedef struct {
@@ -23,8 +24,21 @@ typedef struct {
   void *ctx;
 } ver_pool;
 
-/* Runs every job; 0, or -1 if out of memory (nothing started). */
+/* Runs every job; 0, -1 if out of memory (nothing started), or the signal (SIGINT,
+ * SIGTERM) that stopped it, caught by ver_pool_catch: then no job is started, every
+ * running child gets SIGTERM (SIGKILL 30 s later if still there) and is waited for, and
+ * the jobs never started are not reported to finished. */
 int ver_pool_run(const ver_pool *p);
+
+/* For a command that runs a pool: SIGINT, SIGTERM and SIGHUP are caught from now on, for the
+ * pool to stop its children and the command to stop between its stages; caught says
+ * which came (0: none).  A forked child that does not exec stops its run on the same
+ * flag (its own copy): ver_pool_stop_flag is ver_run_opts.stop for it. */
+void ver_pool_catch(void);
+int ver_pool_caught(void);
+volatile sig_atomic_t *ver_pool_stop_flag(void);
+/* In a child just forked by parent: it gets SIGTERM when parent dies, however (Linux). */
+void ver_pool_child(pid_t parent);
 
 /* A start helper: fork + exec argv (PATH search) in folder cwd (NULL: here) with stdout
  * and stderr to the file log (opened after the chdir). */

@@ -103,6 +103,7 @@ typedef struct {
   int jobs;                /* children at once                                  */
   int rerun;               /* ignore cached results                             */
   int have_musl;           /* the scene files accept time.scheme=musl           */
+  int *io_bad;             /* counts the data files that could not be written (NULL: none) */
 } rep_ctx;
 
 
@@ -140,6 +141,7 @@ typedef struct {
   double t_runs, t0;
   rep_vars vars;           /* the placeholders of the templates                 */
   rep_doc doc;
+  int data_bad;            /* data files that could not be written (r.io_bad)   */
 } report;
 
 /* report_cases.c */
@@ -166,6 +168,8 @@ int ver_report_stab_outcome(const rep_case *c, double base);
 double ver_report_stab_base(const rep_ctx *r);
 #define REP_STAB_NOISY 0.02 /* curve error (RMS / Pmax) above the smallest dt's by this: noisy */
 void ver_report_gnuplot(report *R);
+/* Where data files could not be written: no figure is drawn (nor an older one kept). */
+void ver_report_no_figures(report *R);
 
 /* report_judge.c */
 /* Without --from: runs `delam verify --quick` into CACHE/verify, which then serves as

@@ -18,14 +18,37 @@
 
 #define PROG "delam report"
 
+static void data_failed(const rep_ctx *r, const char *path, int e)
+{
+  fprintf(stderr, PROG ": %s: cannot write: %s\n", path, strerror(e));
+  if (r->io_bad)
+    (*r->io_bad)++;
+}
+
 static FILE *open_data(const rep_ctx *r, const char *name)
 {
   char p[REP_PATH + 96];
   snprintf(p, sizeof p, "%s/data/%s", r->out, name);
   FILE *f = fopen(p, "w");
   if (!f)
-    fprintf(stderr, PROG ": cannot write %s: %s\n", p, strerror(errno));
+    data_failed(r, p, errno);
   return f;
+}
+
+/* Closes a file of open_data; one that could not be written whole (a full disk) is
+ * removed and counted, so that no figure is drawn from part of it. */
+static void close_data(const rep_ctx *r, FILE *f, const char *name)
+{
+  char p[REP_PATH + 96];
+  snprintf(p, sizeof p, "%s/data/%s", r->out, name);
+  const int bad = ferror(f);
+  int e = bad ? (errno ? errno : EIO) : 0;
+  if (fclose(f) != 0 && !e)
+    e = errno ? errno : EIO;
+  if (e) {
+    remove(p);
+    data_failed(r, p, e);
+  }
 }
 
 /* A copy of the run's result files in OUT/data/<id>/ (CSV and JSON; the particle
@@ -53,7 +76,7 @@ static void copy_case(const rep_ctx *r, const rep_case *c)
       snprintf(a, sizeof a, "%s/%s", c->dir, n);
       snprintf(b, sizeof b, "%s/%s", dst, n);
       if (ver_io_copy(a, b) != 0)
-        fprintf(stderr, PROG ": cannot copy %s to %s\n", a, b);
+        data_failed(r, b, errno);
     }
   }
   if (d)
@@ -72,7 +95,7 @@ static void write_ana_curve(const rep_ctx *r, const char *name, const ana_bar *b
   fprintf(f, "delta,P\n");
   for (int i = 0; i < k; i++)
     fprintf(f, "%.10g,%.10g\n", d[i], P[i]);
-  fclose(f);
+  close_data(r, f, name);
 }
 
 /* The figure "rate": the exact solution at the grip speed of iface90.ini's bar (Fig. 6's)
@@ -97,7 +120,7 @@ static void write_rate(const rep_ctx *r, FILE *vars)
       fprintf(f, "delta,P\n");
       for (int i = 0; i <= 1200; i++)
         fprintf(f, "%.10g,%.10g\n", 0.0005 * i, ana_wave_load_at(&a, 0.0005 * i));
-      fclose(f);
+      close_data(r, f, "wave.csv");
     }
     ana_wave_free(&a);
   }
@@ -112,7 +135,7 @@ static void write_rate(const rep_ctx *r, FILE *vars)
     fprintf(vars, "rate_fig6_h%g = \"%s\"\nrate_iface_h%g = \"%s\"\n", h, p ? p->id : "", h, q ? q->id : "");
   }
   if (f)
-    fclose(f);
+    close_data(r, f, "rate.dat");
 }
 
 /* Fig. 3: sigma* against E e_ave / r0 for q = 0.8, 1, 1.2 and g = 0.75, 1.25, 2 (L chosen
@@ -147,7 +170,7 @@ static void write_fig3(const rep_ctx *r, FILE *vars)
       fprintf(f, "estar,sstar\n");
       for (int m = 0; m < k; m++)
         fprintf(f, "%.10g,%.10g\n", d[m] / p.L * p.E / b.r0, P[m] / b.Pmax);
-      fclose(f);
+      close_data(r, f, name);
       fprintf(vars, "f3_snap_%d_%d = %d\n", i, j, b.snapback);
     }
 }
@@ -173,7 +196,7 @@ static void write_method_sweep(const rep_ctx *r, const char *scene, int role, co
               c->particles);
     }
   if (f)
-    fclose(f);
+    close_data(r, f, name);
 }
 
 static void write_sweeps(const rep_ctx *r, rep_fit *fits, FILE *vars)
@@ -213,7 +236,7 @@ static void write_sweeps(const rep_ctx *r, rep_fit *fits, FILE *vars)
           }
         }
       }
-      fclose(f);
+      close_data(r, f, name);
       if (ppc == 1) {
         rep_fit *cf = &fits[s];
         cf->n = n;
@@ -272,7 +295,7 @@ static void write_stab(const rep_ctx *r, FILE *vars)
       rep_str_printf(&labs, "%s%.2f", labs.n ? " " : "", c->tag);
     }
   }
-  fclose(f);
+  close_data(r, f, "stab.dat");
   fprintf(vars, "stab_ids = \"%s\"\nstab_labs = \"%s\"\n", ids.s ? ids.s : "", labs.s ? labs.s : "");
   free(ids.s);
   free(labs.s);
@@ -399,7 +422,26 @@ void ver_report_write_data(report *R)
       write_note(vars, key, c);
     }
   }
-  fclose(vars);
+  close_data(r, vars, "vars.gp");
+}
+
+/* 1 if the figure file ends as a whole one does: its last 64 bytes hold end (a PNG's
+ * IEND chunk, an SVG's closing tag). */
+static int figure_whole(const char *path, const char *end)
+{
+  FILE *f = fopen(path, "rb");
+  char tail[65] = "";
+  size_t k = 0;
+  if (f && fseek(f, -64, SEEK_END) != 0)
+    rewind(f); /* shorter than 64 bytes */
+  if (f) {
+    k = fread(tail, 1, 64, f);
+    fclose(f);
+  }
+  for (size_t i = 0; i + strlen(end) <= k; i++)
+    if (!memcmp(tail + i, end, strlen(end)))
+      return 1;
+  return 0;
 }
 
 void ver_report_gnuplot(report *R)
@@ -440,8 +482,20 @@ void ver_report_gnuplot(report *R)
     snprintf(names[i], ALEN, "%s.%s", f->name, fmt);
   }
   ver_report_spawn_all(argvs, r->out, logs, names, n, r->jobs, st, "gnuplot");
+  for (int i = 0; i < n; i++) { /* gnuplot may exit 0 leaving an empty or cut file (a full disk) */
+    char p[2 * REP_PATH];
+    snprintf(p, sizeof p, "%s/%s", r->out, names[i]);
+    if (st[i] > 0) /* failed or stopped: what it wrote is no figure */
+      remove(p);
+    else if (st[i] == 0 && !figure_whole(p, i % 2 ? "</svg>" : "IEND")) {
+      fprintf(stderr, PROG ": %s: not whole after gnuplot (no %s at its end): removed, the figure is missing\n",
+              p, i % 2 ? "</svg>" : "PNG IEND chunk");
+      remove(p);
+      st[i] = 1;
+    }
+  }
   for (int i = 0; i < n; i += 2) {
-    R->fig[i / 2].status = st[i];
+    R->fig[i / 2].status = st[i] ? st[i] : st[i + 1];
     if (st[i] != 0 || st[i + 1] != 0)
       fprintf(stderr, PROG ": gnuplot %s failed (see %s/%s)\n", R->fig[i / 2].name, r->out, logs[i]);
   }
@@ -454,3 +508,16 @@ out:
   free(avs);
 }
 
+void ver_report_no_figures(report *R)
+{
+  fprintf(stderr, PROG ": %d data files could not be written: no figure is drawn from part of its data\n",
+          R->data_bad);
+  for (int i = 0; i < R->nfig; i++) {
+    char p[REP_PATH + 64];
+    R->fig[i].status = 1;
+    snprintf(p, sizeof p, "%s/%s.png", R->r.out, R->fig[i].name);
+    remove(p);
+    snprintf(p, sizeof p, "%s/%s.svg", R->r.out, R->fig[i].name);
+    remove(p);
+  }
+}

@@ -205,7 +205,8 @@ static int try_reuse(const rep_ctx *r, rep_case *c, const char *dir, int check_s
   if (ver_report_read_summary(c) == 0) {
     int same_exe;
     const int st = read_exit_status(r, dir, &same_exe);
-    if (c->complete || (check_scene && st > 0 && same_exe)) {
+    /* a run stopped by a signal (130) or killed (128 + n) is run again, not reused */
+    if (c->complete || (check_scene && st > 0 && st < 128 && same_exe)) {
       c->have = 1;
       c->reused = 1;
       c->exit_status = c->complete ? 0 : st;
@@ -237,7 +238,7 @@ static void spawn_done(int i, int status, int sig, double wall, int done, void *
   c->status[i] = status;
   if (status >= 0)
     fprintf(stderr, "delam report: [%2d/%d] %s %s: %s (%.1f s)\n", done, c->n, c->what, c->names[i],
-            status == 0 ? "ok" : "failed", wall);
+            status == 0 ? "ok" : status == 130 ? "stopped by a signal" : "failed", wall);
 }
 
 void ver_report_spawn_all(char ***argvs, const char *cwd, char **logs, char **names, int n, int jobs,

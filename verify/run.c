@@ -38,29 +38,44 @@
 
 #define VER_STATIC_MAX_INC 100000 /* a static run's increments: rows are allocated for them */
 
-/* Opens dir/name.tmp for writing; commit_file renames it into place. */
-static FILE *open_tmp(const char *dir, const char *name, char *tmp, size_t len)
+/* Opens dir/name under a temporary name for writing; commit_file renames it into place.
+ * Either, failing, says which file and why in bad (VER_RUN_BAD bytes), errno kept. */
+#define VER_RUN_BAD 1400
+static FILE *open_tmp(const char *dir, const char *name, char *tmp, size_t len, char *bad)
 {
   char path[1100];
   snprintf(path, sizeof path, "%s/%s", dir, name);
-  return ver_io_open_tmp(path, tmp, len);
+  FILE *f = ver_io_open_tmp(path, tmp, len);
+  if (!f) {
+    const int e = errno;
+    snprintf(bad, VER_RUN_BAD, "%s: cannot write: %s", path, strerror(e));
+    errno = e;
+  }
+  return f;
 }
 
-static int commit_file(FILE *f, const char *tmp)
+static int commit_file(FILE *f, const char *tmp, char *bad)
 {
-  return ver_io_commit(f, tmp);
+  if (ver_io_commit(f, tmp) == 0)
+    return 0;
+  const int e = errno;
+  char path[1100] = "";
+  ver_io_tmp_final(tmp, path, sizeof path);
+  snprintf(bad, VER_RUN_BAD, "%s: cannot write: %s", path, strerror(e));
+  errno = e;
+  return -1;
 }
 
 /* decohesion.path = interface: the line's pieces with their segment's lambda and state,
  * <stem>-line.csv (docs/output-formats.md); nothing for the other paths. */
-static int write_line(const mpm_sim *s, const char *dir, const char *stem)
+static int write_line(const mpm_sim *s, const char *dir, const char *stem, char *bad)
 {
   const int n = mpm_iface_pieces(s);
   if (n == 0)
     return 0;
   char tmp[1100], name[128];
   snprintf(name, sizeof name, "%s-line.csv", stem);
-  FILE *f = open_tmp(dir, name, tmp, sizeof tmp);
+  FILE *f = open_tmp(dir, name, tmp, sizeof tmp, bad);
   if (!f)
     return -1;
   fprintf(f, "# delam line.csv schema %d\nxa,ya,xb,yb,lambda,state\n", VER_SCHEMA_LINE);
@@ -70,15 +85,15 @@ static int write_line(const mpm_sim *s, const char *dir, const char *stem)
     if (mpm_iface_piece(s, i, xy, &lam, &st))
       fprintf(f, "%.9g,%.9g,%.9g,%.9g,%.9g,%d\n", xy[0], xy[1], xy[2], xy[3], lam, st);
   }
-  return commit_file(f, tmp);
+  return commit_file(f, tmp, bad);
 }
 
-static int write_snapshot(const mpm_sim *s, const char *dir, const char *stem)
+static int write_snapshot(const mpm_sim *s, const char *dir, const char *stem, char *bad)
 {
   const mpm_particles *p = s->p;
   char tmp[1100], name[128];
   snprintf(name, sizeof name, "%s.csv", stem);
-  FILE *f = open_tmp(dir, name, tmp, sizeof tmp);
+  FILE *f = open_tmp(dir, name, tmp, sizeof tmp, bad);
   if (!f)
     return -1;
   fprintf(f, "# delam particles.csv schema %d\nx0,y0,x,y,ux,uy,lambda,sxx,syy,sxy,upn,upt,sep,wcoh,dis\n",
@@ -88,11 +103,11 @@ static int write_snapshot(const mpm_sim *s, const char *dir, const char *stem)
       fprintf(f, "%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%d,%.9g,%.9g\n", p->x0[k], p->y0[k],
             p->x[k], p->y[k], p->x[k] - p->x0[k], p->y[k] - p->y0[k], p->lam[k], p->sxx[k], p->syy[k],
             p->sxy[k], p->upn[k], p->upt[k], p->sep[k], p->wcoh[k], p->dis[k]);
-  if (commit_file(f, tmp))
+  if (commit_file(f, tmp, bad))
     return -1;
   /* Legacy VTK polydata, one vertex per particle, for ParaView. */
   snprintf(name, sizeof name, "%s.vtk", stem);
-  if (!(f = open_tmp(dir, name, tmp, sizeof tmp)))
+  if (!(f = open_tmp(dir, name, tmp, sizeof tmp, bad)))
     return -1;
   const size_t nb = p->n - s->nhead; /* the bar's particles; the head is the machine */
   fprintf(f, "# vtk DataFile Version 3.0\ndelam particles.vtk schema %d %s t=%g\nASCII\nDATASET POLYDATA\nPOINTS %zu double\n",
@@ -115,9 +130,9 @@ static int write_snapshot(const mpm_sim *s, const char *dir, const char *stem)
       if (p->mat[k] != MPM_MAT_HEAD)
         fprintf(f, "%.9g\n", arrs[q][k]);
   }
-  if (commit_file(f, tmp))
+  if (commit_file(f, tmp, bad))
     return -1;
-  return write_line(s, dir, stem);
+  return write_line(s, dir, stem, bad);
 }
 
 typedef struct {
@@ -136,18 +151,18 @@ static double modal_velocity(const mpm_sim *s, double k)
   return a;
 }
 
-static int write_rows(const row *r, long n, const char *dir)
+static int write_rows(const row *r, long n, const char *dir, char *bad)
 {
   char tmp[1100];
-  FILE *f = open_tmp(dir, "load.csv", tmp, sizeof tmp);
+  FILE *f = open_tmp(dir, "load.csv", tmp, sizeof tmp, bad);
   if (!f)
     return -1;
   fprintf(f, "# delam load.csv schema %d\nt,delta,P_grip,P_fixed\n", VER_SCHEMA_LOAD);
   for (long i = 0; i < n; i++)
     fprintf(f, "%.9g,%.9g,%.9g,%.9g\n", r[i].t, r[i].delta, r[i].Pg, r[i].Pf);
-  if (commit_file(f, tmp))
+  if (commit_file(f, tmp, bad))
     return -1;
-  if (!(f = open_tmp(dir, "energy.csv", tmp, sizeof tmp)))
+  if (!(f = open_tmp(dir, "energy.csv", tmp, sizeof tmp, bad)))
     return -1;
   /* the ledger's booked terms after the energies (mpm.h mpm_energy, mpm_step.c "Energy") */
   fprintf(f, "# delam energy.csv schema %d\nt,W_ext,KE,SE,W_coh,D,L_bc,L_flip,L_scheme,W_head,L_contact,L_debris,L_damp\n",
@@ -156,7 +171,7 @@ static int write_rows(const row *r, long n, const char *dir)
     fprintf(f, "%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", r[i].t, r[i].e.W_ext, r[i].e.KE,
             r[i].e.SE, r[i].e.W_coh, r[i].e.D, r[i].e.L_bc, r[i].e.L_flip, r[i].e.L_scheme, r[i].e.W_head,
             r[i].e.L_contact, r[i].e.L_debris, r[i].e.L_damp);
-  return commit_file(f, tmp);
+  return commit_file(f, tmp, bad);
 }
 
 /* Elastic slope of the written rows (metrics.h, one definition). */
@@ -174,19 +189,29 @@ static double fit_elastic(const row *r, long n, double peak, double delta_peak)
   return k;
 }
 
-/* An old summary must not vouch for the new, unfinished run, and old snapshots must
- * not sit beside new results: remove what an earlier run in dir wrote. */
-static int clear_outdir(const char *dir, char *err, size_t errlen)
+/* The folder for one run, this process its one writer: created, locked (a second run
+ * into it is refused, naming the first's pid), then cleared of what an earlier run
+ * wrote, so that an old summary cannot vouch for the new run and old snapshots do not
+ * sit beside new results; temporaries an interrupted run left go too.  The lock's
+ * descriptor in *lock (closed when the run is over).  0, 1 (cannot write there) or 2
+ * (--out is not a folder, or another run holds it), with err. */
+static int prepare_outdir(const char *dir, int *lock, char *err, size_t errlen)
 {
+  *lock = -1;
   if (ver_mkdir_p(dir) != 0) {
-    snprintf(err, errlen, "%s: cannot create directory: %s", dir, strerror(errno));
-    return 2;
+    const int e = errno;
+    snprintf(err, errlen, "%s: cannot create the folder: %s", dir, strerror(e));
+    return e == ENOTDIR || e == ENAMETOOLONG || e == ELOOP ? 2 : 1;
   }
+  if ((*lock = ver_io_lock_dir(dir, err, errlen)) < 0)
+    return errno == EAGAIN ? 2 : 1;
   DIR *d = opendir(dir);
   for (struct dirent *e = d ? readdir(d) : NULL; e; e = readdir(d)) {
     const char *n = e->d_name;
-    if (!strncmp(n, "snap-d", 6) || !strncmp(n, "final.", 6) || !strcmp(n, "final-line.csv") || !strcmp(n, "summary.json") ||
-        !strcmp(n, "load.csv") || !strcmp(n, "energy.csv") || !strcmp(n, "scene.ini")) {
+    const size_t len = strlen(n);
+    if (!strncmp(n, "snap-d", 6) || !strncmp(n, "final.", 6) || !strcmp(n, "final-line.csv") ||
+        !strcmp(n, "summary.json") || !strcmp(n, "load.csv") || !strcmp(n, "energy.csv") ||
+        !strcmp(n, "scene.ini") || !strcmp(n, "check.json") || (len > 4 && !strcmp(n + len - 4, ".tmp"))) {
       char old[1400];
       snprintf(old, sizeof old, "%s/%s", dir, n);
       remove(old);
@@ -319,9 +344,10 @@ static int take_snapshots(run_state *r, double delta, char *err, size_t errlen)
     if (!r->snap_done[i] && delta >= r->vs->snap[i] - 0.5 * r->vdt) {
       char stem[64];
       snprintf(stem, sizeof stem, "snap-d%.3f", r->vs->snap[i]);
-      if (write_snapshot(r->s, r->o->outdir, stem) != 0) {
+      char bad[VER_RUN_BAD];
+      if (write_snapshot(r->s, r->o->outdir, stem, bad) != 0) {
         rc = 1;
-        snprintf(err, errlen, "%s/%s: cannot write: %s", r->o->outdir, stem, strerror(errno));
+        snprintf(err, errlen, "%s", bad);
       }
       r->snap_done[i] = 1;
     }
@@ -471,6 +497,31 @@ static int run_loop(run_state *r, ver_summary *u, double w0, char *err, size_t e
   return rc;
 }
 
+/* The files of a run whose loop ended with rc (err holds its reason if rc): load.csv,
+ * energy.csv and the final particles, then summary.json last, written even where the
+ * others failed, so that the folder says the run did not finish.  The run's status,
+ * 1 if a file could not be written (err names it and why). */
+static int write_results(run_state *r, ver_summary *u, int rc, char *err, size_t errlen)
+{
+  const char *dir = r->o->outdir;
+  char bad[VER_RUN_BAD];
+  const int files = write_rows(r->rows, r->nrow, dir, bad) != 0 || write_snapshot(r->s, dir, "final", bad) != 0;
+  if (files) {
+    u->complete = 0;
+    if (!rc)
+      snprintf(err, errlen, "%s", bad);
+    rc = rc ? rc : 1;
+  }
+  if (ver_summary_write(dir, r->vs, u, err) != 0) {
+    const int e = errno;
+    const size_t n = strlen(err);
+    snprintf(err + n, errlen - n, "%s%s/summary.json: cannot write: %s", n ? "; " : "", dir, strerror(e));
+    u->complete = 0;
+    rc = rc ? rc : 1;
+  }
+  return rc;
+}
+
 int ver_run(const ver_scene *vs, const ver_run_opts *o, ver_summary *u, char *err, size_t errlen)
 {
   memset(u, 0, sizeof *u);
@@ -494,16 +545,17 @@ int ver_run(const ver_scene *vs, const ver_run_opts *o, ver_summary *u, char *er
       return qst == MPM_EINVAL ? 2 : 1;
     }
   }
-  if (o->write_files && clear_outdir(o->outdir, err, errlen)) {
-    mpm_static_free(r.q);
-    mpm_sim_free(r.s);
-    return 2;
-  }
-  if (o->write_files && write_scene_ini(vs, o->outdir) != 0) {
+  int lock = -1, prc = o->write_files ? prepare_outdir(o->outdir, &lock, err, errlen) : 0;
+  if (!prc && o->write_files && write_scene_ini(vs, o->outdir) != 0) {
     snprintf(err, errlen, "%s/scene.ini: cannot write: %s", o->outdir, strerror(errno));
+    prc = 1;
+  }
+  if (prc) {
+    if (lock >= 0)
+      close(lock);
     mpm_static_free(r.q);
     mpm_sim_free(r.s);
-    return 1;
+    return prc;
   }
   int rc = run_setup(&r, err, errlen);
   if (!rc) {
@@ -512,17 +564,14 @@ int ver_run(const ver_scene *vs, const ver_run_opts *o, ver_summary *u, char *er
     rc = run_loop(&r, u, w0, err, errlen);
     finish(&r, u, w0, c0);
     u->complete = rc == 0;
-    if (o->write_files && (write_rows(r.rows, r.nrow, o->outdir) != 0 || write_snapshot(r.s, o->outdir, "final") != 0 ||
-                           ver_summary_write(o->outdir, vs, u, err) != 0)) {
-      if (!rc)
-        snprintf(err, errlen, "%s: cannot write the results: %s", o->outdir, strerror(errno));
-      rc = rc ? rc : 1;
-      u->complete = 0;
-    }
+    if (o->write_files)
+      rc = write_results(&r, u, rc, err, errlen);
   }
   free(r.rows);
   ver_sep_free(&r.sep);
   mpm_static_free(r.q);
   mpm_sim_free(r.s);
+  if (lock >= 0)
+    close(lock); /* after summary.json: the folder is the next writer's */
   return rc;
 }

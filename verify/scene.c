@@ -21,6 +21,7 @@
 #include <ini.h>
 
 #include "build_info.h"
+#include "datadir.h"
 #include "scene.h"
 #include "scene_keys.h"
 
@@ -237,9 +238,13 @@ int ver_scene_parse_string(const char *text, const char *name, ver_scene *vs, ch
 int ver_scene_parse(const char *path, ver_scene *vs, char *err, size_t errlen)
 {
   scene_defaults(vs, path);
-  FILE *f = fopen(path, "rb");
+  const char *what;
+  FILE *f = ver_open_regular(path, &what);
   if (!f) {
-    snprintf(err, errlen, "%s: cannot open: %s", path, strerror(errno));
+    if (what)
+      snprintf(err, errlen, "%s: %s, not a scene file (a regular file is needed)", path, what);
+    else
+      snprintf(err, errlen, "%s: cannot open: %s", path, strerror(errno));
     return 2;
   }
   char *text = malloc(VER_SCENE_MAX + 1);

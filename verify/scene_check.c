@@ -164,7 +164,7 @@ int ver_scene_validate(ver_scene *vs, char *err, size_t errlen)
   }
   const int n1 = (int)lround(sqrt((double)sc->ppc));
   if (n1 * n1 != sc->ppc) {
-    snprintf(err, errlen, "%s: grid.ppc: %d is not a perfect square (allowed: 1, 4, 9, 16, ...)",
+    snprintf(err, errlen, "%s: grid.ppc: %d is not a perfect square (allowed: 1, 4, 9, 16, ..., 1024)",
              ver_scene_key_at(vs, ver_scene_key_idx("grid", "ppc"), at, sizeof at), sc->ppc);
     return 2;
   }

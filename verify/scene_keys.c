@@ -45,7 +45,7 @@ const keydef ver_scene_keys[] = {
   {"imperfection", "y", K_DBL, OFF(imp_y), 0, 0, 0, 0, -1, "a number (default: H / 2)"},
   {"imperfection", "size", K_IMPSIZE, OFF(imp_size), 0, 0, 0, 0, MPM_IMP_PARTICLE, "particle (the paper's: the particle nearest x, y) or cell (every particle of its cell)"},
   {"grid", "h", K_DBL, OFF(h), 1, 0, 0, LO_OPEN, 0, "> 0, dividing L and H"},
-  {"grid", "ppc", K_INT, OFF(ppc), 1, 1, 1024, LO_CLOSED | HI_CLOSED, 0, "a perfect square: 1, 4, 9, ..."},
+  {"grid", "ppc", K_INT, OFF(ppc), 1, 1, 1024, LO_CLOSED | HI_CLOSED, 0, "a perfect square from 1 to 1024: 1, 4, 9, ..., 1024"},
   {"grid", "margin", K_DBL, OFF(margin), 0, 0, 0, LO_CLOSED, 0, ">= 0: empty space around the bar, a length (one cell is always added)"},
   {"time", "dt", K_DBL, OFF(dt), 1, 0, 0, LO_OPEN, 0, "> 0 and below the CFL bound h / (c sqrt 2)"},
   {"time", "damping", K_DBL, OFF(damping), 0, 0, 0, LO_CLOSED, 0, ">= 0 and below 1 / dt: a rate, the damping of each node's velocity about its slow drift (0: none, the paper), or critical: 2 pi sqrt(E / rho) / L, twice the bar's first axial frequency"},

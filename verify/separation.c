@@ -1,6 +1,7 @@
 /*
  * separation.c - the separation detector of a run (separation.h).
  */
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -68,12 +69,28 @@ void ver_sep_through(ver_sep *d, double delta)
 void ver_sep_load(ver_sep *d, double delta, double Pg, double Pf, double peak, double delta_peak)
 {
   const long w = d->win, slot = d->nseen % w;
+  if (d->nseen >= w) { /* the row leaving the window */
+    d->sum_g -= d->ring[3 * slot + 1];
+    d->sum_f -= d->ring[3 * slot + 2];
+  }
+  d->sum_g += Pg;
+  d->sum_f += Pf;
+  d->amax = fmax(d->amax, fmax(fabs(Pg), fabs(Pf)));
   d->ring[3 * slot] = delta;
   d->ring[3 * slot + 1] = Pg;
   d->ring[3 * slot + 2] = Pf;
   d->nseen++;
   const long first = d->nseen % w; /* the oldest row of the window */
   if (d->delta_load < 0 && peak > 0 && d->nseen >= w && d->ring[3 * first] > delta_peak) {
+    /* The running sums decide only where they are clearly above the threshold: each of
+     * their 2 nseen additions rounds a sum of at most w amax by eps / 2 of it, so 4 nseen
+     * eps w amax bounds their error.  Elsewhere the window is summed afresh, which keeps
+     * the verdict exactly that of the plain sum and the cost linear in rows. */
+    const double slack = 4.0 * DBL_EPSILON * (double)d->nseen * (double)w * d->amax;
+    if (fmax(fabs(d->sum_g), fabs(d->sum_f)) - slack >= d->frac * peak * (double)w) {
+      settle(d);
+      return;
+    }
     double mg = 0.0, mf = 0.0;
     for (long i = 0; i < w; i++) {
       const long j = (first + i) % w;

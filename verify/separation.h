@@ -24,6 +24,8 @@ typedef struct {
   double frac;           /* load threshold, fraction of the peak           */
   double *ring;          /* the last win rows: delta, grip and fixed load  */
   long nseen;            /* output rows seen                               */
+  double sum_g, sum_f;   /* running sums of the window's loads             */
+  double amax;           /* largest |load| seen: bounds their rounding     */
   double delta_cut;      /* first delta of the cut test; -1 before         */
   double delta_load;     /* first delta of the load test; -1 before        */
   double delta_sep;      /* the first of the two; -1 before                */
@@ -44,7 +46,8 @@ void ver_sep_cut(ver_sep *d, const double *y0, const uint8_t *sep, const uint8_t
 
 /* The load test, after each output row (and after ver_sep_cut for that row, if it is
  * called): its delta and interval-averaged grip and fixed-end loads, and the largest
- * grip load so far (peak) and where (delta_peak).  Sets delta_sep. */
+ * grip load so far (peak) and where (delta_peak).  Sets delta_sep.  O(1) a row except
+ * where the window's mean is within rounding of the threshold (then O(win)). */
 void ver_sep_load(ver_sep *d, double delta, double Pg, double Pf, double peak, double delta_peak);
 
 #endif

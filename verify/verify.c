@@ -23,6 +23,7 @@ typedef struct {
   ver_case *cs;
   int n;
   int threads;   /* OpenMP threads a child */
+  char *started; /* per case: 1 once its child was started */
 } run_ctx;
 
 /* In the child: one run, its error text (if any) to DIR/<id>/error.txt. */
@@ -32,7 +33,9 @@ static void child_run(const ver_verify_opts *o, const ver_case *c, int threads)
   ver_case_dir(o, c, dir, sizeof dir);
   snprintf(path, sizeof path, "%s/error.txt", dir);
   remove(path);
-  ver_run_opts ro = {dir, 0, 1, NULL, 0, threads};
+  /* a signal to this child (from the parent's pool or the terminal) stops the run as
+   * delam run stops: the rows so far, summary.json with complete: false, status 130 */
+  ver_run_opts ro = {dir, 0, 1, ver_pool_stop_flag(), 0, threads};
   ver_summary u;
   const int rc = ver_run(&c->vs, &ro, &u, err, sizeof err);
   if (rc) {
@@ -50,9 +53,12 @@ static pid_t start_case(int i, void *ctx)
 {
   run_ctx *r = ctx;
   fflush(NULL);
-  const pid_t pid = fork();
-  if (pid == 0)
+  r->started[i] = 1;
+  const pid_t parent = getpid(), pid = fork();
+  if (pid == 0) {
+    ver_pool_child(parent);
     child_run(r->o, &r->cs[i], r->threads);
+  }
   if (pid < 0)
     snprintf(r->cs[i].error, sizeof r->cs[i].error, "fork failed: %s", strerror(errno));
   return pid;
@@ -78,8 +84,10 @@ static void case_done(int i, int status, int sig, double wall, int done, void *c
           c->exit_code, c->term_sig ? ", killed by a signal" : "");
 }
 
-/* Runs every case, at most o->jobs at a time, costliest first. */
-static int run_cases(const ver_verify_opts *o, ver_case *cs, int n)
+/* Runs every case, at most o->jobs at a time, costliest first; started[i] says which
+ * were started.  0, 2 (out of memory) or 130 (stopped by a signal: the running cases
+ * stopped and waited for, no other started). */
+static int run_cases(const ver_verify_opts *o, ver_case *cs, int n, char *started)
 {
   int *order = malloc(sizeof(int) * (size_t)(n + 1));
   if (!order)
@@ -95,11 +103,11 @@ static int run_cases(const ver_verify_opts *o, ver_case *cs, int n)
     }
   const long ncpu = sysconf(_SC_NPROCESSORS_ONLN);
   /* as many jobs as cores: one thread each; fewer: the kernel chooses (mpm_threads.c) */
-  run_ctx ctx = {o, cs, n, o->jobs >= (ncpu > 0 ? ncpu : 1) ? 1 : 0};
+  run_ctx ctx = {o, cs, n, o->jobs >= (ncpu > 0 ? ncpu : 1) ? 1 : 0, started};
   const ver_pool p = {n, o->jobs, order, start_case, show_running, case_done, &ctx};
   const int rc = ver_pool_run(&p);
   free(order);
-  return rc ? 2 : 0;
+  return rc < 0 ? 2 : rc > 0 ? 130 : 0;
 }
 
 /* One `delam run` line per case. */
@@ -138,6 +146,19 @@ static int check_all(ver_case *cs, int n, ver_cross *x, int *nx)
   return rc;
 }
 
+/* Reads back every case; after a stop, the cases never started are not read (their
+ * folders may hold an earlier sweep's results) but marked as not run. */
+static void read_cases(const ver_verify_opts *o, ver_case *cs, int n, const char *started, int stopped)
+{
+  for (int i = 0; i < n; i++)
+    if (!stopped || started[i])
+      ver_case_read(o, &cs[i]);
+    else {
+      cs[i].have_summary = cs[i].complete = 0;
+      snprintf(cs[i].error, sizeof cs[i].error, "not run: verify was stopped by a signal before this case");
+    }
+}
+
 int ver_verify(const ver_verify_opts *o)
 {
   ver_case *cs;
@@ -152,33 +173,64 @@ int ver_verify(const ver_verify_opts *o)
     free(cs);
     return 0;
   }
-  if (ver_mkdir_p(o->outdir) != 0) {
-    fprintf(stderr, "delam verify: %s: cannot create: %s\n", o->outdir, strerror(errno));
+  char err[1400];
+  const int e = ver_mkdir_p(o->outdir) != 0 ? errno : 0;
+  if (e) {
+    fprintf(stderr, "delam verify: %s: cannot create the folder: %s\n", o->outdir, strerror(e));
     free(cs);
-    return 2;
+    return e == ENOTDIR || e == ELOOP || e == ENAMETOOLONG ? 2 : 1;
   }
+  const int lock = ver_io_lock_dir(o->outdir, err, sizeof err); /* one sweep per folder */
+  const int held = lock < 0 && errno == EAGAIN;
+  char *started = calloc((size_t)n + 1, 1);
+  if (lock < 0 || !started) {
+    fprintf(stderr, "delam verify: %s\n", lock < 0 ? err : "out of memory");
+    free(cs);
+    free(started);
+    if (lock >= 0)
+      close(lock);
+    return held ? 2 : 1;
+  }
+  ver_pool_catch();
   const double w0 = ver_now_wall();
+  int stopped = 0;
   if (!o->merge) {
     fprintf(stderr, "verify: %d cases, %d at a time, into %s/\n", n, o->jobs, o->outdir);
-    if (run_cases(o, cs, n)) {
+    const int rr = run_cases(o, cs, n, started);
+    stopped = rr == 130;
+    if (rr == 2) {
       free(cs);
+      free(started);
+      close(lock);
       return 2;
     }
   }
-  for (int i = 0; i < n; i++)
-    ver_case_read(o, &cs[i]);
+  read_cases(o, cs, n, started, stopped);
   static ver_cross x[VER_MAXCROSS];
   int nx;
   int rc = check_all(cs, n, x, &nx);
   ver_sweep_print_table(cs, n, x, nx);
   const double wall = ver_now_wall() - w0;
-  if (ver_sweep_write_json(o, cs, n, x, nx, wall, rc) || ver_sweep_write_csv(o, cs, n) ||
-      ver_sweep_write_cross_csv(o, x, nx)) {
-    fprintf(stderr, "delam verify: %s: cannot write verify.json / verify.csv: %s\n", o->outdir, strerror(errno));
-    rc = rc ? rc : 2;
+  stopped = stopped || ver_pool_caught();
+  const char *bad = ver_sweep_write_json(o, cs, n, x, nx, wall, stopped ? 130 : rc) ? "verify.json"
+                    : ver_sweep_write_csv(o, cs, n)                                    ? "verify.csv"
+                    : ver_sweep_write_cross_csv(o, x, nx)                              ? "verify_cross.csv"
+                                                                                       : NULL;
+  if (bad) {
+    fprintf(stderr, "delam verify: %s/%s: cannot write: %s\n", o->outdir, bad, strerror(errno));
+    rc = 1;
   }
-  printf("\nverify: %d cases in %.1f s -> %s/verify.json, verify.csv: %s\n", n, wall, o->outdir,
-         rc ? "FAIL (a check failed)" : "no failed check");
+  int nrun = 0;
+  for (int i = 0; i < n; i++)
+    nrun += started[i];
+  if (stopped)
+    printf("\nverify: stopped by a signal after %.1f s: %d of %d cases started, each stopped or finished; "
+           "%s/verify.json and verify.csv judge what there is (the rest: not run)\n", wall, nrun, n, o->outdir);
+  else
+    printf("\nverify: %d cases in %.1f s -> %s/verify.json, verify.csv: %s\n", n, wall, o->outdir,
+           rc ? "FAIL (a check failed)" : "no failed check");
   free(cs);
-  return rc;
+  free(started);
+  close(lock);
+  return stopped ? 130 : rc;
 }

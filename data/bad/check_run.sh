@@ -3,7 +3,8 @@
 #   nonfinite  a time step far above the CFL bound (--allow-unstable) stops the run with
 #              exit status 1 and a message naming the step, the particle and the field;
 #   sigterm,   a signal stops the run cleanly: exit status 130, summary.json with
-#   sigint     "complete": false, no *.tmp file left behind;
+#   sigint,    "complete": false, no *.tmp file left behind;
+#   sighup
 #   determinism  the same scene run twice gives byte-identical load.csv, energy.csv,
 #              final.csv (and snapshots); summary.json differs only in its timings;
 #              and 1 and 2 threads give the same files;
@@ -46,7 +47,7 @@ result nonfinite "$why"
 
 # 2. Signals: a run of some seconds (h = 1, 4 particles per cell, one thread), stopped
 #    a second after it has started its time loop (the output folder exists by then).
-for sig in TERM INT; do
+for sig in TERM INT HUP; do
   out=$tmp/sig$sig
   "$delam" run "$fig6" --h 1 --ppc 4 --threads 1 --out "$out" --quiet >/dev/null 2>"$tmp/err" &
   pid=$!

@@ -58,6 +58,98 @@ static void test_ver_foreign_reader(void **state)
   assert_int_equal(ver_table_read(path, names, 3, 2, &t, err, sizeof err), 1);
 }
 
+/* The reader's faults: numbers read as strtod reads them (its fast path for plain
+ * decimals included), a row short of a column past the 256th named with its true field
+ * count, a NUL byte named by line and byte; and the agreement of two files' work. */
+static void test_ver_foreign_faults(void **state)
+{
+  (void)state;
+  static const char *const names[] = {"delta", "P_grip"};
+  static const char *const nums[] = {"0.1", "-0.0005", "1e-22", "123456789012345678", "9007199254740993",
+                                     "-0", "1.7976931348623157e308", "4.9e-324", "0.30000000000000004",
+                                     "2.5e+3", "7E-5", ".5", "5.", "0x10", "1e400000", "3.14159265358979323846"};
+  const int nn = (int)(sizeof nums / sizeof *nums);
+  ver_table t;
+  char err[512], want[600], text[2048] = "delta,P_grip\n";
+  for (int i = 0; i < nn; i++)
+    snprintf(text + strlen(text), sizeof text - strlen(text), "%d,%s\n", i, nums[i]);
+  put(text);
+  /* 1e400000 is not finite: the row before it ends the file for this part */
+  assert_int_equal(ver_table_read(path, names, 2, 2, &t, err, sizeof err), 2);
+  snprintf(want, sizeof want, "%s:16:2: column 'P_grip': '1e400000' is not a finite number", path);
+  assert_non_null(strstr(err, want));
+  text[strlen("delta,P_grip\n")] = '\0';
+  for (int i = 0; i < nn; i++)
+    if (strcmp(nums[i], "1e400000"))
+      snprintf(text + strlen(text), sizeof text - strlen(text), "%d,%s\n", i, nums[i]);
+  put(text);
+  assert_int_equal(ver_table_read(path, names, 2, 2, &t, err, sizeof err), 0);
+  for (int i = 0, r = 0; i < nn; i++)
+    if (strcmp(nums[i], "1e400000")) {
+      const double v = strtod(nums[i], NULL), got = t.col[1][r++];
+      assert_memory_equal(&v, &got, sizeof v); /* the same bits, -0 included */
+    }
+  ver_table_free(&t);
+  /* 300 columns, P_grip the 281st; a row of 270 fields */
+  char *wide = malloc(8192);
+  assert_non_null(wide);
+  wide[0] = '\0';
+  for (int k = 0; k < 300; k++)
+    snprintf(wide + strlen(wide), 8192 - strlen(wide), "%s%s", k ? "," : "",
+             k == 0 ? "delta" : k == 280 ? "P_grip" : "x");
+  strcat(wide, "\n");
+  for (int row = 0; row < 3; row++) {
+    for (int k = 0; k < (row == 2 ? 270 : 300); k++)
+      snprintf(wide + strlen(wide), 8192 - strlen(wide), "%s1", k ? "," : "");
+    strcat(wide, "\n");
+  }
+  put(wide);
+  free(wide);
+  assert_int_equal(ver_table_read(path, names, 2, 2, &t, err, sizeof err), 2);
+  snprintf(want, sizeof want, "%s:4:281: no field for column 'P_grip' (the row has 270 fields, the header 300)", path);
+  assert_non_null(strstr(err, want));
+  static const char nul[] = "delta,P_grip\n0.1,1\n0.2,2\0\n0.3,3\n";
+  snprintf(path, sizeof path, "/tmp/test_ver_foreign.%ld.csv", (long)getpid());
+  FILE *f = fopen(path, "wb");
+  assert_non_null(f);
+  fwrite(nul, 1, sizeof nul - 1, f);
+  fclose(f);
+  assert_int_equal(ver_table_read(path, names, 2, 2, &t, err, sizeof err), 2);
+  snprintf(want, sizeof want, "%s:3: byte 6 of the line is a NUL byte (0x00)", path);
+  assert_non_null(strstr(err, want));
+  remove(path);
+  /* the work: P = 1 over delta 0..1 has area delta; W_ext that matches, then one 10 % high */
+  enum { N = 101 };
+  double d[N], P[N], lt[N], W[N], et[N], rel, area;
+  long row;
+  for (int i = 0; i < N; i++) {
+    d[i] = 0.01 * i;
+    P[i] = 1.0;
+    lt[i] = 10.0 * i;
+    et[i] = 10.0 * i;
+    W[i] = d[i];
+  }
+  assert_int_equal(ver_foreign_work(lt, d, P, N, et, W, N, &rel, &row, &area, err, sizeof err), 0);
+  assert_true(rel < 1e-12);
+  W[60] *= 1.1; /* 0.66 against 0.6: 0.06 of the largest work, 1 */
+  assert_int_equal(ver_foreign_work(lt, d, P, N, et, W, N, &rel, &row, &area, err, sizeof err), 0);
+  assert_true(fabs(rel - 0.06) < 1e-12 && row == 61 && fabs(area - 0.6) < 1e-12);
+  /* every other energy row, by t: the same gap; the first half only: refused */
+  double W2[N], et2[N];
+  for (int i = 0; i < N; i += 2) {
+    W2[i / 2] = W[i];
+    et2[i / 2] = et[i];
+  }
+  assert_int_equal(ver_foreign_work(lt, d, P, N, et2, W2, 51, &rel, &row, &area, err, sizeof err), 0);
+  assert_true(fabs(rel - 0.06) < 1e-12 && row == 31);
+  assert_int_equal(ver_foreign_work(lt, d, P, N, et2, W2, 26, &rel, &row, &area, err, sizeof err), 2);
+  assert_non_null(strstr(err, "energy.csv ends at t 500, load.csv at t 1000"));
+  assert_int_equal(ver_foreign_work(NULL, d, P, N, et2, W2, 51, &rel, &row, &area, err, sizeof err), 2);
+  assert_non_null(strstr(err, "energy.csv has 51 rows and load.csv 101"));
+  d[50] = 0.3;
+  assert_int_equal(ver_foreign_backstep(d, N), 50);
+}
+
 static void test_ver_foreign_triangle(void **state)
 {
   (void)state;
@@ -176,6 +268,7 @@ int main(void)
 {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_ver_foreign_reader),
+      cmocka_unit_test(test_ver_foreign_faults),
       cmocka_unit_test(test_ver_foreign_triangle),
       cmocka_unit_test(test_ver_foreign_wave),
   };
