@@ -84,6 +84,13 @@ static mpm_status refuse(const mpm_scene *sc, char *err, size_t errlen)
              "particle or staircase", sc->le_mode == MPM_LE_ROW ? "row" : "zone");
     return MPM_EINVAL;
   }
+  if (sc->ppc == 1 && sc->model != MPM_DCOH_NONE && sc->path != MPM_PATH_IFACE) {
+    /* measured: fig6 on uGIMP at 1 ppc, h 8, stalls in the softening (D 0.19 of 12) */
+    snprintf(err, errlen, "solver.type = static: grid.ppc = 1 with softening particles (decohesion.path = %s) "
+             "stalls: one particle a cell cannot open its band in equilibrium (docs/static.md); use ppc 4 or 9, or "
+             "decohesion.path = interface", sc->path == MPM_PATH_LINE ? "line" : "free");
+    return MPM_EINVAL;
+  }
   if (sc->shape == MPM_SHAPE_LINEAR && sc->ppc == 1) {
     /* one quadrature point per cell: the bilinear cell's two hourglass modes carry no
      * strain at it, so the tangent is singular (docs/static.md) */

@@ -5,8 +5,7 @@
  * Why UMFPACK: the tangent is unsymmetric (the associated law's flow direction frozen at
  * the trial state) and indefinite once a band softens, so Cholesky will not do; its
  * pattern is fixed for the run, so the fill-reducing ordering is computed once and each
- * Newton iteration pays for the numerical LU only.  docs/static.md gives the measured
- * comparison with GSL's banded LU.
+ * Newton iteration pays for the numerical LU only.
  */
 #include <stdlib.h>
 #include <string.h>

@@ -199,19 +199,29 @@ static void test_mpm_static_elastic(void **state)
     assert_rel(t.P[i], k * t.d[i], 1e-8, "elastic load");
 }
 
-/* static-3: one particle per cell on bilinear shapes is refused with MPM_EINVAL and why. */
+/* static-3: one particle per cell is refused with MPM_EINVAL and why: on bilinear shapes
+ * (hourglass modes), and with softening particles on any shape (the band stalls). */
+static void refuse_case(int shape, int model, const char *why)
+{
+  mpm_scene sc = snap_scene();
+  sc.ppc = 1;
+  sc.shape = shape;
+  sc.model = model;
+  mpm_sim *s = tu_make_sim(&sc, 1);
+  mpm_static *q = NULL;
+  char err[400] = "";
+  assert_int_equal(mpm_static_alloc(s, &q, err, sizeof err), MPM_EINVAL);
+  assert_null(q);
+  if (!strstr(err, why))
+    fail_msg("message lacks '%s': %s", why, err);
+  mpm_sim_free(s);
+}
+
 static void test_mpm_static_refuses_one_point(void **state)
 {
   (void)state;
-  mpm_scene sc = snap_scene();
-  sc.ppc = 1;
-  mpm_sim *s = tu_make_sim(&sc, 1);
-  mpm_static *q = NULL;
-  char err[256] = "";
-  assert_int_equal(mpm_static_alloc(s, &q, err, sizeof err), MPM_EINVAL);
-  assert_null(q);
-  assert_non_null(strstr(err, "hourglass"));
-  mpm_sim_free(s);
+  refuse_case(MPM_SHAPE_LINEAR, MPM_DCOH_NONE, "hourglass");
+  refuse_case(MPM_SHAPE_GIMP, MPM_DCOH_MODEL1, "stalls");
 }
 
 int main(void)
