@@ -27,6 +27,8 @@ static const ver_variant V_WHOLE = {"whole", "run.stop_margin=0", 1, 0, 0};
  * (v = 0.001 h / 8) and the rate study at fixed h (policy.c policy_rate) */
 static const ver_variant V_V2 = {"v0.0005", "loading.speed=0.0005", 0, 1, 0};
 static const ver_variant V_V4 = {"v0.00025", "loading.speed=0.00025", 0, 2, 0};
+/* the quasi-static solver (docs/static.md): equilibrium increments, no grip speed */
+static const ver_variant V_STATIC = {"static", "solver.type=static", 0, 0, 0};
 /* --angles: an inclined file with only its laminate angle changed, and with its two
  * failure tractions snf and stf exchanged as well (the other mode: Mode I by strengths
  * becomes Mode II and back), issue 13: the method must hold for the bands and modes the
@@ -203,6 +205,8 @@ int ver_sweep_cases(const ver_verify_opts *o, ver_case **out, int *nout)
       {"fig6", 4, 1, &V_V2}, {"fig6", 2, 1, &V_V4}, {"fig6", 4, 1, &V_V4},
       /* Fig. 6's bar on the interface against the exact solution at its grip speed */
       {"iface90", 4, 1, &V_BASE},
+      /* the quasi-static solver on the band and on the interface (a second each) */
+      {"fig6", 8, 4, &V_STATIC}, {"fig6", 4, 4, &V_STATIC}, {"iface90", 8, 4, &V_STATIC},
     };
     const int nq = (int)(sizeof q / sizeof q[0]);
     cs = calloc((size_t)nq, sizeof *cs);
