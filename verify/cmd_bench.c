@@ -153,6 +153,10 @@ static void usage(FILE *f)
     "fields, Rayleigh damping) from a band already cut, damped about each part's held\n"
     "end (the file's) or about each node's drift, and undamped (the case id ends in\n"
     "the method).\n"
+    "Then the quasi-static solver (--solver static) on whole runs at 4 ppc, one thread:\n"
+    "Fig. 6 (the band) and iface90 (the interface) at h 8, 4 and 2 (h 2 only with\n"
+    "--steps-scale 1 or more), with its increments, Newton iterations, LU factorizations\n"
+    "and the time per increment in assembly, factorization and solves.\n"
     "Each case runs --repeat times from the same start and the fastest run is reported\n"
     "(the others differ only by what else the machine did meanwhile).\n"
     "  --threads N      only N threads (default: 1 and 2)\n"
@@ -232,6 +236,85 @@ static int bench_args(int argc, char **argv, int *threads, int *json, int *repea
       return 2;
     }
   }
+  return 0;
+}
+
+/* The quasi-static solver (docs/static.md) on whole runs, to the cut and a margin: the
+ * band (fig6.ini) and the interface (iface90.ini) at 4 ppc; h 2 with --steps-scale 1 or more. */
+static const struct {
+  const char *scene;
+  double h;
+} static_cases[] = {{"fig6", 8}, {"fig6", 4}, {"fig6", 2}, {"iface90", 8}, {"iface90", 4}, {"iface90", 2}};
+
+/* One static case, the fastest of `repeat` runs; 0, 1 when it fails, 2 on bad input. */
+static int bench_static_case(int c, int repeat, int json)
+{
+  const bench_case bc = {static_cases[c].scene, static_cases[c].h, 4, 0, "static", "solver.type=static", 0, 0};
+  ver_scene vs;
+  ana_bar bar;
+  char err[1024];
+  if (bench_scene(&bc, &vs, &bar))
+    return 2;
+  mpm_static_stats best = {0};
+  double wall = INFINITY, cpu = 0.0;
+  size_t np = 0;
+  for (int r = 0; r < repeat; r++) {
+    mpm_sim *s = NULL;
+    mpm_static *q = NULL;
+    if (mpm_sim_alloc(&vs.sc, 1, &s, err, sizeof err) != MPM_OK || mpm_static_alloc(s, &q, err, sizeof err) != MPM_OK) {
+      fprintf(stderr, "delam bench: %s\n", err);
+      mpm_sim_free(s);
+      return 1;
+    }
+    const double w0 = ver_now_wall(), c0 = ver_now_cpu();
+    int after = 0; /* increments past the cut */
+    while (after < 3 && mpm_sim_delta(s) < vs.sc.end_delta) {
+      if (mpm_static_step(q, err, sizeof err) != MPM_OK) {
+        fprintf(stderr, "delam bench: %s\n", err);
+        mpm_static_free(q);
+        mpm_sim_free(s);
+        return 1;
+      }
+      after += s->cut;
+    }
+    const double w = ver_now_wall() - w0;
+    if (w < wall) {
+      wall = w;
+      cpu = ver_now_cpu() - c0;
+      mpm_static_stats_get(q, &best);
+      np = s->p->n;
+    }
+    mpm_static_free(q);
+    mpm_sim_free(s);
+  }
+  char id[96];
+  snprintf(id, sizeof id, "%s-h%g-ppc4-static", vs.name, bc.h);
+  const double ni = best.increments > 0 ? (double)best.increments : 1.0;
+  if (json) {
+    cJSON *o = cJSON_CreateObject();
+    cJSON_AddStringToObject(o, "case", id);
+    cJSON_AddNumberToObject(o, "threads", 1);
+    cJSON_AddNumberToObject(o, "repeat", repeat);
+    cJSON_AddNumberToObject(o, "particles", (double)np);
+    cJSON_AddNumberToObject(o, "unknowns", best.unknowns);
+    cJSON_AddNumberToObject(o, "increments", (double)best.increments);
+    cJSON_AddNumberToObject(o, "newton", (double)best.newton);
+    cJSON_AddNumberToObject(o, "factorizations", (double)best.factorizations);
+    cJSON_AddNumberToObject(o, "wall_s", wall);
+    cJSON_AddNumberToObject(o, "cpu_s", cpu);
+    cJSON_AddNumberToObject(o, "assembly_s_per_increment", best.t_eval / ni);
+    cJSON_AddNumberToObject(o, "factor_s_per_increment", best.t_factor / ni);
+    cJSON_AddNumberToObject(o, "solve_s_per_increment", best.t_solve / ni);
+    char *txt = cJSON_PrintUnformatted(o);
+    printf("%s\n", txt);
+    free(txt);
+    cJSON_Delete(o);
+  } else {
+    printf("%-28s %8zu %8d %5ld %6ld %5ld %7.3f %7.3f  %8.3f %8.3f %8.3f\n", id, np, best.unknowns,
+           best.increments, best.newton, best.factorizations, wall, cpu, 1e3 * best.t_eval / ni,
+           1e3 * best.t_factor / ni, 1e3 * best.t_solve / ni);
+  }
+  fflush(stdout);
   return 0;
 }
 
@@ -320,5 +403,15 @@ int ver_cmd_bench(int argc, char **argv)
       fflush(stdout);
       mpm_sim_free(s);
     }
+  if (!json)
+    printf("\n%-28s %8s %8s %5s %6s %5s %7s %7s  %8s %8s %8s\n", "static case (1 thread)", "particles", "unknowns",
+           "incr", "newton", "LU", "wall_s", "cpu_s", "asm ms/i", "LU ms/i", "sol ms/i");
+  for (int c = 0; c < (int)(sizeof static_cases / sizeof static_cases[0]); c++) {
+    if (static_cases[c].h < 4 && scale < 1.0)
+      continue; /* h 2 is whole runs of seconds: not for a shortened bench */
+    const int rc = bench_static_case(c, repeat, json);
+    if (rc)
+      return rc;
+  }
   return 0;
 }
