@@ -79,13 +79,18 @@ struct mpm_static {
    * copies of each split node, as a stiff elastic tie until it initiates */
   int iface;
   uint8_t *split;         /* nn: 1 where a node has the far side's second slot            */
-  int npair;              /* the line's quadrature points                               */
-  int *qnode;             /* 4 per point: its cell's nodes                              */
-  double *qN;             /* 4 per point: their hats' weights there                     */
-  double *pA;             /* per point: its length of line ds                           */
-  mpm_dstate *pst, *ptr;  /* the law's committed and trial state per point              */
-  double *pw;             /* trial: the law's work this increment, times ds             */
-  size_t kpair;           /* where the points' entries (256 each) start in map           */
+  int nsn;                /* split nodes                                                */
+  int *snode;             /* their node indices                                        */
+  double *sA;             /* their weights A = max(a_0 . n, 0), a_0 the near side's sum of
+                             V grad N (the force of a uniform stress: sigma a_0)        */
+  int *sseg;              /* their segment                                             */
+  int nseg, npair;        /* segments of the line (npair: the same, for the law's loops) */
+  int *segstart, *sorder; /* split nodes of segment g: sorder[segstart[g] .. segstart[g+1]) */
+  double *pA;             /* per segment: sum of its nodes' A                           */
+  mpm_dstate *pst, *ptr;  /* the law's committed and trial state per segment            */
+  double *pw;             /* trial: the law's work this increment, times pA             */
+  size_t kpair;           /* where the segments' entries start in map                    */
+  size_t *kseg;           /* ... and each segment's                                     */
   mpm_material imat;      /* the law as a material of the update: E1 = G = k0, E2 = 0, Le 1 */
 };
 
@@ -93,8 +98,9 @@ struct mpm_static {
 mpm_status mpm_static_iface_setup(mpm_static *q, char *err, size_t errlen);
 void mpm_static_iface_eval(mpm_static *q, int tangent, double *Ax, double *D, double *C);
 void mpm_static_iface_commit(mpm_static *q);
-/* the points' entries of the tangent's pattern from map position k; returns the next */
+/* the segments' entries of the tangent's pattern from map position k; returns the next */
 size_t mpm_static_iface_pattern(mpm_static *q, int *ti, int *tj, size_t k, size_t *m);
+size_t mpm_static_iface_nz(const mpm_static *q); /* how many entries that is            */
 void mpm_static_iface_free(mpm_static *q);
 
 /* mpm_static_asm.c: the stencils and unknowns (setup), the trial state of every particle

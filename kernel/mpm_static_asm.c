@@ -155,7 +155,7 @@ mpm_status mpm_static_number(mpm_static *q, char *err, size_t errlen)
       q->eq[i] = n++;
   q->nfree = n;
   /* the pattern: every pair of free components of a particle's stencil */
-  size_t nz = 256 * (size_t)q->npair; /* a line point: 4 nodes x both slots' x and y, squared */
+  size_t nz = q->iface ? mpm_static_iface_nz(q) : 0;
   for (size_t c = 0; c < q->np; c++)
     nz += 4 * (size_t)q->cnt[c] * (size_t)q->cnt[c];
   int *ti = malloc((nz ? nz : 1) * sizeof *ti), *tj = malloc((nz ? nz : 1) * sizeof *tj);

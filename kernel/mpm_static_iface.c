@@ -3,28 +3,28 @@
  * (decohesion.path = interface): the line at alpha through the flaw's particle splits the
  * bar's particles into two sides (mpm_iface_side, the explicit interface's rule); a node
  * whose stencil holds particles of both sides gets a second displacement slot for the far
- * side's particles.  The jump w = u_far - u_near along the line is interpolated from the
- * split nodes' two slots with the grid's hats, and the paper's law (secs. 3-4, Model 1 or
- * 2) acts on it at quadrature points along the line, MPM_QS_LINE_PTS per cell crossed, each
- * with its length ds: nodal forces -+ N_I t ds, the traction t from the law.
+ * side's particles, and the jump W_I between its slots carries the line's law.
+ *
+ * A uniform stress puts the force sigma a_I on a split node's near slot, a_I the near
+ * side's sum of V grad N = the integral of N_I n_s over the near side's boundary, where
+ * the sides' particle squares meet in a staircase: on an inclined line a_I does not lie
+ * along n node by node, only summed along the line.  So the law acts on segments of
+ * MPM_QS_SEG cells along the line, on their nodes' mean jump weighted by the staircase's
+ * projected share A_I (facet_areas), and node I carries A_I t(W_seg) + T_I k0 (W_I - W_seg)
+ * (T_I = A_I, at least half a particle's side): the segment's traction, and a stiff tie on
+ * its node's departure from the segment's mean, which takes
+ * up the staircase's node-to-node differences (the explicit interface shares a segment's
+ * traction among its nodes' stick impulses the same way).
  *
  * The law is the particle update itself (mpm_dcoh_update, with its algorithmic tangent),
  * driven by the jump instead of a strain: a material whose "strain" e_nn = w . n,
- * e_nt = w . t / 2 meets a stiffness k0 (E1 = G = k0, E2 = -k0: isotropic, as the
- * update's rotation into the n-t frame needs) and Le = 1, so that the
- * decohesion "strain" is the opening itself, d ud = d lambda ubar0 m* (eqs. 19, 24).
- * Before the traction reaches the strength (eq. 23) the tie is elastic with k0 =
- * MPM_QS_TIE E / L per unit area: it adds 1 / MPM_QS_TIE of the bar's own compliance to
- * the curve (the explicit interface sticks rigidly; a rigid tie would need the unknowns
- * merged and split again at the onset).  Stiffer ties make the inclined line's tractions
- * oscillate from point to point (fig8 at 1e6: a point initiates at 19 % of the peak;
- * docs/static.md), as stiff cohesive ties do under line quadrature.  After the onset the traction softens with the
- * opening to zero at lambda 1, where the line separates (eqs. 56-58; compression closes
- * it first and is carried, shear is released).
- *
- * At 90 deg the line lies on a node column and midpoint quadrature integrates the hats
- * exactly, so a uniform state is an exact discrete solution; inclined, the line crosses
- * cells and the particles' forces at the split nodes match the line's only on average.
+ * e_nt = w . t / 2 meets an isotropic stiffness k0 (E1 = G = k0, E2 = -k0, as the
+ * update's rotation into the n-t frame needs) and Le = 1, so that the decohesion
+ * "strain" is the opening itself, d ud = d lambda ubar0 m* (eqs. 19, 24).  Before the
+ * traction reaches the strength (eq. 23) the segment is an elastic tie of k0 =
+ * MPM_QS_TIE E / L per unit area, 1 / MPM_QS_TIE of the bar's compliance; after the onset
+ * the traction softens with the opening to zero at lambda 1, where the segment separates
+ * (eqs. 56-58; compression closes it first and is carried, shear is released).
  */
 #include <math.h>
 #include <stdio.h>
@@ -34,72 +34,147 @@
 #include "mpm_iface.h"
 #include "mpm_static.h"
 
-#define MPM_QS_TIE 1e3 /* the tie's stiffness before the onset, k0 L / E per unit area */
-
-#define MPM_QS_LINE_PTS 2 /* quadrature points per cell length of line */
+#define MPM_QS_TIE 1e6    /* the tie's stiffness, k0 L / E per unit area                  */
+#define MPM_QS_SEG 2.0    /* a segment's length along the line, in cells                  */
 
 void mpm_static_iface_free(mpm_static *q)
 {
-  free(q->qnode);
-  free(q->qN);
-  free(q->pA);
-  free(q->pst);
-  free(q->ptr);
-  free(q->pw);
-  free(q->split);
+  void *f[] = {q->split, q->snode, q->sA, q->sseg, q->segstart, q->sorder, q->pA, q->pst, q->ptr, q->pw, q->kseg};
+  for (size_t i = 0; i < sizeof f / sizeof f[0]; i++)
+    free(f[i]);
 }
 
-/* The points along the crack within the bar, their hats' nodes and weights.  The crack
- * is where the sides meet: the line through the flaw's particle, moved along n by half
- * the gap to the nearest far-side particle (the particles on the line join the near
- * side: at 90 deg the crack is the flaw column's far edge, a node column). */
-static int line_points(mpm_static *q, const mpm_iface *f)
+/* The split nodes' shares of the line, A_I = sum over the staircase's facets (an edge
+ * between a near and a far particle's squares, length d, normal n_s from near to far) of
+ * N_I(facet midpoint) d (n_s . n): the line's own share of a_I (the faces' part of the
+ * near side's boundary left out), summing to the line's length in the bar. */
+static int facet_areas(const mpm_static *q, const mpm_iface *f, double *A)
 {
   const mpm_sim *s = q->s;
   const mpm_particles *p = s->p;
   const mpm_grid *g = s->g;
-  const double h = s->sc.h;
-  double gmin = INFINITY;
+  const double h = s->sc.h, d = h / sqrt((double)s->sc.ppc);
+  const int nx = (int)lround(s->sc.L / d), ny = (int)lround(s->sc.H / d);
+  signed char *side = malloc((size_t)nx * (size_t)ny);
+  if (!side)
+    return -1;
+  memset(side, -1, (size_t)nx * (size_t)ny);
   for (size_t c = 0; c < q->np; c++) {
     const size_t k = q->pid[c];
-    const double gn = f->nx * (p->x0[k] - f->lx) + f->ny * (p->y0[k] - f->ly);
-    if (gn > f->on)
-      gmin = fmin(gmin, gn);
+    const int i = (int)floor(p->x0[k] / d), j = (int)floor(p->y0[k] / d);
+    if (i >= 0 && i < nx && j >= 0 && j < ny)
+      side[(size_t)j * (size_t)nx + (size_t)i] = (signed char)mpm_iface_side(f, p->x0[k], p->y0[k]);
   }
-  const double off = isfinite(gmin) ? 0.5 * gmin : 0.0;
-  const double lx = f->lx + off * f->nx, ly = f->ly + off * f->ny;
-  /* from y = 0 to y = H (t_y = sin a > 0), within 0 <= x <= L */
-  double s0 = -ly / f->ty, s1 = (s->sc.H - ly) / f->ty;
-  for (int e = 0; e < 2 && fabs(f->tx) > 1e-12; e++) {
-    const double se = ((e ? s->sc.L : 0.0) - lx) / f->tx;
-    if ((f->tx > 0.0) == (e == 0))
-      s0 = fmax(s0, se);
-    else
-      s1 = fmin(s1, se);
-  }
-  const int n = (int)ceil((s1 - s0) / h * MPM_QS_LINE_PTS - 1e-9);
-  const double ds = (s1 - s0) / n;
-  q->npair = n;
-  q->qnode = malloc(4 * (size_t)n * sizeof *q->qnode);
-  q->qN = malloc(4 * (size_t)n * sizeof(double));
-  q->pA = malloc((size_t)n * sizeof(double));
-  q->pst = calloc((size_t)n, sizeof *q->pst);
-  q->ptr = calloc((size_t)n, sizeof *q->ptr);
-  q->pw = calloc((size_t)n, sizeof(double));
-  if (!q->qnode || !q->qN || !q->pA || !q->pst || !q->ptr || !q->pw)
-    return -1;
-  for (int i = 0; i < n; i++) {
-    const double sl = s0 + (i + 0.5) * ds, x = lx + sl * f->tx, y = ly + sl * f->ty;
-    const double fx = (x - s->grid_ox0) / h, fy = (y - g->oy) / h;
-    const int ci = (int)floor(fx), cj = (int)floor(fy);
-    const double rx = fx - ci, ry = fy - cj;
-    for (int b = 0; b < 2; b++)
-      for (int a = 0; a < 2; a++) {
-        q->qnode[4 * i + 2 * b + a] = (int)mpm_grid_node(g, ci + a, cj + b);
-        q->qN[4 * i + 2 * b + a] = (a ? rx : 1.0 - rx) * (b ? ry : 1.0 - ry);
+  for (int j = 0; j < ny; j++)
+    for (int i = 0; i < nx; i++) {
+      const signed char s0 = side[(size_t)j * (size_t)nx + (size_t)i];
+      for (int dir = 0; dir < 2 && s0 >= 0; dir++) { /* the +x and +y neighbours */
+        const int i1 = i + (dir == 0), j1 = j + (dir == 1);
+        if (i1 >= nx || j1 >= ny)
+          continue;
+        const signed char s1 = side[(size_t)j1 * (size_t)nx + (size_t)i1];
+        if (s1 < 0 || s1 == s0)
+          continue;
+        /* the normal from the near particle to the far one */
+        const double sg = s0 == 0 ? 1.0 : -1.0, nsx = dir == 0 ? sg : 0.0, nsy = dir == 1 ? sg : 0.0;
+        const double w = d * (nsx * f->nx + nsy * f->ny);
+        const double mx = (i + 0.5) * d + 0.5 * d * (dir == 0), my = (j + 0.5) * d + 0.5 * d * (dir == 1);
+        const double fx = (mx - s->grid_ox0) / h, fy = (my - g->oy) / h;
+        const int ci = (int)floor(fx), cj = (int)floor(fy);
+        const double rx = fx - ci, ry = fy - cj;
+        for (int b = 0; b < 2; b++)
+          for (int a = 0; a < 2; a++)
+            A[mpm_grid_node(g, ci + a, cj + b)] += w * (a ? rx : 1.0 - rx) * (b ? ry : 1.0 - ry);
       }
-    q->pA[i] = ds;
+    }
+  free(side);
+  /* The staircase's projection stops up to a particle short of the faces at each end:
+   * its shares are scaled to the line's length in the bar, the crack's area (so D is
+   * U0 times it, eq. 10; a45 at h 4, 4 ppc: 43.84 against 45.25) */
+  double sum = 0.0;
+  for (size_t nd = 0; nd < q->nn; nd++)
+    sum += A[nd];
+  const double ty = fabs(f->ty) > 1e-12 ? fabs(f->ty) : 1.0;
+  double len = s->sc.H / ty; /* y = 0 to H, within x = 0 to L */
+  if (fabs(f->tx) > 1e-12)
+    len = fmin(len, s->sc.L / fabs(f->tx));
+  for (size_t nd = 0; sum > 0.0 && nd < q->nn; nd++)
+    A[nd] *= len / sum;
+  return 0;
+}
+
+/* The split nodes, their shares of the line (facet_areas) and their segments along it
+ * (CSR by segment). */
+static int segments(mpm_static *q, const mpm_iface *f, const double *An)
+{
+  const mpm_sim *s = q->s;
+  const mpm_grid *g = s->g;
+  const size_t nn = q->nn;
+  int n = 0;
+  for (size_t nd = 0; nd < nn; nd++)
+    n += q->split[nd];
+  q->nsn = n;
+  q->snode = malloc((size_t)(n ? n : 1) * sizeof *q->snode);
+  q->sA = malloc((size_t)(n ? n : 1) * sizeof(double));
+  q->sseg = malloc((size_t)(n ? n : 1) * sizeof *q->sseg);
+  q->sorder = malloc((size_t)(n ? n : 1) * sizeof *q->sorder);
+  if (!q->snode || !q->sA || !q->sseg || !q->sorder)
+    return -1;
+  double smin = INFINITY, smax = -INFINITY, *sp = malloc((size_t)(n ? n : 1) * sizeof(double));
+  if (!sp)
+    return -1;
+  for (size_t nd = 0, i = 0; nd < nn; nd++)
+    if (q->split[nd]) {
+      const double x = s->grid_ox0 + s->sc.h * (double)(nd / (size_t)g->nny);
+      const double y = g->oy + s->sc.h * (double)(nd % (size_t)g->nny);
+      q->snode[i] = (int)nd;
+      q->sA[i] = fmax(An[nd], 0.0);
+      sp[i] = f->tx * (x - f->lx) + f->ty * (y - f->ly);
+      smin = fmin(smin, sp[i]);
+      smax = fmax(smax, sp[i]);
+      i++;
+    }
+  /* the segments span the nodes that share the line; a node off it joins the nearest */
+  double lo = INFINITY, hi = -INFINITY;
+  for (int i = 0; i < n; i++)
+    if (q->sA[i] > 0.0) {
+      lo = fmin(lo, sp[i]);
+      hi = fmax(hi, sp[i]);
+    }
+  if (isfinite(lo)) {
+    smin = lo;
+    smax = hi;
   }
+  const double len = MPM_QS_SEG * s->sc.h;
+  q->nseg = n ? (int)floor((smax - smin) / len) + 1 : 0;
+  q->segstart = calloc((size_t)q->nseg + 1, sizeof *q->segstart);
+  q->pA = calloc((size_t)(q->nseg ? q->nseg : 1), sizeof(double));
+  q->pst = calloc((size_t)(q->nseg ? q->nseg : 1), sizeof *q->pst);
+  q->ptr = calloc((size_t)(q->nseg ? q->nseg : 1), sizeof *q->ptr);
+  q->pw = calloc((size_t)(q->nseg ? q->nseg : 1), sizeof(double));
+  q->kseg = calloc((size_t)(q->nseg ? q->nseg : 1), sizeof *q->kseg);
+  if (!q->segstart || !q->pA || !q->pst || !q->ptr || !q->pw || !q->kseg) {
+    free(sp);
+    return -1;
+  }
+  for (int i = 0; i < n; i++) {
+    const int gi = (int)floor((sp[i] - smin) / len);
+    q->sseg[i] = gi < 0 ? 0 : gi >= q->nseg ? q->nseg - 1 : gi;
+    q->segstart[q->sseg[i] + 1]++;
+    q->pA[q->sseg[i]] += q->sA[i];
+  }
+  for (int k = 0; k < q->nseg; k++)
+    q->segstart[k + 1] += q->segstart[k];
+  int *fill = calloc((size_t)(q->nseg ? q->nseg : 1), sizeof *fill);
+  if (!fill) {
+    free(sp);
+    return -1;
+  }
+  for (int i = 0; i < n; i++)
+    q->sorder[q->segstart[q->sseg[i]] + fill[q->sseg[i]]++] = i;
+  free(fill);
+  free(sp);
+  q->npair = q->nseg;
   return 0;
 }
 
@@ -110,19 +185,23 @@ mpm_status mpm_static_iface_setup(mpm_static *q, char *err, size_t errlen)
   const mpm_iface *f = s->g && s->g->fld ? s->g->fld->ifc : NULL;
   const size_t M = MPM_ST_MAX, nn = q->nn;
   q->split = calloc(nn, 1);
-  if (!f || !q->split || line_points(q, f) != 0) {
-    snprintf(err, errlen, "out of memory for the static interface (or no interface line)");
-    return MPM_ENOMEM;
-  }
-  /* which sides touch each node (bit 0 near, 1 far): both, and the node is split */
-  for (size_t c = 0; c < q->np; c++) {
+  double *An = calloc(nn, sizeof(double));
+  int ok = f && q->split && An && facet_areas(q, f, An) == 0;
+  /* which sides touch each node (bit 0 near, 1 far): both, and it is split */
+  for (size_t c = 0; ok && c < q->np; c++) {
     const size_t k = q->pid[c];
     const int side = mpm_iface_side(f, p->x0[k], p->y0[k]);
     for (int a = 0; a < q->cnt[c]; a++)
       q->split[q->node[c * M + (size_t)a]] |= (uint8_t)(1u << side);
   }
-  for (size_t nd = 0; nd < nn; nd++)
+  for (size_t nd = 0; ok && nd < nn; nd++)
     q->split[nd] = q->split[nd] == 3;
+  ok = ok && segments(q, f, An) == 0;
+  free(An);
+  if (!ok) {
+    snprintf(err, errlen, "out of memory for the static interface (or no interface line)");
+    return MPM_ENOMEM;
+  }
   /* the far side's particles use the second slot of a split node */
   for (size_t c = 0; c < q->np; c++) {
     const size_t k = q->pid[c];
@@ -134,12 +213,11 @@ mpm_status mpm_static_iface_setup(mpm_static *q, char *err, size_t errlen)
         *nd += (int)nn;
     }
   }
-  /* the law as a material of the update: the bar's strengths and U0, stiffness k0 */
+  /* the law as a material of the update: the bar's strengths and U0; isotropic
+   * (E1 - E2 = 2 G), as the update's n-t frame needs: s_nn = k0 w_n, s_nt = k0 w_t */
   mpm_material *m = &q->imat;
   *m = s->mat[MPM_MAT_BAR];
   m->model = s->sc.model;
-  /* isotropic (E1 - E2 = 2 G), as the update's n-t frame needs: s_nn = k0 w_n and
-   * s_nt = k0 w_t on the jumps (e_tt = 0) */
   m->E1 = m->G = MPM_QS_TIE * s->sc.E / s->sc.L;
   m->E2 = m->E1 - 2.0 * m->G;
   m->Le = 1.0;
@@ -159,23 +237,33 @@ static void jump_strain(const mpm_material *m, double wx, double wy, double de[3
   de[2] = en * m->nx * m->ny + et * (m->nx * m->ty + m->ny * m->tx);
 }
 
-/* The unknown of component c (0-3: near x, near y, far x, far y) of point node a. */
-static int comp_eq(const mpm_static *q, int node, int c)
+/* The unknown of component c (0-3: near x, near y, far x, far y) of node nd. */
+static int comp_eq(const mpm_static *q, int nd, int c)
 {
-  const size_t sl = c < 2 ? (size_t)node : q->nn + (size_t)node;
+  const size_t sl = c < 2 ? (size_t)nd : q->nn + (size_t)nd;
   return q->eq[2 * sl + (size_t)(c % 2)];
+}
+
+size_t mpm_static_iface_nz(const mpm_static *q)
+{
+  size_t nz = 0;
+  for (int g = 0; g < q->nseg; g++) {
+    const size_t k = (size_t)(q->segstart[g + 1] - q->segstart[g]);
+    nz += 16 * k * k;
+  }
+  return nz;
 }
 
 size_t mpm_static_iface_pattern(mpm_static *q, int *ti, int *tj, size_t k, size_t *m)
 {
   q->kpair = k;
-  for (int pi = 0; pi < q->npair; pi++)
-    for (int a = 0; a < 4; a++)
-      for (int b = 0; b < 4; b++)
+  for (int g = 0; g < q->nseg; g++) {
+    q->kseg[g] = k;
+    for (int a = q->segstart[g]; a < q->segstart[g + 1]; a++)
+      for (int b = q->segstart[g]; b < q->segstart[g + 1]; b++)
         for (int ca = 0; ca < 4; ca++)
           for (int cb = 0; cb < 4; cb++, k++) {
-            const int na = q->qnode[4 * pi + a], nb = q->qnode[4 * pi + b];
-            const int ea = q->split[na] ? comp_eq(q, na, ca) : -1, eb = q->split[nb] ? comp_eq(q, nb, cb) : -1;
+            const int ea = comp_eq(q, q->snode[q->sorder[a]], ca), eb = comp_eq(q, q->snode[q->sorder[b]], cb);
             q->map[k] = -1;
             if (ea >= 0 && eb >= 0) {
               ti[*m] = ea;
@@ -183,89 +271,117 @@ size_t mpm_static_iface_pattern(mpm_static *q, int *ti, int *tj, size_t k, size_
               q->map[k] = (int)(*m)++;
             }
           }
+  }
   return k;
+}
+
+/* node nd's jump: total (now), and this increment's */
+static void jump(const mpm_static *q, int nd, double W[2], double w[2])
+{
+  const size_t s0 = (size_t)nd, s1 = q->nn + s0;
+  for (int c = 0; c < 2; c++) {
+    W[c] = q->Ut[2 * s1 + (size_t)c] - q->Ut[2 * s0 + (size_t)c];
+    w[c] = W[c] - (q->Un[2 * s1 + (size_t)c] - q->Un[2 * s0 + (size_t)c]);
+  }
+}
+
+/* One segment's law and its nodes' forces; with the tangent, its entries. */
+static void segment_eval(mpm_static *q, int g, int tangent, double *Ax, const double J[3][2])
+{
+  const mpm_material *m = &q->imat;
+  /* a split node off the staircase (A_I 0: uGIMP's reach, the corners beyond the faces)
+   * is still tied to its segment's mean, with the weight of half a particle's side */
+  const double Ag = q->pA[g], k0 = m->E1, tfloor = 0.5 * q->s->sc.h / sqrt((double)q->s->sc.ppc);
+  const int a0 = q->segstart[g], a1 = q->segstart[g + 1];
+  if (!(Ag > 0.0))
+    return;
+  double Ws[2] = {0.0, 0.0}, ws[2] = {0.0, 0.0}; /* the segment's jump: A-weighted mean */
+  for (int a = a0; a < a1; a++) {
+    const int i = q->sorder[a];
+    double W[2], w[2];
+    jump(q, q->snode[i], W, w);
+    for (int c = 0; c < 2; c++) {
+      Ws[c] += q->sA[i] / Ag * W[c];
+      ws[c] += q->sA[i] / Ag * w[c];
+    }
+  }
+  double de[3];
+  jump_strain(m, ws[0], ws[1], de);
+  mpm_dinfo info;
+  mpm_dcoh_update(m, &q->pst[g], de, &q->ptr[g], &info, q->dw);
+  const mpm_dstate *o = &q->ptr[g];
+  q->pw[g] = info.w * Ag;
+  /* node I: A_I (t + k0 (W_I - W_seg)): the law on the segment's mean, a tie on the rest */
+  const double t[2] = {o->sxx * m->nx + o->sxy * m->ny, o->sxy * m->nx + o->syy * m->ny};
+  for (int a = a0; a < a1; a++) {
+    const int i = q->sorder[a], nd = q->snode[i];
+    double W[2], w[2];
+    jump(q, nd, W, w);
+    for (int c = 0; c < 4; c++) {
+      const int e = comp_eq(q, nd, c);
+      if (e >= 0)
+        q->R[e] += (c < 2 ? -1.0 : 1.0) * (q->sA[i] * t[c % 2] + fmax(q->sA[i], tfloor) * k0 * (W[c % 2] - Ws[c % 2]));
+    }
+  }
+  if (!tangent)
+    return;
+  double Dm[3][3], dl[3], S[2][2], gl[2];
+  mpm_dcoh_tangent(m, &q->pst[g], de, Dm, dl, q->dw);
+  for (int c = 0; c < 2; c++) { /* S = d t / d w, gl = d lambda / d w */
+    double dsg[3];
+    for (int i = 0; i < 3; i++)
+      dsg[i] = Dm[i][0] * J[0][c] + Dm[i][1] * J[1][c] + Dm[i][2] * J[2][c];
+    S[0][c] = dsg[0] * m->nx + dsg[2] * m->ny;
+    S[1][c] = dsg[2] * m->nx + dsg[1] * m->ny;
+    gl[c] = dl[0] * J[0][c] + dl[1] * J[1][c] + dl[2] * J[2][c];
+  }
+  size_t k = q->kseg[g];
+  for (int a = a0; a < a1; a++)
+    for (int b = a0; b < a1; b++) {
+      const int ia = q->sorder[a], ib = q->sorder[b];
+      const double Ai = q->sA[ia], Ti = fmax(Ai, tfloor), r = q->sA[ib] / Ag;
+      for (int ca = 0; ca < 4; ca++)
+        for (int cb = 0; cb < 4; cb++, k++) {
+          /* d f_I / d W_J = A_I S A_J / A_g + T_I k0 (delta_IJ - A_J / A_g) */
+          const double bij = Ai * S[ca % 2][cb % 2] * r + ((ca % 2) == (cb % 2) ? Ti * k0 * ((a == b) - r) : 0.0);
+          const double kab = (ca < 2 ? -1.0 : 1.0) * (cb < 2 ? -1.0 : 1.0) * bij;
+          const int at = q->map[k];
+          const int ea = comp_eq(q, q->snode[ia], ca), eb = comp_eq(q, q->snode[ib], cb);
+          if (at >= 0)
+            Ax[at] += kab;
+          else if (ea >= 0 && eb == MPM_DOF_GRIP)
+            q->kfd[ea] -= kab;
+        }
+    }
+  for (int b = a0; b < a1; b++) { /* the control's gradient: d C / d W_J = U0 A_J gl */
+    const int ib = q->sorder[b];
+    for (int cb = 0; cb < 4; cb++) {
+      const double gd = m->U0 * q->sA[ib] * (cb < 2 ? -1.0 : 1.0) * gl[cb % 2];
+      const int eb = comp_eq(q, q->snode[ib], cb);
+      if (eb >= 0)
+        q->ga[eb] += gd;
+      else if (eb == MPM_DOF_GRIP)
+        q->gb -= gd;
+    }
+  }
 }
 
 void mpm_static_iface_eval(mpm_static *q, int tangent, double *Ax, double *D, double *C)
 {
   const mpm_material *m = &q->imat;
-  const size_t nn = q->nn;
-  double Dl = 0.0, Cl = 0.0;
   double J[3][2]; /* d de / d w, columns for wx and wy */
-  {
-    double a[3], b[3];
-    jump_strain(m, 1.0, 0.0, a);
-    jump_strain(m, 0.0, 1.0, b);
-    for (int i = 0; i < 3; i++) {
-      J[i][0] = a[i];
-      J[i][1] = b[i];
-    }
+  double a[3], b[3];
+  jump_strain(m, 1.0, 0.0, a);
+  jump_strain(m, 0.0, 1.0, b);
+  for (int i = 0; i < 3; i++) {
+    J[i][0] = a[i];
+    J[i][1] = b[i];
   }
-  for (int pi = 0; pi < q->npair; pi++) {
-    const int *nd = q->qnode + 4 * pi;
-    const double *N = q->qN + 4 * pi, ds = q->pA[pi];
-    double wx = 0.0, wy = 0.0; /* this increment's jump at the point */
-    for (int a = 0; a < 4; a++)
-      if (q->split[nd[a]]) {
-        const size_t s0 = (size_t)nd[a], s1 = nn + s0;
-        wx += N[a] * ((q->Ut[2 * s1] - q->Ut[2 * s0]) - (q->Un[2 * s1] - q->Un[2 * s0]));
-        wy += N[a] * ((q->Ut[2 * s1 + 1] - q->Ut[2 * s0 + 1]) - (q->Un[2 * s1 + 1] - q->Un[2 * s0 + 1]));
-      }
-    double de[3];
-    jump_strain(m, wx, wy, de);
-    mpm_dinfo info;
-    mpm_dcoh_update(m, &q->pst[pi], de, &q->ptr[pi], &info, q->dw);
-    const mpm_dstate *o = &q->ptr[pi];
-    q->pw[pi] = info.w * ds;
-    Dl += m->U0 * fmin(o->lam, 1.0) * ds;
-    Cl += m->U0 * o->lam * ds;
-    /* the traction sigma . n pulls the near side toward the far one: residual -N t ds on
-     * the near slot, +N t ds on the far one */
-    const double t[2] = {o->sxx * m->nx + o->sxy * m->ny, o->sxy * m->nx + o->syy * m->ny};
-    for (int a = 0; a < 4; a++)
-      for (int c = 0; q->split[nd[a]] && c < 4; c++) {
-        const int e = comp_eq(q, nd[a], c);
-        if (e >= 0)
-          q->R[e] += (c < 2 ? -1.0 : 1.0) * N[a] * ds * t[c % 2];
-      }
-    if (!tangent)
-      continue;
-    double Dm[3][3], dl[3], S[2][2], g[2];
-    mpm_dcoh_tangent(m, &q->pst[pi], de, Dm, dl, q->dw);
-    for (int c = 0; c < 2; c++) { /* S = d t / d w, g = d lambda / d w */
-      double dsg[3];
-      for (int i = 0; i < 3; i++)
-        dsg[i] = Dm[i][0] * J[0][c] + Dm[i][1] * J[1][c] + Dm[i][2] * J[2][c];
-      S[0][c] = dsg[0] * m->nx + dsg[2] * m->ny;
-      S[1][c] = dsg[2] * m->nx + dsg[1] * m->ny;
-      g[c] = dl[0] * J[0][c] + dl[1] * J[1][c] + dl[2] * J[2][c];
-    }
-    const size_t k0 = q->kpair + 256 * (size_t)pi;
-    for (int a = 0; a < 4; a++)
-      for (int b = 0; b < 4; b++) {
-        if (!q->split[nd[a]] || !q->split[nd[b]])
-          continue;
-        for (int ca = 0; ca < 4; ca++)
-          for (int cb = 0; cb < 4; cb++) {
-            const double sa = ca < 2 ? -1.0 : 1.0, sb = cb < 2 ? -1.0 : 1.0;
-            const double kab = sa * sb * N[a] * N[b] * ds * S[ca % 2][cb % 2];
-            const int at = q->map[k0 + (size_t)(64 * a + 16 * b + 4 * ca + cb)];
-            const int ea = comp_eq(q, nd[a], ca), eb = comp_eq(q, nd[b], cb);
-            if (at >= 0)
-              Ax[at] += kab;
-            else if (ea >= 0 && eb == MPM_DOF_GRIP)
-              q->kfd[ea] -= kab;
-          }
-      }
-    for (int b = 0; b < 4; b++) /* the control's gradient */
-      for (int cb = 0; q->split[nd[b]] && cb < 4; cb++) {
-        const double gd = m->U0 * ds * (cb < 2 ? -1.0 : 1.0) * N[b] * g[cb % 2];
-        const int eb = comp_eq(q, nd[b], cb);
-        if (eb >= 0)
-          q->ga[eb] += gd;
-        else if (eb == MPM_DOF_GRIP)
-          q->gb -= gd;
-      }
+  double Dl = 0.0, Cl = 0.0;
+  for (int g = 0; g < q->nseg; g++) {
+    segment_eval(q, g, tangent, Ax, J);
+    Dl += m->U0 * fmin(q->ptr[g].lam, 1.0) * q->pA[g];
+    Cl += m->U0 * q->ptr[g].lam * q->pA[g];
   }
   *D = Dl;
   *C = Cl;
@@ -274,16 +390,17 @@ void mpm_static_iface_eval(mpm_static *q, int tangent, double *Ax, double *D, do
 void mpm_static_iface_commit(mpm_static *q)
 {
   mpm_sim *s = q->s;
-  int open = 0;
+  int open = 0, on = 0;
   double w = 0.0, d = 0.0;
-  for (int pi = 0; pi < q->npair; pi++) {
-    q->pst[pi] = q->ptr[pi];
-    w += q->pw[pi];
-    d += q->imat.U0 * fmin(q->pst[pi].lam, 1.0) * q->pA[pi];
-    open += q->pst[pi].sep;
+  for (int g = 0; g < q->nseg; g++) {
+    q->pst[g] = q->ptr[g];
+    w += q->pw[g];
+    d += q->imat.U0 * fmin(q->pst[g].lam, 1.0) * q->pA[g];
+    on += q->pA[g] > 0.0;
+    open += q->pA[g] > 0.0 && q->pst[g].sep;
   }
   s->led.W_iface += w;
   s->led.D_static = d;
-  if (q->npair > 0 && open == q->npair) /* the whole line has separated: the bar is cut */
+  if (on > 0 && open == on) /* every segment of the line has separated: the bar is cut */
     s->cut = 1;
 }
