@@ -211,9 +211,13 @@ static int increment(mpm_static *q, int *iters)
   double dd = q->kick ? q->kick_d : q->step_d;
   if (!grip) {
     /* pden < 0: C grows as delta falls, the snapback branch */
-    if (!(fabs(q->pden) * fmax(q->dn, 1e-300) > 1e-9 * q->Dref))
-      return -2; /* C does not answer delta here: the grip must lead */
-    dd = q->step_D / q->pden;
+    if (fabs(q->pden) * fmax(q->dn, 1e-300) > 1e-9 * q->Dref)
+      dd = q->step_D / q->pden;
+    else if (q->Cn > 0.0)
+      dd = (q->dlast < 0.0 ? -1e-4 : 1e-4) * q->dn; /* the way the last increment went; Newton
+                                                       finds the control's target from there */
+    else
+      return -2; /* nothing softens yet: a grip increment starts it */
   }
   add_free(q, q->pdir, dd);
   q->dt += dd;
@@ -336,6 +340,7 @@ static void commit(mpm_static *q)
     p->y[i] = p->y0[i] + uy;
   }
   s->W_ext += 0.5 * (s->P_grip + q->Pg) * (q->dt - q->dn); /* trapezoid: exact on straight pieces */
+  q->dlast = q->dt - q->dn;
   if (q->Pg >= s->P_peak)
     q->pk_d = q->dt;
   if (q->pk_d > 0.0 && s->P_peak > 0.0) { /* this chord, for the next one's turn */

@@ -49,6 +49,7 @@ struct mpm_static {
   /* displacements: committed (Un) and trial (Ut), 2 nslot each; the grip's delta */
   double *Un, *Ut;
   double dn, dt;
+  double dlast;           /* the last increment's change of delta                       */
   /* vectors over the unknowns */
   double *R, *kfd, *ga, *x1, *x2, *du;
   double gb;              /* d Ct / d delta through the gripped components               */

@@ -35,7 +35,7 @@
 #include "mpm_static.h"
 
 #define MPM_QS_TIE 1e6    /* the tie's stiffness, k0 L / E per unit area                  */
-#define MPM_QS_SEG 2.0    /* a segment's length along the line, in cells                  */
+#define MPM_QS_SEG 1.0    /* a segment's length along the line, in cells                  */
 
 void mpm_static_iface_free(mpm_static *q)
 {

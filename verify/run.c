@@ -244,6 +244,8 @@ typedef struct {
   const ver_run_opts *o;
   mpm_sim *s;
   mpm_static *q;                 /* solver.type = static: the increments' solver, else NULL */
+  double D_sep;                  /* static: D on the row where the load test fired (delta may
+                                    go back on a snapback: not a function of delta)      */
   row *rows;
   long nrow, nmax, every, acc_n;
   double vdt, last_snap, acc_g, acc_f, peak, dpeak;
@@ -330,7 +332,15 @@ static void take_step(run_state *r, ver_summary *u, double delta)
     ver_sep_cut(&r->sep, s->p->y0, s->p->sep, s->p->mat, MPM_MAT_HEAD, s->p->n, delta);
   if (s->cut && s->sc.path == MPM_PATH_IFACE)
     ver_sep_through(&r->sep, delta);
-  ver_sep_load(&r->sep, delta, w->Pg, w->Pf, r->peak, r->dpeak);
+  if (r->q) { /* equilibrium rows: separated at the first row past the peak below sep_load of it */
+    if (r->sep.delta_load < 0 && r->peak > 0.0 && w->Pg < r->peak && w->Pg <= r->vs->sep_load_frac * r->peak) {
+      r->sep.delta_load = delta;
+      r->D_sep = w->e.D;
+      if (r->sep.delta_sep < 0)
+        r->sep.delta_sep = delta;
+    }
+  } else
+    ver_sep_load(&r->sep, delta, w->Pg, w->Pf, r->peak, r->dpeak);
   u->delta_sep_cut = r->sep.delta_cut;
   u->delta_sep_load = r->sep.delta_load;
   u->delta_sep = r->sep.delta_sep;
@@ -428,6 +438,8 @@ static void finish(const run_state *r, ver_summary *u, double w0, double c0)
       free(b);
     }
   }
+  if (r->q)
+    u->D_cut = u->delta_sep >= 0 ? r->D_sep : NAN;
   u->D_after_cut = u->D_final - u->D_cut;
   u->W_ext_final = e.W_ext;
   u->W_coh_final = e.W_coh;
