@@ -286,7 +286,7 @@ static void jump(const mpm_static *q, int nd, double W[2], double w[2])
 }
 
 /* One segment's law and its nodes' forces; with the tangent, its entries. */
-static void segment_eval(mpm_static *q, int g, int tangent, double *Ax, const double J[3][2])
+static void segment_eval(mpm_static *q, int g, int tangent, double *Ax, double J[3][2])
 {
   const mpm_material *m = &q->imat;
   /* a split node off the staircase (A_I 0: uGIMP's reach, the corners beyond the faces)
