@@ -69,7 +69,7 @@ static void known(ver_check *k, double lo, double hi)
  *    that partial softening is charged within the zone's width: D is pass-class within
  *    10 % at every ppc.  Its other inclined checks keep their classes.
  *  - the crack angle is the principal axis of the separated particles (lambda at or
- *    past the separation threshold), within 5 deg of alpha (issue 13).  Known-limit to
+ *    past the separation threshold), within 5 deg of alpha.  Known-limit to
  *    30 deg with four cells or fewer across the bar, and to 20 deg with several
  *    particles per cell, where the band turns toward the cell columns (fig7 h 4, 4 ppc:
  *    70.5 deg against 60).
@@ -353,7 +353,7 @@ static void check_band(ver_case *c, const case_class *q)
              "(the plane at x %g), over the same rows", sc->speed, sc->imp_x);
   }
 
-  /* once separated the grip carries under 2 % of the peak (issue 13), at every load
+  /* once separated the grip carries under 2 % of the peak, at every load
    * row from VER_LOAD_SETTLE past separation on (the release's ringing has that long
    * to pass): the mean is not enough, a separated part ringing at +-40 % averages to
    * nothing.  One velocity field on an inclined band couples the parts after the cut

@@ -222,7 +222,7 @@ void ver_report_build_cases(report *R)
     if (i > 0 && needs_paper_run(r, pics[i]))
       ver_report_add_sets(r, pics[i], h, ppc, 0, 0, ver_paper_sets, VER_PAPER_NSETS, REP_PAPER, 0);
     /* and with the crack as a cohesive interface, the method beyond the paper that meets
-     * issue 13's bounds most often (docs/interface.md) */
+     * the inclined-crack bounds most often (docs/interface.md) */
     if (i > 0 && needs_iface_run(r, pics[i]))
       ver_report_add(r, pics[i], h, ppc, 0, 0, "decohesion.path=interface", NULL, REP_IFACE, 0);
   }

@@ -426,7 +426,7 @@ static void test_mpm_iface_laid_quiet(void **state)
  * from the peak to delta 0.34: the kinetic energy stays within 20 times that of the steady
  * loading, rho H L v^2 / 6 (the bar stretching at the grip speed v: 4.0e-6), an allowance
  * for the softening's own change of the velocity field.  Measured: 1.8e-5.  With the
- * node's share of the segment's shear on those steps (the rule before session 19) a
+ * node's share of the segment's shear on those steps (a rule tried and not kept) a
  * wave grows there: 2.4e-3 (4.5e-4 with the weights at the particles' positions);
  * docs/interface.md, "Its causes". */
 static void test_mpm_iface_line_no_shear_quiet(void **state)
