@@ -29,7 +29,7 @@ int ver_report_run_verify(report *R)
   char *logs[1] = {log}, *names[1] = {"delam verify --quick"};
   int st = -1;
   fprintf(stderr, PROG ": the checks: delam verify --quick --out %s (log %s)\n", R->verify_dir, log);
-  ver_report_spawn_all(argvs, NULL, logs, names, 1, 1, &st, "checks");
+  ver_report_spawn_all(argvs, NULL, logs, names, 1, 1, &st, "checks", NULL);
   R->verify_rc = st;
   if (st < 0 || st > 1)
     return 2;
@@ -158,9 +158,8 @@ static void count(const cJSON *arr, int cnt[3])
   }
 }
 
-void ver_report_verdicts(report *R)
+void ver_report_verdict_summary(report *R)
 {
-  rep_doc_head(&R->doc, 2, "verdicts", "Verdicts of the checks");
   if (!R->verify) {
     rep_doc_para(&R->doc, "No verify.json was found, so no case is judged here: run make report (which runs "
                           "delam verify --quick first) or give --from a delam verify folder.");
@@ -187,6 +186,20 @@ void ver_report_verdicts(report *R)
   char path[2 * REP_PATH];
   snprintf(path, sizeof path, "%s/text/verdicts.md", R->r.gpdir);
   rep_doc_template(&R->doc, v, path, NULL, NULL);
+}
+
+void ver_report_verdicts(report *R)
+{
+  rep_doc_head(&R->doc, 2, "verdicts", "Verdicts of the checks");
+  if (!R->verify) {
+    rep_doc_para(&R->doc, "No verify.json was found: no case is judged here.");
+    return;
+  }
+  const cJSON *cases = cJSON_GetObjectItemCaseSensitive(R->verify, "cases");
+  const cJSON *cross = cJSON_GetObjectItemCaseSensitive(R->verify, "cross");
+  char path[2 * REP_PATH];
+  snprintf(path, sizeof path, "%s/text/verdicts-key.md", R->r.gpdir);
+  rep_doc_template(&R->doc, &R->vars, path, NULL, NULL);
   int dummy[3] = {0, 0, 0};
   verdict_cases(R, cases, dummy);
   verdict_cross(R, cross, dummy);
