@@ -116,8 +116,8 @@ static void verdict_cases(report *R, const cJSON *cases, int cnt[3])
 
 static void verdict_cross(report *R, const cJSON *cross, int cnt[3])
 {
-  static const char *const head[6] = {"scene", "check", "at", "measured", "tolerance", "verdict"};
-  rep_table *t = rep_doc_table(&R->doc, 6, head);
+  static const char *const head[7] = {"scene", "check", "at", "measured", "tolerance", "verdict", "why"};
+  rep_table *t = rep_doc_table(&R->doc, 7, head);
   const cJSON *x;
   cJSON_ArrayForEach(x, cross)
   {
@@ -125,24 +125,30 @@ static void verdict_cross(report *R, const cJSON *cross, int cnt[3])
     const int k = row_class(v);
     cnt[k == REP_ROW_PASS ? 0 : k == REP_ROW_FAIL ? 1 : 2]++;
     const char *held = strcmp(jstr(x, "over"), "h") ? "h" : "ppc"; /* what is held fixed */
-    rep_table_row(t, k, "%s\t%s\t%s %g\t%.4g\t%.4g\t%s", jstr(x, "scene"), jstr(x, "name"), held, jnum(x, held),
-                  jnum(x, "measured"), jnum(x, "tolerance"), v);
+    /* the reason where a verdict needs one: a known limit, a failure, or a pass of an
+     * order below zero (under the curve floor, where an order means nothing) */
+    const int why = k != REP_ROW_PASS || jnum(x, "measured") < 0.0;
+    rep_table_row(t, k, "%s\t%s\t%s %g\t%.4g\t%.4g\t%s\t%s", jstr(x, "scene"), jstr(x, "name"), held, jnum(x, held),
+                  jnum(x, "measured"), jnum(x, "tolerance"), v, why ? jstr(x, "note") : "");
   }
 }
 
 /* Every check of every case, for the record. */
 static void verdict_all(report *R, const cJSON *cases)
 {
-  static const char *const head[7] = {"case", "check", "class", "measured", "reference", "tolerance", "verdict"};
-  rep_table *t = rep_doc_table(&R->doc, 7, head);
+  static const char *const head[8] = {"case", "check", "class", "measured", "reference", "tolerance", "verdict",
+                                      "why (known limits and failures)"};
+  rep_table *t = rep_doc_table(&R->doc, 8, head);
   const cJSON *c, *k;
   cJSON_ArrayForEach(c, cases)
   {
     cJSON_ArrayForEach(k, cJSON_GetObjectItemCaseSensitive(c, "checks"))
     {
       const char *v = jstr(k, "verdict");
-      rep_table_row(t, row_class(v), "%s\t%s\t%s\t%.6g\t%.6g\t%.3g\t%s", jstr(c, "id"), jstr(k, "name"),
-                    jstr(k, "class"), jnum(k, "measured"), jnum(k, "reference"), jnum(k, "tolerance"), v);
+      const int cls = row_class(v);
+      rep_table_row(t, cls, "%s\t%s\t%s\t%.6g\t%.6g\t%.3g\t%s\t%s", jstr(c, "id"), jstr(k, "name"), jstr(k, "class"),
+                    jnum(k, "measured"), jnum(k, "reference"), jnum(k, "tolerance"), v,
+                    cls == REP_ROW_PASS ? "" : jstr(k, "note"));
     }
   }
 }
