@@ -55,7 +55,7 @@ static const bench_case cases[] = {
    BENCH_BAND},
   /* fig7.ini's band method (a method tried and not kept): the lead's zone, the band held to its line */
   {"fig7", 2.0, 4, 4000, "gimp-zone-line", "grid.shape=gimp grid.fields=two decohesion.Le=zone", 0, BENCH_BAND},
-  /* the crack as a cohesive interface (docs/interface.md; fig7.ini's method):
+  /* the crack as a cohesive interface (docs/methods.md; fig7.ini's method):
    * every particle elastic, the split nodes' two fields from the first step, the law on
    * the line's segments */
   {"fig7", 2.0, 4, 4000, "interface", "", 0, BENCH_FILE},

@@ -28,7 +28,7 @@ enum {
   REP_SEP = 16,     /* separation threshold                                   */
   REP_SCHEME = 32,  /* usl vs musl                                            */
   REP_PAPER = 64,   /* a paper scene with the paper's method (bilinear, one field, Le = cell) */
-  REP_IFACE = 128,  /* an inclined paper scene with decohesion.path = interface (docs/interface.md) */
+  REP_IFACE = 128,  /* an inclined paper scene with decohesion.path = interface (docs/methods.md) */
   REP_BAND = 256,   /* an inclined paper scene whose file runs the interface, with the band method */
   REP_WAVE = 512,   /* iface90.ini: Fig. 6's bar on the interface, against the exact solution at the grip speed */
 };

@@ -406,7 +406,7 @@ static mpm_scene a45_scene(int ppc)
  * dissipation is U0 H / sin a within 10 %.  Le = row charges this band 0.84 of that:
  * the particles far along the rows soften a little before the band localizes, count in
  * its measured width and leave the band's own particles under-charged; zone counts only
- * the particles whose supports touch the row's lead (docs/bands.md sec. 3b). */
+ * the particles whose supports touch the row's lead (docs/findings.md). */
 static void test_mpm_bar_inclined_zone_energy(void **state)
 {
   (void)state;
