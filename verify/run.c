@@ -100,9 +100,11 @@ static int write_line(const mpm_sim *s, const char *dir, const char *stem, char 
   }
   /* The same pieces as legacy VTK polydata, one line cell each, for ParaView. */
   snprintf(name, sizeof name, "%s-line.vtk", stem);
-  if (!xy || !(f = open_tmp(dir, name, tmp, sizeof tmp, bad))) {
+  if (!xy) /* no memory for the VTK copy: the CSV is written, the VTK left out */
+    return 0;
+  if (!(f = open_tmp(dir, name, tmp, sizeof tmp, bad))) {
     free(xy);
-    return xy ? -1 : 0;
+    return -1;
   }
   fprintf(f, "# vtk DataFile Version 3.0\ndelam line.vtk schema %d %s t=%g\nASCII\nDATASET POLYDATA\nPOINTS %d double\n",
           VER_SCHEMA_LINE, stem, s->t, 2 * m);
