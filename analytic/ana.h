@@ -102,7 +102,7 @@ double ana_wave_peak(const ana_wave *w, double *delta_at);
 
 /* The growth rate of the kernel's explicit step on a 1-D periodic bar, linearised about
  * a uniform stress sigma0 carried by particles that drifted by `drift` cells from where
- * the grid was laid (ana_stab.c derives the map; docs/interface.md uses it).  Which
+ * the grid was laid (ana_stab.c derives the map; docs/methods.md uses it).  Which
  * ingredients make the step grow: MUSL against USL, uGIMP against bilinear shapes, the
  * drift and the prestress. */
 enum { ANA_STAB_USL = 0, ANA_STAB_MUSL = 1 };

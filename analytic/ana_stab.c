@@ -1,6 +1,6 @@
 /*
  * ana_stab.c - the growth rate of the kernel's explicit step, linearised, on a 1-D
- * periodic bar (docs/interface.md, "Its causes").
+ * periodic bar (docs/findings.md).
  *
  * Why a 1-D model: a slow run of the interface (iface90, MUSL) grows a motion in the
  * softening that no damper of the model asks for.  The question is whether the step

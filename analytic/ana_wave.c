@@ -26,7 +26,7 @@
  * With Tg, Tf the transit times plane-grip and plane-fixed end:
  *     Rm(t) = -A(t - 2 Tg),   Rp(t) = -B(t - 2 Tf),   P(t) = H (sigma_h(t) - Z A(t - Tg)).
  *
- * The plane's law is the interface's (kernel/mpm_iface.c, docs/interface.md): Model 1,
+ * The plane's law is the interface's (kernel/mpm_iface.c, docs/methods.md): Model 1,
  * q = 1, at 90 deg the traction is normal, and Model 1's power T dw = U0 se dlambda with
  * se = T / snf = 1 - lambda on the surface gives lambda = snf w / U0 and T = snf (1 -
  * lambda) while it opens (eqs. 8-10); rigid below the surface.  Each step the traction

@@ -1,7 +1,7 @@
 /*
  * mpm_band.c - Le measured from the band itself (decohesion.Le = row): the effective
  * length of eq. 41, Le = V_e / A_d, taken per particle row of the bar from the particles
- * that soften in it, instead of from the cell (docs/bands.md sec. 3).
+ * that soften in it, instead of from the cell (docs/findings.md).
  *
  * Why.  Eq. 41 makes a band of volume V dissipate U0 A when every particle in it
  * separates and Le = V / A.  The cell and staircase lengths assume a band shape; on an
@@ -19,7 +19,7 @@
  * uGIMP supports (half-width h + dx / 2) touch the lead's.  Before the band localizes
  * the whole bar is near its strength and particles far along the row soften by
  * 0.001-0.03 and stop; with `row` they count in S and the band's own particles are
- * charged less (the low bias, docs/bands.md sec. 3 and 5g); a particle that cannot
+ * charged less (the low bias, docs/findings.md); a particle that cannot
  * share a node with the lead cannot be part of the lead's zone.  No constant: h, dx and
  * the shape's support.
  *

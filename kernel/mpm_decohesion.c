@@ -339,7 +339,7 @@ static inline mpm_status dcoh_step(const mpm_material *m, const mpm_dstate *in, 
      * accumulated (s_nt upt < 0) closes that slip elastically and leaves eq. 23, as <sn>
      * leaves normal compression out of it; only the opening part may soften.  The paper's
      * eq. 23 is even in s_nt (EVEN): after a release the rebound's reversed shear fails
-     * the band's part-softened neighbours (docs/bands.md secs. 5h, 5j). */
+     * the band's part-softened neighbours (docs/methods.md secs. 5h, 5j). */
     const int st_on = !(m->shear_closing && tr.nt * in->upt < 0.0);
     const double st = st_on ? tr.nt : 0.0;
     const double se = eff_traction(m, tr.nn, st);

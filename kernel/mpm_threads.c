@@ -6,7 +6,7 @@
  * count may change between any two steps.  On a machine whose other cores are busy,
  * OpenMP's threads wait for a descheduled partner at every barrier: measured on this
  * project's 2-core machine with `yes > /dev/null` on one core, Fig. 6 at h 1, 4 ppc ran
- * 3.8 s with one thread and 18.5 s with two (docs/threads.md).  Passive waiting
+ * 3.8 s with one thread and 18.5 s with two (docs/library.md).  Passive waiting
  * (OMP_WAIT_POLICY=passive) is no cure: Fig. 6 at h 8 took 12 s instead of 0.3 s, the
  * sleeping threads being woken five times a step.  So the count is measured, not
  * guessed:

@@ -7,5 +7,7 @@ set yrange [*:*]
 if (!exists("keypos")) keypos = "top right"
 set key @keypos
 n = words(ids)
-plot sprintf('data/ana-%s.csv', sc) u 1:2 w l lw 4 lc rgb '#999999' title 'analytic', \
-     for [i=1:n] load_csv(word(ids, i)) u 2:3 w l lw 1.8 title word(labs, i)
+# each later curve thinner and dashed differently, so that one lying on another still
+# shows the one beneath (Fig. 6(c): 4 and 9 ppc nearly coincide)
+plot sprintf('data/ana-%s.csv', sc) u 1:2 w l lw 5 lc rgb '#bbbbbb' title 'analytic', \
+     for [i=1:n] load_csv(word(ids, i)) u 2:3 w l lw (n > 1 ? 3.2 - 2.0 * (i - 1) / (n - 1) : 2) dt i title word(labs, i)

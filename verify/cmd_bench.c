@@ -53,15 +53,15 @@ static const bench_case cases[] = {
   /* the fig7 file's method, timed through the softening, where the rows measure Le */
   {"fig7", 2.0, 4, 4000, "gimp-row", "grid.shape=gimp grid.fields=two decohesion.Le=row decohesion.path=free", 0,
    BENCH_BAND},
-  /* fig7.ini's band method (sessions 8 to 15): the lead's zone, the band held to its line */
+  /* fig7.ini's band method (a method tried and not kept): the lead's zone, the band held to its line */
   {"fig7", 2.0, 4, 4000, "gimp-zone-line", "grid.shape=gimp grid.fields=two decohesion.Le=zone", 0, BENCH_BAND},
-  /* the crack as a cohesive interface (docs/interface.md; fig7.ini's since session 16):
+  /* the crack as a cohesive interface (docs/methods.md; fig7.ini's method):
    * every particle elastic, the split nodes' two fields from the first step, the law on
    * the line's segments */
   {"fig7", 2.0, 4, 4000, "interface", "", 0, BENCH_FILE},
   /* fig8's file (uGIMP, two fields, Rayleigh damping from the cut), after the cut: the
    * viscous stress in the gather and the scatter, with the mass half about each part's
-   * held end (the file's since session 13: a serial particle pass) or about each node's
+   * held end (the file's: a serial particle pass) or about each node's
    * drift (a serial node pass) */
   {"fig8", 2.0, 4, 4000, "damped-parts", "time.damping_about=parts", 1, 0},
   {"fig8", 2.0, 4, 4000, "damped-drift", "time.damping_about=drift", 1, 0},
@@ -146,8 +146,8 @@ static void usage(FILE *f)
     "the paper's bilinear shapes and step; Fig. 6 at h = 2 with the nodal mass limit\n"
     "(fig6.ini's); Fig. 6 and Fig. 7 at h = 2 with uGIMP; Fig. 7 at h = 2 with\n"
     "uGIMP and two velocity fields, from a band already cut, and through the softening\n"
-    "with Le measured per row, with the band method its file ran until session 16 (Le\n"
-    "over the lead's zone, the band held to its line) and as its file runs it now, the\n"
+    "with Le measured per row, with the band method (Le\n"
+    "over the lead's zone, the band held to its line) and as its file runs it, the\n"
     "crack as a cohesive interface (decohesion.path = interface); every Fig. 7 case but\n"
     "the last with the paper's flaw; Fig. 8 at h = 2 as its file runs it (uGIMP, two\n"
     "fields, Rayleigh damping) from a band already cut, damped about each part's held\n"

@@ -129,7 +129,7 @@ static int build_scene(const char *arg, const char *dir, const char *method, dou
 
 /* Informational, never judged (not a ver_check: the checks' classes and verdicts stay as
  * policy.c makes them): the dissipation at the separation this check detected and after
- * it.  A snapback run (fig8, a30) can decohere after the band has cut the bar (docs/bands.md
+ * it.  A snapback run (fig8, a30) can decohere after the band has cut the bar (docs/methods.md
  * sec. 5c); D_final alone does not say when.  Needs energy.csv with the same rows as
  * load.csv (as delam writes them), whose deltas then date its D column. */
 typedef struct {

@@ -46,7 +46,7 @@ static void usage(FILE *f)
     "  --allow-unstable  accept a time step at or above the CFL bound\n"
     "  --threads N       OpenMP threads (default: chosen while it runs, one thread\n"
     "                    for small scenes, up to OMP_NUM_THREADS or all cores when\n"
-    "                    that measures faster; see docs/threads.md)\n"
+    "                    that measures faster; see docs/library.md)\n"
     "  --quiet           no progress line\n"
     "  --keys            print every scene key (type, range, default) and stop\n"
     "  --help            this text\n"
@@ -127,7 +127,7 @@ static void print_result(const ver_scene *vs, const char *id, const ver_summary 
            "elastic slope %.4g, energy residual %.2e (unbooked %.2e) to delta %.4g\n",
            id, u.peak_P, u.delta_peak, u.delta_sep, u.D_final, u.D_cut, u.W_ext_final, u.k_elastic,
            u.energy_residual, u.energy_unbooked, u.delta_end);
-  if (u.n_debris > 0) /* not an error, but the user should know (docs/energy.md, "Debris") */
+  if (u.n_debris > 0) /* not an error, but the user should know (docs/findings.md) */
     printf("%s: %ld separated particles left the grid as debris, carrying %.4g (energy.csv L_debris)\n", id,
            u.n_debris, u.L_debris_final);
   printf("%s: %zu particles, %ld steps, %.2f s, %.3g particle-updates/s -> %s/\n", id, u.particles, u.steps,

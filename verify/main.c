@@ -12,7 +12,7 @@
 
 /* Waiting OpenMP threads sleep instead of spinning unless the user says otherwise: on a
  * machine whose other cores are busy a spinning thread holds a core its partner needs
- * (docs/threads.md).  libgomp reads the variable when it is loaded, before main, so it is
+ * (docs/library.md).  libgomp reads the variable when it is loaded, before main, so it is
  * set from the executable's pre-initialisation array, which runs before any shared
  * library's constructors. */
 static void wait_passive(void)

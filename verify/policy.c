@@ -64,12 +64,12 @@ static void known(ver_check *k, double lo, double hi)
  *    cut the bar, Le = staircase: the narrowest band that can open on the grid) must
  *    dissipate U0 x area: D_final is pass-class within 10 % at one particle per cell.
  *    With several particles per cell, particles beside the band soften part-way before
- *    the cut and add 0.2-0.5 U0 x area (measured, docs/bands.md): known-limit up to
- *    +60 %.  With Le = row (the zone's Le measured per particle row, docs/bands.md)
+ *    the cut and add 0.2-0.5 U0 x area (measured, docs/methods.md): known-limit up to
+ *    +60 %.  With Le = row (the zone's Le measured per particle row, docs/methods.md)
  *    that partial softening is charged within the zone's width: D is pass-class within
  *    10 % at every ppc.  Its other inclined checks keep their classes.
  *  - the crack angle is the principal axis of the separated particles (lambda at or
- *    past the separation threshold), within 5 deg of alpha (issue 13).  Known-limit to
+ *    past the separation threshold), within 5 deg of alpha.  Known-limit to
  *    30 deg with four cells or fewer across the bar, and to 20 deg with several
  *    particles per cell, where the band turns toward the cell columns (fig7 h 4, 4 ppc:
  *    70.5 deg against 60).
@@ -193,7 +193,7 @@ static void check_energy(ver_case *c, const case_class *q)
   else if (!a90 && !q->band)
     known(k, -k->tol, 3.0);
   else if (q->band && !q->ppc1 && !q->row)
-    known(k, -k->tol, 0.6); /* measured: partial softening beside the band, docs/bands.md */
+    known(k, -k->tol, 0.6); /* measured: partial softening beside the band, docs/methods.md */
   snprintf(k->note, sizeof k->note, "dissipation at the end vs UD x area = %.4g%s", a->D_sep,
            !a90 && !lep ? " (inclined band: more, paper Fig. 7)" : "");
 
@@ -242,7 +242,7 @@ static void check_energy(ver_case *c, const case_class *q)
    * ledger the booked residual closes to rounding by construction; what the run lost to
    * the boundary treatment and the FLIP projection is only seen here. */
   if (c->var.whole) {
-    /* grid.bc = lagrangian (fig6.ini's, docs/energy.md): the held nodes' treatment lets
+    /* grid.bc = lagrangian (fig6.ini's, docs/findings.md): the held nodes' treatment lets
      * the grip keep working after separation; the work is booked (L_flip, L_scheme) but
      * not in the bar: measured fig6 h 8, 1 ppc to delta 5, unbooked 0.033 and W_ext
      * +3.5 % (consistent: 0.00097 and +0.3 %).  Known-limit to 5 % with that bc. */
@@ -287,7 +287,7 @@ static void check_band_angle(ver_case *c, const case_class *q)
    * than the tolerance (measured: fig7 h 8 ppc 1, 70.7 against 60) */
   const int coarse = !a90 && sc->H / sc->h <= 4.0 + 1e-9;
   /* several particles per cell: the band turns toward the cell columns (fig7 h 4,
-   * 4 ppc: 70.5 against 60; rows' centroids 68.7 at h 2, docs/bands.md sec. 6) */
+   * 4 ppc: 70.5 against 60; rows' centroids 68.7 at h 2, docs/findings.md) */
   const int turns = !a90 && !ppc1;
   if (coarse)
     known(k, -30.0, 30.0);
@@ -353,12 +353,12 @@ static void check_band(ver_case *c, const case_class *q)
              "(the plane at x %g), over the same rows", sc->speed, sc->imp_x);
   }
 
-  /* once separated the grip carries under 2 % of the peak (issue 13), at every load
+  /* once separated the grip carries under 2 % of the peak, at every load
    * row from VER_LOAD_SETTLE past separation on (the release's ringing has that long
    * to pass): the mean is not enough, a separated part ringing at +-40 % averages to
    * nothing.  One velocity field on an inclined band couples the parts after the cut
    * (the paper's method: a plateau near a third of the peak at fig8 h 8,
-   * docs/bands.md): known-limit to 60 %.  A
+   * docs/methods.md): known-limit to 60 %.  A
    * separation threshold below 1 drops the traction still left, 1 - threshold of the
    * strength, at once: the bar rings with up to that share of the peak (fig6 h 8, 4 ppc,
    * threshold 0.8: 19 %; at the paper's 0.98, fig6 h 2, 4 ppc: 1.97 %): known-limit to
@@ -371,7 +371,7 @@ static void check_band(ver_case *c, const case_class *q)
     if (one || drop > 0.0)
       known(k, 0.0, fmax(one ? 0.6 : 0.0, k->tol + drop));
     /* the sign says which: tension is a band still carrying, compression the separated
-     * parts pushed together (fig8: the sliding part meets the other, docs/bands.md 5k) */
+     * parts pushed together (fig8: the sliding part meets the other, docs/findings.md) */
     snprintf(k->note, sizeof k->note, "largest |P| / peak from delta_sep + %g to the end (tension %.2g, compression %.2g)%s%s",
              VER_LOAD_SETTLE, c->P_after_t, c->P_after_c, one ? "; one field: known-limit to 0.6" : "",
              drop > 0.0 ? "; traction left at separation dropped: known-limit to tol + 1 - threshold" : "");

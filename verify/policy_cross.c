@@ -58,7 +58,7 @@ static int cross_add(ver_cross *x, int *nx, const char *name, const char *scene,
  * values do not show convergence) with monotone convergence, then Fs 1.25, else Fs 3.
  * Pass: monotone convergence and GCI_12 <= 2 % (the tolerance of the alpha = 90 checks
  * against the closed form).  Known-limit class (the band's dissipation and its
- * separation change with the grid: Le = one cell; docs/bands.md): GCI up to 1.  Values
+ * separation change with the grid: Le = one cell; docs/methods.md): GCI up to 1.  Values
  * equal to rounding on the two finest grids pass with GCI 0: the method fixes them (the
  * interface's D = U0 area), and their last bits carry no order.
  */

@@ -28,7 +28,7 @@ enum {
   REP_SEP = 16,     /* separation threshold                                   */
   REP_SCHEME = 32,  /* usl vs musl                                            */
   REP_PAPER = 64,   /* a paper scene with the paper's method (bilinear, one field, Le = cell) */
-  REP_IFACE = 128,  /* an inclined paper scene with decohesion.path = interface (docs/interface.md) */
+  REP_IFACE = 128,  /* an inclined paper scene with decohesion.path = interface (docs/methods.md) */
   REP_BAND = 256,   /* an inclined paper scene whose file runs the interface, with the band method */
   REP_WAVE = 512,   /* iface90.ini: Fig. 6's bar on the interface, against the exact solution at the grip speed */
 };
@@ -178,6 +178,9 @@ int ver_report_run_verify(report *R);
 /* Reads FROM/verify.json (NULL if missing). */
 struct cJSON *ver_report_read_verify(const char *from);
 /* Adds the verdict sections (per case, counts, every check) to the document. */
+/* The verdict counts in one paragraph (reports/text/verdicts.md), for the top of the page. */
+void ver_report_verdict_summary(report *R);
+/* The verdicts: per case, across cases, and every check. */
 void ver_report_verdicts(report *R);
 /* Adds the table of the paper's numbers beside the measured ones. */
 void ver_report_paper_table(report *R);
@@ -206,9 +209,11 @@ void ver_report_method(const rep_case *c, char *buf, size_t len);
 int ver_report_run_cases(rep_ctx *r);
 /* Runs the n commands argvs[i] in folder cwd (NULL: here) with output to logs[i], up to
  * jobs at once, one progress line per finished command on stderr; status[i] gets the
- * exit status (-1 if it could not start). */
+ * exit status (-1 if it could not start).  meant_to_fail (NULL: none) marks the commands
+ * whose failure is their result (the time-step sweep above the stable bound): their
+ * progress line says so instead of "failed". */
 void ver_report_spawn_all(char ***argvs, const char *cwd, char **logs, char **names, int n, int jobs,
-                          int *status, const char *what);
+                          int *status, const char *what, const int *meant_to_fail);
 
 /* report_data.c */
 /* Reads summary.json of c->dir into *c; 0 if read. */

@@ -156,7 +156,7 @@ static int needs_paper_run(const rep_ctx *r, const char *scene)
 }
 
 /* 1 if the scene file is inclined and its own path is not the interface, and the
- * interface takes the file as it is but for the path (docs/interface.md). */
+ * interface takes the file as it is but for the path (docs/methods.md). */
 static int needs_iface_run(const rep_ctx *r, const char *scene)
 {
   char path[REP_PATH + 64], err[256];
@@ -222,7 +222,7 @@ void ver_report_build_cases(report *R)
     if (i > 0 && needs_paper_run(r, pics[i]))
       ver_report_add_sets(r, pics[i], h, ppc, 0, 0, ver_paper_sets, VER_PAPER_NSETS, REP_PAPER, 0);
     /* and with the crack as a cohesive interface, the method beyond the paper that meets
-     * issue 13's bounds most often (docs/interface.md) */
+     * the inclined-crack bounds most often (docs/methods.md) */
     if (i > 0 && needs_iface_run(r, pics[i]))
       ver_report_add(r, pics[i], h, ppc, 0, 0, "decohesion.path=interface", NULL, REP_IFACE, 0);
   }

@@ -183,12 +183,16 @@ void ver_report_compose(report *R)
   rep_vars_set(&R->vars, "report:incomplete", "%d", nincomplete);
   rep_vars_set(&R->vars, "report:t_runs", "%.0f", R->t_runs);
   rep_vars_set(&R->vars, "report:verify", "%s", R->verify_dir[0] ? R->verify_dir : "(none)");
+  /* the summary, the contents and the figures first; the long tables after them */
   rep_doc_head(&R->doc, 1, "top", "delam: verification report");
-  text(R, "intro");
-  ver_report_verdicts(R);
+  ver_report_verdict_summary(R);
+  rep_doc_toc(&R->doc);
   ver_report_paper_table(R);
   for (int i = 0; i < R->nfig; i++)
     fig_section(R, &R->fig[i]);
+  ver_report_verdicts(R);
+  rep_doc_head(&R->doc, 2, "about", "How this report was made");
+  text(R, "intro");
   rep_doc_head(&R->doc, 2, "runs", "All runs");
   text(R, "runs");
   table_runs(R);

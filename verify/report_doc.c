@@ -170,6 +170,11 @@ void rep_doc_para(rep_doc *d, const char *text)
     b->text = dup(text);
 }
 
+void rep_doc_toc(rep_doc *d)
+{
+  add(d, REP_B_TOC);
+}
+
 void rep_doc_fig(rep_doc *d, const char *name, const char *caption, int failed)
 {
   rep_block *b = add(d, REP_B_FIG);
@@ -312,6 +317,13 @@ int rep_doc_markdown(const rep_doc *d, FILE *f)
     const rep_block *b = &d->b[i];
     if (b->kind == REP_B_HEAD)
       fprintf(f, "%s %s\n\n", b->level <= 1 ? "#" : b->level == 2 ? "##" : "###", b->text);
+    else if (b->kind == REP_B_TOC) {
+      fputs("Contents:", f);
+      for (int j = 0, k = 0; j < d->n; j++)
+        if (d->b[j].kind == REP_B_HEAD && d->b[j].level == 2)
+          fprintf(f, "%s [%s](#%s)", k++ ? " ·" : "", d->b[j].text, d->b[j].id);
+      fputs("\n\n", f);
+    }
     else if (b->kind == REP_B_PARA)
       fprintf(f, "%s\n\n", b->text);
     else if (b->kind == REP_B_FIG)
@@ -359,6 +371,23 @@ static void esc(FILE *f, const char *s)
   }
 }
 
+/* Text with Markdown code spans: `x` becomes <code>x</code> (code 1) or x (code 0, for
+ * titles and attributes), so that no backtick shows. */
+static void esc_code(FILE *f, const char *s, int code)
+{
+  int open = 0;
+  for (; s && *s; s++) {
+    if (*s == '`') {
+      if (code)
+        fputs(open ? "</code>" : "<code>", f);
+      open = !open;
+    } else
+      esc(f, (char[2]){*s, 0});
+  }
+  if (open && code)
+    fputs("</code>", f);
+}
+
 static void html_table(FILE *f, const rep_table *t)
 {
   static const char *const cls[] = {"", "pass", "fail", "known", ""};
@@ -371,7 +400,7 @@ static void html_table(FILE *f, const rep_table *t)
       fputs("<tr>", f);
     for (int c = 0; c < t->ncol; c++) {
       fputs(r == 0 ? "<th>" : "<td>", f);
-      esc(f, t->cell[r * t->ncol + c]);
+      esc_code(f, t->cell[r * t->ncol + c], 1);
       fputs(r == 0 ? "</th>" : "</td>", f);
     }
     fputs("</tr>\n", f);
@@ -382,26 +411,44 @@ static void html_table(FILE *f, const rep_table *t)
 int rep_doc_html(const rep_doc *d, FILE *f, const char *title)
 {
   fputs("<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>", f);
-  esc(f, title);
+  esc_code(f, title, 0);
   fputs("</title>\n<style>body{font-family:sans-serif;max-width:1100px;margin:auto;padding:1em;line-height:1.4}"
         "img{max-width:100%;border:1px solid #ccc}td,th{border:1px solid #ccc;padding:2px 6px;font-size:90%}"
         "table{border-collapse:collapse;margin:0.5em 0 1em}tr.fail td{background:#f8c8c8}"
         "tr.pass td{background:#d8f0d8}tr.known td{background:#fff0b8}figcaption{font-style:italic}"
+        "nav{margin:0.5em 0 1em;padding:0.4em 0.6em;background:#f4f4f4;font-size:95%}code{background:#f0f0f0}"
         "</style></head><body>\n", f);
   for (int i = 0; i < d->n; i++) {
     const rep_block *b = &d->b[i];
     if (b->kind == REP_B_HEAD) {
       const int l = b->level < 1 ? 1 : b->level > 3 ? 3 : b->level;
       fprintf(f, "<h%d id=\"%s\">", l, b->id);
-      esc(f, b->text);
+      esc_code(f, b->text, 1);
       fprintf(f, "</h%d>\n", l);
+    } else if (b->kind == REP_B_TOC) {
+      fputs("<nav><b>Contents:</b>", f);
+      for (int j = 0, k = 0; j < d->n; j++)
+        if (d->b[j].kind == REP_B_HEAD && d->b[j].level == 2) {
+          /* the heading up to its colon ("Fig. 6(a)"), the whole of it where it has none;
+           * the heading itself is the link's tooltip */
+          const char *t = d->b[j].text ? d->b[j].text : "";
+          const char *colon = strchr(t, ':');
+          char shortt[160];
+          snprintf(shortt, sizeof shortt, "%.*s", colon ? (int)(colon - t) : (int)strlen(t), t);
+          fprintf(f, "%s <a href=\"#%s\" title=\"", k++ ? " &middot;" : "", d->b[j].id);
+          esc_code(f, t, 0);
+          fputs("\">", f);
+          esc_code(f, shortt, 1);
+          fputs("</a>", f);
+        }
+      fputs("</nav>\n", f);
     } else if (b->kind == REP_B_PARA) {
       fputs("<p>", f);
-      esc(f, b->text);
+      esc_code(f, b->text, 1);
       fputs("</p>\n", f);
     } else if (b->kind == REP_B_FIG) {
       fprintf(f, "<figure><a href=\"%s.svg\"><img src=\"%s.png\" alt=\"%s\"></a><figcaption>", b->id, b->id, b->id);
-      esc(f, b->text);
+      esc_code(f, b->text, 1);
       if (b->failed)
         fputs(" <b>(gnuplot failed for this figure; see logs/)</b>", f);
       fputs("</figcaption></figure>\n", f);

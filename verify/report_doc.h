@@ -52,7 +52,7 @@ typedef struct {
   int *cls;               /* REP_ROW_* of each row (the header: REP_ROW_HEAD) */
 } rep_table;
 
-enum { REP_B_HEAD, REP_B_PARA, REP_B_FIG, REP_B_TABLE };
+enum { REP_B_HEAD, REP_B_PARA, REP_B_FIG, REP_B_TABLE, REP_B_TOC };
 
 typedef struct {
   int kind;
@@ -70,6 +70,8 @@ typedef struct {
 
 void rep_doc_head(rep_doc *d, int level, const char *id, const char *text);
 void rep_doc_para(rep_doc *d, const char *text);
+/* A table of contents: a link to every level-2 heading of the document. */
+void rep_doc_toc(rep_doc *d);
 void rep_doc_fig(rep_doc *d, const char *name, const char *caption, int failed);
 /* A new table of ncol columns with its header cells (ncol strings); rows follow. */
 rep_table *rep_doc_table(rep_doc *d, int ncol, const char *const *head);

@@ -29,7 +29,7 @@ int ver_report_run_verify(report *R)
   char *logs[1] = {log}, *names[1] = {"delam verify --quick"};
   int st = -1;
   fprintf(stderr, PROG ": the checks: delam verify --quick --out %s (log %s)\n", R->verify_dir, log);
-  ver_report_spawn_all(argvs, NULL, logs, names, 1, 1, &st, "checks");
+  ver_report_spawn_all(argvs, NULL, logs, names, 1, 1, &st, "checks", NULL);
   R->verify_rc = st;
   if (st < 0 || st > 1)
     return 2;
@@ -116,8 +116,8 @@ static void verdict_cases(report *R, const cJSON *cases, int cnt[3])
 
 static void verdict_cross(report *R, const cJSON *cross, int cnt[3])
 {
-  static const char *const head[6] = {"scene", "check", "at", "measured", "tolerance", "verdict"};
-  rep_table *t = rep_doc_table(&R->doc, 6, head);
+  static const char *const head[7] = {"scene", "check", "at", "measured", "tolerance", "verdict", "why"};
+  rep_table *t = rep_doc_table(&R->doc, 7, head);
   const cJSON *x;
   cJSON_ArrayForEach(x, cross)
   {
@@ -125,24 +125,30 @@ static void verdict_cross(report *R, const cJSON *cross, int cnt[3])
     const int k = row_class(v);
     cnt[k == REP_ROW_PASS ? 0 : k == REP_ROW_FAIL ? 1 : 2]++;
     const char *held = strcmp(jstr(x, "over"), "h") ? "h" : "ppc"; /* what is held fixed */
-    rep_table_row(t, k, "%s\t%s\t%s %g\t%.4g\t%.4g\t%s", jstr(x, "scene"), jstr(x, "name"), held, jnum(x, held),
-                  jnum(x, "measured"), jnum(x, "tolerance"), v);
+    /* the reason where a verdict needs one: a known limit, a failure, or a pass of an
+     * order below zero (under the curve floor, where an order means nothing) */
+    const int why = k != REP_ROW_PASS || jnum(x, "measured") < 0.0;
+    rep_table_row(t, k, "%s\t%s\t%s %g\t%.4g\t%.4g\t%s\t%s", jstr(x, "scene"), jstr(x, "name"), held, jnum(x, held),
+                  jnum(x, "measured"), jnum(x, "tolerance"), v, why ? jstr(x, "note") : "");
   }
 }
 
 /* Every check of every case, for the record. */
 static void verdict_all(report *R, const cJSON *cases)
 {
-  static const char *const head[7] = {"case", "check", "class", "measured", "reference", "tolerance", "verdict"};
-  rep_table *t = rep_doc_table(&R->doc, 7, head);
+  static const char *const head[8] = {"case", "check", "class", "measured", "reference", "tolerance", "verdict",
+                                      "why (known limits and failures)"};
+  rep_table *t = rep_doc_table(&R->doc, 8, head);
   const cJSON *c, *k;
   cJSON_ArrayForEach(c, cases)
   {
     cJSON_ArrayForEach(k, cJSON_GetObjectItemCaseSensitive(c, "checks"))
     {
       const char *v = jstr(k, "verdict");
-      rep_table_row(t, row_class(v), "%s\t%s\t%s\t%.6g\t%.6g\t%.3g\t%s", jstr(c, "id"), jstr(k, "name"),
-                    jstr(k, "class"), jnum(k, "measured"), jnum(k, "reference"), jnum(k, "tolerance"), v);
+      const int cls = row_class(v);
+      rep_table_row(t, cls, "%s\t%s\t%s\t%.6g\t%.6g\t%.3g\t%s\t%s", jstr(c, "id"), jstr(k, "name"), jstr(k, "class"),
+                    jnum(k, "measured"), jnum(k, "reference"), jnum(k, "tolerance"), v,
+                    cls == REP_ROW_PASS ? "" : jstr(k, "note"));
     }
   }
 }
@@ -158,9 +164,8 @@ static void count(const cJSON *arr, int cnt[3])
   }
 }
 
-void ver_report_verdicts(report *R)
+void ver_report_verdict_summary(report *R)
 {
-  rep_doc_head(&R->doc, 2, "verdicts", "Verdicts of the checks");
   if (!R->verify) {
     rep_doc_para(&R->doc, "No verify.json was found, so no case is judged here: run make report (which runs "
                           "delam verify --quick first) or give --from a delam verify folder.");
@@ -187,6 +192,20 @@ void ver_report_verdicts(report *R)
   char path[2 * REP_PATH];
   snprintf(path, sizeof path, "%s/text/verdicts.md", R->r.gpdir);
   rep_doc_template(&R->doc, v, path, NULL, NULL);
+}
+
+void ver_report_verdicts(report *R)
+{
+  rep_doc_head(&R->doc, 2, "verdicts", "Verdicts of the checks");
+  if (!R->verify) {
+    rep_doc_para(&R->doc, "No verify.json was found: no case is judged here.");
+    return;
+  }
+  const cJSON *cases = cJSON_GetObjectItemCaseSensitive(R->verify, "cases");
+  const cJSON *cross = cJSON_GetObjectItemCaseSensitive(R->verify, "cross");
+  char path[2 * REP_PATH];
+  snprintf(path, sizeof path, "%s/text/verdicts-key.md", R->r.gpdir);
+  rep_doc_template(&R->doc, &R->vars, path, NULL, NULL);
   int dummy[3] = {0, 0, 0};
   verdict_cases(R, cases, dummy);
   verdict_cross(R, cross, dummy);

@@ -316,6 +316,7 @@ static void write_vars_case(FILE *vars, const char *key, const rep_case *c)
   fprintf(vars, "%s = \"%s\"\n%s_hw = %.6g\n", key, c ? c->id : "", key, c ? 0.5 * c->h / sqrt(c->ppc) : 1.0);
   fprintf(vars, "%s_end = %.6g\n", key, c && c->have ? c->delta_end : 0.0);
   fprintf(vars, "%s_speed = %.6g\n", key, c && c->speed > 0 ? c->speed : 1.0);
+  fprintf(vars, "%s_Dsep = %.6g\n", key, c && isfinite(c->bar.D_sep) ? c->bar.D_sep : 0.0);
   char m[192] = "";
   if (c)
     ver_report_method(c, m, sizeof m);
@@ -481,7 +482,7 @@ void ver_report_gnuplot(report *R)
     names[i] = s + 5 * ALEN;
     snprintf(names[i], ALEN, "%s.%s", f->name, fmt);
   }
-  ver_report_spawn_all(argvs, r->out, logs, names, n, r->jobs, st, "gnuplot");
+  ver_report_spawn_all(argvs, r->out, logs, names, n, r->jobs, st, "gnuplot", NULL);
   for (int i = 0; i < n; i++) { /* gnuplot may exit 0 leaving an empty or cut file (a full disk) */
     char p[2 * REP_PATH];
     snprintf(p, sizeof p, "%s/%s", r->out, names[i]);

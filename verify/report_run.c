@@ -223,6 +223,7 @@ typedef struct {
   char **logs, **names;
   int n, *status;
   const char *what;
+  const int *meant_to_fail; /* per job, or NULL: a failure is then the result it is run for */
 } spawn_ctx;
 
 static pid_t spawn_one(int i, void *ctx)
@@ -238,15 +239,19 @@ static void spawn_done(int i, int status, int sig, double wall, int done, void *
   c->status[i] = status;
   if (status >= 0)
     fprintf(stderr, "delam report: [%2d/%d] %s %s: %s (%.1f s)\n", done, c->n, c->what, c->names[i],
-            status == 0 ? "ok" : status == 130 ? "stopped by a signal" : "failed", wall);
+            status == 0                              ? "ok"
+            : status == 130                          ? "stopped by a signal"
+            : c->meant_to_fail && c->meant_to_fail[i] ? "blew up, as a time step above the stable bound should"
+                                                      : "failed",
+            wall);
 }
 
 void ver_report_spawn_all(char ***argvs, const char *cwd, char **logs, char **names, int n, int jobs,
-                          int *status, const char *what)
+                          int *status, const char *what, const int *meant_to_fail)
 {
   for (int i = 0; i < n; i++)
     status[i] = -1;
-  spawn_ctx c = {argvs, cwd, logs, names, n, status, what};
+  spawn_ctx c = {argvs, cwd, logs, names, n, status, what, meant_to_fail};
   const ver_pool p = {n, jobs, NULL, spawn_one, NULL, spawn_done, &c};
   ver_pool_run(&p);
 }
@@ -344,8 +349,9 @@ int ver_report_run_cases(rep_ctx *r)
   char **logs = calloc((size_t)ntodo, sizeof *logs), **names = calloc((size_t)ntodo, sizeof *names);
   char *logstore = calloc((size_t)ntodo, REP_PATH + 16);
   int *status = calloc((size_t)ntodo, sizeof *status);
+  int *meant = calloc((size_t)ntodo, sizeof *meant);
   int failed = 0;
-  if (!store || !argvs || !argvbuf || !logs || !names || !logstore || !status) {
+  if (!store || !argvs || !argvbuf || !logs || !names || !logstore || !status || !meant) {
     fprintf(stderr, "delam report: out of memory\n");
     failed = ntodo;
     ntodo = 0;
@@ -359,8 +365,9 @@ int ver_report_run_cases(rep_ctx *r)
     logs[i] = logstore + (size_t)i * (REP_PATH + 16);
     snprintf(logs[i], REP_PATH + 16, "%s/run.log", c->dir);
     names[i] = c->id;
+    meant[i] = c->allow_unstable; /* the time-step sweep: above the bound a blow-up is its result */
   }
-  ver_report_spawn_all(argvs, NULL, logs, names, ntodo, r->jobs, status, "run");
+  ver_report_spawn_all(argvs, NULL, logs, names, ntodo, r->jobs, status, "run", meant);
   for (int i = 0; i < ntodo; i++) {
     rep_case *c = todo[i];
     c->exit_status = status[i];
@@ -380,5 +387,6 @@ int ver_report_run_cases(rep_ctx *r)
   free(names);
   free(logstore);
   free(status);
+  free(meant);
   return failed;
 }

@@ -182,12 +182,12 @@ static void pic_vars(report *R)
       char s[600], m[192] = "";
       if (ic && ic->have) {
         ver_report_method(ic, m, sizeof m);
-        snprintf(s, sizeof s, "With the crack as a cohesive interface (%s, %s; docs/interface.md, the scene file "
+        snprintf(s, sizeof s, "With the crack as a cohesive interface (%s, %s; docs/methods.md, the scene file "
                  "otherwise as written): peak %.4g (%+.1f %% against the analytic %.4g), softening slope %.4g, "
                  "dissipation %.4g (%+.1f %% against the analytic).", ic->id, m, ic->peak_P,
                  100.0 * (ic->peak_P / ic->bar.Pmax - 1.0), ic->bar.Pmax, ic->k_soft, ic->D_final, 100.0 * ic->diss_err);
       } else if (own && !strcmp(own->path, "interface")) {
-        snprintf(s, sizeof s, "The scene file's own method is the cohesive interface (docs/interface.md): its curves "
+        snprintf(s, sizeof s, "The scene file's own method is the cohesive interface (docs/methods.md): its curves "
                  "above are the interface's.");
       } else {
         snprintf(s, sizeof s, "The cohesive interface did not run here (the scene file does not take it).");

@@ -79,12 +79,47 @@ static int write_line(const mpm_sim *s, const char *dir, const char *stem, char 
   if (!f)
     return -1;
   fprintf(f, "# delam line.csv schema %d\nxa,ya,xb,yb,lambda,state\n", VER_SCHEMA_LINE);
+  double *xy = malloc((size_t)n * 6 * sizeof *xy); /* xa ya xb yb lambda state, per written piece */
+  int m = 0;
   for (int i = 0; i < n; i++) {
-    double xy[4], lam;
+    double q[4], lam;
     int st;
-    if (mpm_iface_piece(s, i, xy, &lam, &st))
-      fprintf(f, "%.9g,%.9g,%.9g,%.9g,%.9g,%d\n", xy[0], xy[1], xy[2], xy[3], lam, st);
+    if (mpm_iface_piece(s, i, q, &lam, &st)) {
+      fprintf(f, "%.9g,%.9g,%.9g,%.9g,%.9g,%d\n", q[0], q[1], q[2], q[3], lam, st);
+      if (xy) {
+        memcpy(xy + 6 * m, q, sizeof q);
+        xy[6 * m + 4] = lam;
+        xy[6 * m + 5] = st;
+        m++;
+      }
+    }
   }
+  if (commit_file(f, tmp, bad)) {
+    free(xy);
+    return -1;
+  }
+  /* The same pieces as legacy VTK polydata, one line cell each, for ParaView. */
+  snprintf(name, sizeof name, "%s-line.vtk", stem);
+  if (!xy) /* no memory for the VTK copy: the CSV is written, the VTK left out */
+    return 0;
+  if (!(f = open_tmp(dir, name, tmp, sizeof tmp, bad))) {
+    free(xy);
+    return -1;
+  }
+  fprintf(f, "# vtk DataFile Version 3.0\ndelam line.vtk schema %d %s t=%g\nASCII\nDATASET POLYDATA\nPOINTS %d double\n",
+          VER_SCHEMA_LINE, stem, s->t, 2 * m);
+  for (int i = 0; i < m; i++)
+    fprintf(f, "%.9g %.9g 0\n%.9g %.9g 0\n", xy[6 * i], xy[6 * i + 1], xy[6 * i + 2], xy[6 * i + 3]);
+  fprintf(f, "LINES %d %d\n", m, 3 * m);
+  for (int i = 0; i < m; i++)
+    fprintf(f, "2 %d %d\n", 2 * i, 2 * i + 1);
+  fprintf(f, "CELL_DATA %d\nSCALARS lambda double 1\nLOOKUP_TABLE default\n", m);
+  for (int i = 0; i < m; i++)
+    fprintf(f, "%.9g\n", xy[6 * i + 4]);
+  fprintf(f, "SCALARS state int 1\nLOOKUP_TABLE default\n");
+  for (int i = 0; i < m; i++)
+    fprintf(f, "%d\n", (int)xy[6 * i + 5]);
+  free(xy);
   return commit_file(f, tmp, bad);
 }
 
@@ -209,7 +244,8 @@ static int prepare_outdir(const char *dir, int *lock, char *err, size_t errlen)
   for (struct dirent *e = d ? readdir(d) : NULL; e; e = readdir(d)) {
     const char *n = e->d_name;
     const size_t len = strlen(n);
-    if (!strncmp(n, "snap-d", 6) || !strncmp(n, "final.", 6) || !strcmp(n, "final-line.csv") ||
+    if (!strncmp(n, "snap-d", 6) || !strncmp(n, "final.", 6) || !strncmp(n, "final-line.", 11) ||
+        !strcmp(n, "snapshots.pvd") ||
         !strcmp(n, "summary.json") || !strcmp(n, "load.csv") || !strcmp(n, "energy.csv") ||
         !strcmp(n, "scene.ini") || !strcmp(n, "check.json") || (len > 4 && !strcmp(n + len - 4, ".tmp"))) {
       char old[1400];
@@ -513,11 +549,39 @@ static int run_loop(run_state *r, ver_summary *u, double w0, char *err, size_t e
  * energy.csv and the final particles, then summary.json last, written even where the
  * others failed, so that the folder says the run did not finish.  The run's status,
  * 1 if a file could not be written (err names it and why). */
+/* snapshots.pvd: the snapshots written, as one ParaView time series (time = delta), and
+ * the interface's line files beside them where there are any. */
+static int write_pvd(const run_state *r, const char *dir, char *bad)
+{
+  int any = 0;
+  for (int i = 0; i < r->vs->nsnap; i++)
+    any |= r->snap_done[i];
+  if (!any)
+    return 0;
+  char tmp[1100];
+  FILE *f = open_tmp(dir, "snapshots.pvd", tmp, sizeof tmp, bad);
+  if (!f)
+    return -1;
+  const int line = mpm_iface_pieces(r->s) > 0;
+  fputs("<?xml version=\"1.0\"?>\n<!-- delam snapshots.pvd schema 1: time is the end displacement delta -->\n"
+        "<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n", f);
+  for (int i = 0; i < r->vs->nsnap; i++)
+    if (r->snap_done[i]) {
+      fprintf(f, "<DataSet timestep=\"%.6g\" part=\"0\" file=\"snap-d%.3f.vtk\"/>\n", r->vs->snap[i], r->vs->snap[i]);
+      if (line)
+        fprintf(f, "<DataSet timestep=\"%.6g\" part=\"1\" file=\"snap-d%.3f-line.vtk\"/>\n", r->vs->snap[i],
+                r->vs->snap[i]);
+    }
+  fputs("</Collection>\n</VTKFile>\n", f);
+  return commit_file(f, tmp, bad);
+}
+
 static int write_results(run_state *r, ver_summary *u, int rc, char *err, size_t errlen)
 {
   const char *dir = r->o->outdir;
   char bad[VER_RUN_BAD];
-  const int files = write_rows(r->rows, r->nrow, dir, bad) != 0 || write_snapshot(r->s, dir, "final", bad) != 0;
+  const int files = write_rows(r->rows, r->nrow, dir, bad) != 0 || write_snapshot(r->s, dir, "final", bad) != 0 ||
+                    write_pvd(r, dir, bad) != 0;
   if (files) {
     u->complete = 0;
     if (!rc)

@@ -189,7 +189,7 @@ static void scene_defaults(ver_scene *vs, const char *path)
 /* time.damping = critical: twice the first axial angular frequency of the bar held at
  * both ends, omega_1 = pi c / L with c = sqrt(E / rho), the rate that damps that mode
  * critically (x'' + 2 omega_1 x' + omega_1^2 x = 0), the slowest ring of the release
- * (docs/bands.md sec. 5h).  Set after the file and after every override, so that a
+ * (docs/findings.md).  Set after the file and after every override, so that a
  * changed bar changes it wherever the scene is read. */
 static void resolve_damping(ver_scene *vs)
 {

@@ -66,7 +66,7 @@ int ver_method_overrides(const ver_scene *vs, char out[][64], int max);
 extern const char *const ver_paper_sets[VER_PAPER_NSETS];
 
 /* The overrides that turn an inclined paper scene file (fig7, fig8) back to the band
- * method it ran until it took the cohesive interface (scene_bar.c; docs/interface.md).
+ * method it ran until it took the cohesive interface (scene_bar.c; docs/methods.md).
  * Returns how many (at most VER_BAND_NSETS) and points *sets at them; 0 for a scene
  * without one. */
 #define VER_BAND_NSETS 6

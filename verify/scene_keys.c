@@ -18,7 +18,7 @@
 #define OFF(f) offsetof(ver_scene, sc.f) /* the kernel's description */
 #define VOFF(f) offsetof(ver_scene, f)  /* run control, not the kernel's */
 const keydef ver_scene_keys[] = {
-  {"method", "preset", K_PRESET, VOFF(preset), 0, 0, 0, 0, -1, "paper (the paper's method), band (a band along the line through the flaw; docs/bands.md) or interface (a cohesive interface on that line; docs/interface.md): the values of the method keys (docs/scene-keys.md), each key the file sets overriding its preset's; --method NAME makes NAME the run's method instead"},
+  {"method", "preset", K_PRESET, VOFF(preset), 0, 0, 0, 0, -1, "paper (the paper's method), band (a band along the line through the flaw; docs/methods.md) or interface (a cohesive interface on that line; docs/methods.md): the values of the method keys (docs/scene-keys.md), each key the file sets overriding its preset's; --method NAME makes NAME the run's method instead"},
   {"bar", "L", K_DBL, OFF(L), 1, 0, 0, LO_OPEN, 0, "> 0"},
   {"bar", "H", K_DBL, OFF(H), 1, 0, 0, LO_OPEN, 0, "> 0"},
   {"material", "E", K_DBL, OFF(E), 1, 0, 0, LO_OPEN, 0, "> 0"},
@@ -38,7 +38,7 @@ const keydef ver_scene_keys[] = {
   {"decohesion", "path", K_PATH, OFF(path), 0, 0, 0, 0, MPM_PATH_FREE, "free (the paper: any particle may soften), line (only near the failure line through the imperfection) or interface (no particle softens: the line is a cohesive interface between two velocity fields; needs grid.fields = two, grid.shape = gimp, time.scheme = musl, Model 1 with q = 1)"},
   {"decohesion", "share", K_SHARE, OFF(share), 0, 0, 0, 0, MPM_SHARE_STICK, "stick (path = interface: each node of a softening segment keeps its own stick impulse, scaled by the segment's factor) or line (each node takes the segment's traction times its length of line; needs path = interface, alpha = 90, grid.motion = stretch and the crack on a node column)"},
   {"decohesion", "reversed_shear", K_SHEAR, OFF(reversed_shear), 0, 0, 0, 0, MPM_SHEAR_EVEN, "even (the paper: shear either way softens) or closing (shear against a particle's slip closes it elastically, as compression closes an opening)"},
-  {"decohesion", "path_reach", K_DBL, OFF(path_reach), 0, 0, 100, LO_CLOSED | HI_CLOSED, 1.0, "in [0, 100] cells: path = line's band beyond the cells the line crosses (0 locks; docs/bands.md sec. 3c)"},
+  {"decohesion", "path_reach", K_DBL, OFF(path_reach), 0, 0, 100, LO_CLOSED | HI_CLOSED, 1.0, "in [0, 100] cells: path = line's band beyond the cells the line crosses (0 locks; docs/findings.md)"},
   {"imperfection", "snf_factor", K_DBL, OFF(imp_factor), 0, 0, 1, LO_OPEN | HI_CLOSED, 1.0, "in (0, 1]"},
   {"imperfection", "stf_factor", K_DBL, OFF(imp_stf_factor), 0, 0, 1, LO_OPEN | HI_CLOSED, 1.0, "in (0, 1]"},
   {"imperfection", "x", K_DBL, OFF(imp_x), 0, 0, 0, 0, -1, "a number (default: L / 2)"},

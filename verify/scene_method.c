@@ -27,14 +27,14 @@ static const char *const method_keys[] = {
  * imperfection (0.9) at one particle, every particle free to soften, a fixed grid, no
  * damping and USL, with the nodal mass limit, which changes nothing until a node passes
  * its stable stiffness-to-mass ratio (the paper's lumped USL blows up in 14 of 24
- * inclined runs at h 8-2, 1 and 4 ppc; docs/bands.md sec. 4). */
+ * inclined runs at h 8-2, 1 and 4 ppc; docs/findings.md). */
 const char *const ver_paper_sets[VER_PAPER_NSETS] = {
     "grid.shape=linear",         "grid.fields=one", "decohesion.Le=cell",
     "imperfection.stf_factor=1", "time.scheme=usl", "grid.node_mass=limited", "time.damping=0", "time.damping_beta=0",
     "imperfection.size=particle", "decohesion.path=free", "grid.motion=fixed", "decohesion.reversed_shear=even",
     "imperfection.snf_factor=0.9"};
 
-/* The band method (docs/bands.md): only the particles near the line through the flaw
+/* The band method (docs/methods.md): only the particles near the line through the flaw
  * soften, Le measured per row over the zone, the flaw's whole cell at 0.9, uGIMP with
  * two fields once the band has cut the bar, the grid following the bar's stretch, MUSL,
  * and the release after the cut damped toward each part's end (fig7.ini's band runs). */
@@ -44,7 +44,7 @@ static const char *const band_sets[] = {
     "grid.motion=stretch", "time.scheme=musl", "time.damping=0.1", "time.damping_from=cut",
     "time.damping_about=parts"};
 
-/* The cohesive interface (docs/interface.md): the paper's Model 1 on the line through
+/* The cohesive interface (docs/methods.md): the paper's Model 1 on the line through
  * the flaw's point between two velocity fields, uGIMP and MUSL (what mpm_iface.c
  * implements), no flaw, the fixed grid, the release after the cut damped as the band's. */
 static const char *const iface_sets[] = {

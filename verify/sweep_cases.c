@@ -31,7 +31,7 @@ static const ver_variant V_V4 = {"v0.00025", "loading.speed=0.00025", 0, 2, 0};
 static const ver_variant V_STATIC = {"static", "solver.type=static", 0, 0, 0};
 /* --angles: an inclined file with only its laminate angle changed, and with its two
  * failure tractions snf and stf exchanged as well (the other mode: Mode I by strengths
- * becomes Mode II and back), issue 13: the method must hold for the bands and modes the
+ * becomes Mode II and back): the method must hold for the bands and modes the
  * files were not written for.  A file's own angle in its own mode is --full's case and is
  * left out; in the other mode it is kept (its alpha restated). */
 #define V_NANGLE 4

@@ -2,7 +2,7 @@
  * test_ana_stab.c - the linearised 1-D step (analytic/ana_stab.c) against what a step
  * must do whatever its scheme: a rest state without a force is neutral (the largest
  * eigenvalue modulus is 1: the rigid drift and the transfer's null space), and the rate
- * of a mode fed by the prestress scales with it.  Then the finding docs/interface.md
+ * of a mode fed by the prestress scales with it.  Then the finding docs/methods.md
  * rests on: MUSL with uGIMP grows once the boxes straddle a node under a prestress, and
  * neither USL nor bilinear shapes do.
  *

@@ -406,7 +406,7 @@ static mpm_scene a45_scene(int ppc)
  * dissipation is U0 H / sin a within 10 %.  Le = row charges this band 0.84 of that:
  * the particles far along the rows soften a little before the band localizes, count in
  * its measured width and leave the band's own particles under-charged; zone counts only
- * the particles whose supports touch the row's lead (docs/bands.md sec. 3b). */
+ * the particles whose supports touch the row's lead (docs/findings.md). */
 static void test_mpm_bar_inclined_zone_energy(void **state)
 {
   (void)state;
@@ -425,7 +425,7 @@ static void test_mpm_bar_inclined_zone_energy(void **state)
  * cut, one cell of reach): (i) no particle farther than h (|sin a| + |cos a|) / 2 + h
  * from the line at alpha through the imperfection softens at all, and particles nearer
  * it are the bar's own material; (ii) D within 10 % of U0 H / sin a; (iii) the
- * separated particles' principal axis lies within 5 deg of alpha (issue 13's test). */
+ * separated particles' principal axis lies within 5 deg of alpha (the inclined-crack bound). */
 static void test_mpm_bar_path_line(void **state)
 {
   (void)state;

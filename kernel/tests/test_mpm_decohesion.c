@@ -354,7 +354,7 @@ static void test_mpm_decohesion_shear(void **state)
 }
 
 /*
- * decohesion.reversed_shear (docs/bands.md sec. 5j): a particle softened in shear to
+ * decohesion.reversed_shear (docs/findings.md): a particle softened in shear to
  * lambda about 0.5, then sheared back past its strength the other way, then forward again.
  * EVEN (the paper's eq. 23, even in st): the reversed shear softens it once |st| reaches
  * stf (1 - lambda), and the slip upt runs back.  CLOSING: every reversed step is elastic,

@@ -21,15 +21,15 @@
  *    the line: sigma_xx in the four particle columns beside a crack on a node column
  *    (h 1, 4 ppc, a short bar) varies along y, away from the free edges, by under 5 % of
  *    its mean (the bar in uniaxial tension with a uniform cohesive plane: 0; share =
- *    stick grows a mode there, 17-48 %, docs/interface.md "The column on the line");
+ *    stick grows a mode there, 17-48 %, docs/findings.md);
  *  - with grid.weights = laid the particles still move (within 1e-2 of the usual
  *    weights' positions before the cut), D = U0 H and the ledger closes through the cut;
  *    a slow softening stays quasi-static (the kinetic energy under 1 % of the strain
  *    energy), where the weights at the particles' positions grow a wave
- *    (docs/interface.md, "Its causes"); laid is refused off the stretched grid;
+ *    (docs/findings.md); laid is refused off the stretched grid;
  *  - share = line carries no shear on a softening segment's capped steps, and Fig. 6's
  *    bar at h 4, 4 ppc and a sixteenth of the speed stays near the steady loading's
- *    kinetic energy (with shear a wave grows, docs/interface.md "Its causes").
+ *    kinetic energy (with shear a wave grows, docs/findings.md).
  * The two slow runs (a sixteenth of the grip speed) are the build with IFACE_SLOW, test
  * mpm_iface_slow, outside the sanitizers' suites.
  */
@@ -426,9 +426,9 @@ static void test_mpm_iface_laid_quiet(void **state)
  * from the peak to delta 0.34: the kinetic energy stays within 20 times that of the steady
  * loading, rho H L v^2 / 6 (the bar stretching at the grip speed v: 4.0e-6), an allowance
  * for the softening's own change of the velocity field.  Measured: 1.8e-5.  With the
- * node's share of the segment's shear on those steps (the rule before session 19) a
+ * node's share of the segment's shear on those steps (a rule tried and not kept) a
  * wave grows there: 2.4e-3 (4.5e-4 with the weights at the particles' positions);
- * docs/interface.md, "Its causes". */
+ * docs/findings.md. */
 static void test_mpm_iface_line_no_shear_quiet(void **state)
 {
   (void)state;

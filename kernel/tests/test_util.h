@@ -61,7 +61,7 @@ static inline mpm_sim *tu_make_sim(const mpm_scene *sc, int nthreads)
   return s;
 }
 
-/* Every term the step books in its ledger (docs/energy.md): the losses it can name. */
+/* Every term the step books in its ledger (docs/findings.md): the losses it can name. */
 static inline double tu_booked(const mpm_energy *e)
 {
   return e->L_bc + e->L_flip + e->L_scheme + e->W_head + e->L_contact + e->L_debris + e->L_damp;

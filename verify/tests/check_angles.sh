@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# check_angles.sh DELAM SRC - `delam verify --angles` (issue 13: the files' method on
+# check_angles.sh DELAM SRC - `delam verify --angles` (the files' method on
 # bands and modes they were not written for): its case list, read from `--list`, must be
 # every inclined scene file of data/scenes (alpha not 90, read here from the files
 # themselves) at alpha 30, 45, 60 and 75 less its own, and at all four with its snf and

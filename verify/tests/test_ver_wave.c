@@ -10,8 +10,8 @@
  *    h 8 and h 4 (1 ppc), and smaller at h 4 than at h 8 (the run converges to it);
  *  - the dissipation is U0 H (eq. 10 on the open line) within 1e-6.
  * The bounds: docs/verification.md "The exact solution at the grip speed" (measured
- * 0.0073 and 0.0047 at h 8 and 4; 0.0090 and 0.0045 before session 19's laid weights
- * and shearless capped steps, 0.0087 and 0.0053 before session 18's share = line; the
+ * 0.0073 and 0.0047 at h 8 and 4; 0.0090 and 0.0045 with weights laid at the nodes
+ * and shearless capped steps, 0.0087 and 0.0053 with the share by segment; the
  * quasi-static curve itself is 0.0157 away).
  */
 #include <math.h>
