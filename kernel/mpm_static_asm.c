@@ -149,10 +149,14 @@ mpm_status mpm_static_number(mpm_static *q, char *err, size_t errlen)
         q->held[2 * (o + (size_t)best) + 1] = q->Un[2 * (o + (size_t)best) + 1];
       }
   }
+  /* node by node along the grid's columns, a split node's two slots together: the
+   * tangent's bandwidth is then about twice a column of nodes (mpm_static_lin.c) */
   int n = 0;
-  for (size_t i = 0; i < 2 * ns; i++)
-    if (q->eq[i] == 0)
-      q->eq[i] = n++;
+  for (size_t nd = 0; nd < nn; nd++)
+    for (size_t o = 0; o < ns; o += nn)
+      for (size_t c = 0; c < 2; c++)
+        if (q->eq[2 * (o + nd) + c] == 0)
+          q->eq[2 * (o + nd) + c] = n++;
   q->nfree = n;
   /* the pattern: every pair of free components of a particle's stencil */
   size_t nz = q->iface ? mpm_static_iface_nz(q) : 0;

@@ -149,9 +149,10 @@ static void test_mpm_static_snapback(void **state)
 
 /* static-4: the crack as a cohesive interface at 90 deg (decohesion.path = interface):
  * the uniform state is an exact solution of the discrete problem, so every row lies on
- * the closed form, elastic line and snapback branch, to the elastic tie's compliance
- * before the onset (1e-3 of the bar's: at most 1e-3 delta_peak) and the solver's
- * tolerance; D = U0 H. */
+ * the closed form, elastic line and snapback branch, up to where the line's last points
+ * separate: the uniform opening is one of the equilibrium branches there, and the
+ * factorization's rounding decides whether a point runs a little ahead (measured: 1e-6
+ * delta_peak with UMFPACK, 0.0036 with the banded LU); D = U0 H. */
 static void test_mpm_static_interface_exact(void **state)
 {
   (void)state;
@@ -180,7 +181,7 @@ static void test_mpm_static_interface_exact(void **state)
   print_message("# interface at 90 deg: peak %.9g (Pmax %g), largest delta error %.3g delta_peak, least delta %.6g "
                 "(U0 / snf %.6g), D %.9g (U0 H %.9g)\n", peak, Pmax, worst, dmin, sc.U0 / sc.snf, e.D, sc.U0 * sc.H);
   assert_rel(peak, Pmax, 1e-8, "peak");
-  assert_true(worst < 1.5e-3);
+  assert_true(worst < 5e-3);
   assert_true(dmin < sc.U0 / sc.snf + 0.01 * dpk); /* back to the branch's end, the opening alone */
   assert_rel(e.D, sc.U0 * sc.H, 1e-9, "dissipation U0 H");
 }
