@@ -120,6 +120,14 @@ static void check_peak_elastic(ver_case *c, const case_class *q)
   else
     snprintf(k->note, sizeof k->note, "peak grip load vs Pmax = r0 H (eq. 30); tol %g %% (ppc %d)", 100 * k->tol,
              sc->ppc);
+  /* the static solver's inclined interface: the sides' particles meet in a staircase,
+   * whose end segments at the faces initiate first (fig8: -2.1 % at h 8, -1.2 % at h 4,
+   * 4 ppc; docs/static.md): known-limit to 3 % low */
+  if (sc->solver == MPM_SOLVER_STATIC && sc->path == MPM_PATH_IFACE && !q->a90) {
+    known(k, -0.03, k->tol);
+    snprintf(k->note + strlen(k->note), sizeof k->note - strlen(k->note),
+             "; static, inclined interface: the staircase's end segments initiate first, known-limit to -3 %%");
+  }
 
   k = add_check(c, "k_elastic", c->k_elastic, a->k_elastic, 1);
   k->tol = 0.01;

@@ -207,6 +207,7 @@ int ver_sweep_cases(const ver_verify_opts *o, ver_case **out, int *nout)
       {"iface90", 4, 1, &V_BASE},
       /* the quasi-static solver on the band and on the interface (a second each) */
       {"fig6", 8, 4, &V_STATIC}, {"fig6", 4, 4, &V_STATIC}, {"iface90", 8, 4, &V_STATIC},
+      {"fig8", 8, 4, &V_STATIC}, /* a snapback traced back (g 0.45), about a second */
     };
     const int nq = (int)(sizeof q / sizeof q[0]);
     cs = calloc((size_t)nq, sizeof *cs);
