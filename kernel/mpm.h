@@ -153,7 +153,7 @@ typedef struct {
   double h;              /* grid spacing                                               */
   int ppc;               /* particles per cell, a perfect square (1, 4, 9, ...)        */
   double margin;         /* empty space around the bar (length; the left side adds the grip's travel) */
-  int scheme;            /* MPM_SCHEME_USL (paper) or MPM_SCHEME_MUSL                  */
+  int scheme;            /* MPM_SCHEME_*: a row of mpm_schemes (mpm_scheme.c)         */
   int grid_motion;       /* MPM_GRID_FIXED (default, the paper) or MPM_GRID_STRETCH   */
   int weights;           /* MPM_WEIGHTS_CURRENT (default, the paper) or MPM_WEIGHTS_LAID */
   int shape;             /* MPM_SHAPE_LINEAR (default, the paper) or MPM_SHAPE_GIMP    */
@@ -528,6 +528,8 @@ typedef struct {
   mpm_band *band;          /* decohesion.Le = row: the rows' measured Le, or NULL       */
   double (*led_part)[MPM_LED_N]; /* per-strip partial sums of the step (nstrip rows)  */
   struct mpm_damping *damp; /* time.damping > 0: its state (mpm_damping.c), else NULL   */
+  const struct mpm_scheme_type *scheme; /* time.scheme's phases (mpm_phase.h)          */
+  struct mpm_phases *ph;   /* the hooks and loops the step walks, chosen at setup       */
 } mpm_sim;
 
 /* Local damping (time.damping, mpm_damping.c): after the node update (and the second
@@ -536,7 +538,7 @@ typedef struct {
 typedef struct mpm_damping mpm_damping;
 mpm_damping *mpm_damping_alloc(const mpm_sim *s);
 void mpm_damping_free(mpm_damping *d);
-void mpm_damping_apply(mpm_sim *s, double bfac);
+void mpm_damping_apply(mpm_sim *s);
 void mpm_damping_musl(mpm_sim *s);
 /* time.damping_about = parts, once the band has cut the bar: each bar particle's velocity
  * relaxes toward the motion of its part's held end (mpm_damping.c); books L_damp. */
@@ -572,7 +574,7 @@ void mpm_sim_free(mpm_sim *s);
  * the RMS particle displacement error over A at t = 10 (*e; MPM_OK or the step's status). */
 mpm_scene mpm_mms_scene(double h, int scheme, int bc);
 mpm_status mpm_mms_error(double h, int scheme, int bc, double *e, char *err, size_t errlen);
-/* One explicit step (eqs. 2-7, USL).  On failure, err names the step, particle and field. */
+/* One explicit step (eqs. 2-7) with the scene's scheme.  On failure, err names the step, particle and field. */
 mpm_status mpm_sim_step(mpm_sim *s, char *err, size_t errlen);
 double mpm_sim_delta(const mpm_sim *s);
 /* The grip's displacement after `ahead` more steps at its current speed (ahead 0: delta). */

@@ -29,8 +29,8 @@ double mpm_gimp_musl_range(const mpm_grid *g, mpm_particles *p, size_t a, size_t
 mpm_fields *mpm_fields_alloc(size_t nn, double nx, double ny);
 void mpm_fields_free(mpm_fields *f);
 void mpm_fields_mark(mpm_sim *s);  /* before the scatter: split nodes and band centres   */
-void mpm_fields_grid(mpm_sim *s, double bfac); /* after mpm_nodes_update: the second field's eq. 4, contact */
-void mpm_fields_start(mpm_sim *s, double frac); /* after mpm_nodes_start_velocity (USF, USAVG)        */
+void mpm_fields_grid(mpm_sim *s); /* after mpm_nodes_update: the second field's eq. 4, contact */
+void mpm_fields_start(mpm_sim *s); /* after mpm_nodes_start_velocity (USF, USAVG)        */
 void mpm_fields_musl(mpm_sim *s);  /* after mpm_nodes_musl_velocity                           */
 
 /* The side of a particle near a separated band, from its stencil's nodes n[0..cnt)

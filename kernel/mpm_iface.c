@@ -63,6 +63,7 @@
 
 #include "mpm_gimp.h"
 #include "mpm_iface.h"
+#include "mpm_phase.h"
 
 /* quadrature of the line for An and the flaw: points per cell of line */
 #define IFACE_QUAD 200
@@ -352,8 +353,9 @@ static void advance(mpm_sim *s, mpm_iface *f)
     s->cut = 1;
 }
 
-void mpm_iface_grid(mpm_sim *s, double bfac)
+void mpm_iface_grid(mpm_sim *s)
 {
+  const double bfac = s->scheme->bfac;
   mpm_grid *g = s->g;
   mpm_fields *fl = g->fld;
   mpm_iface *f = fl->ifc;
@@ -515,3 +517,36 @@ int mpm_iface_piece(const mpm_sim *s, int i, double xy[4], double *lam, int *sta
   *state = f->state[o];
   return 1;
 }
+
+/* The interface's split nodes are fixed (mpm_iface_alloc): before each scatter only the
+ * second field's records are zeroed. */
+static void iface_mark(mpm_sim *s)
+{
+  const mpm_grid *g = s->g;
+  memset(g->fld->nd2, 0, (size_t)g->nnx * (size_t)g->nny * sizeof(mpm_node));
+  s->ph->split = g->fld->nsplit != 0;
+}
+
+/* The second field's eq. 4 and contact where open (mpm_fields_grid), then the law. */
+static void iface_grid(mpm_sim *s)
+{
+  if (s->g->fld->nsplit == 0)
+    return;
+  mpm_fields_grid(s);
+  mpm_iface_grid(s);
+}
+
+static void iface_musl(mpm_sim *s)
+{
+  if (s->g->fld->nsplit == 0)
+    return;
+  mpm_fields_musl(s);
+  mpm_iface_musl(s);
+}
+
+/* decohesion.path = interface: two fields split along the line, which carries the law. */
+const mpm_hook mpm_hook_iface = {"interface",
+                                 {[MPM_PH_MARK] = iface_mark,
+                                  [MPM_PH_START] = mpm_fields_start,
+                                  [MPM_PH_GRID] = iface_grid,
+                                  [MPM_PH_MUSL] = iface_musl}};

@@ -16,6 +16,7 @@
 #include "mpm.h"
 #include "mpm_gimp.h"
 #include "mpm_iface.h"
+#include "mpm_phase.h"
 
 const char *mpm_strerror(mpm_status s)
 {
@@ -77,7 +78,7 @@ mpm_status mpm_scene_check(const mpm_scene *sc, char *err, size_t errlen)
   const int n = (int)lround(sqrt((double)sc->ppc));
   if (sc->ppc < 1 || n * n != sc->ppc) BAD("grid.ppc must be a perfect square (1, 4, 9, ...)");
   if (!(sc->margin >= 0.0)) BAD("grid.margin must be >= 0");
-  if (sc->scheme < MPM_SCHEME_USL || sc->scheme > MPM_SCHEME_USAVG) BAD("time.scheme must be usl, musl, usf or usavg");
+  if (sc->scheme < 0 || sc->scheme >= mpm_nschemes) BAD("time.scheme must be usl, musl, usf or usavg");
   if (sc->bc < MPM_BC_LAGRANGIAN || sc->bc > MPM_BC_CONSISTENT) BAD("grid.bc must be lagrangian, both or consistent");
   if (sc->node_mass != MPM_NODEMASS_LUMPED && sc->node_mass != MPM_NODEMASS_LIMITED) BAD("grid.node_mass must be lumped or limited");
   if (sc->head != MPM_HEAD_RIGID && sc->head != MPM_HEAD_NONE) BAD("loading.head must be rigid or none");
@@ -131,6 +132,7 @@ void mpm_sim_free(mpm_sim *s)
   free(s->rowsep);
   free(s->led_part);
   mpm_band_free(s->band);
+  free(s->ph);
   free(s);
 }
 
@@ -344,6 +346,11 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
   if (sc->damping > 0.0 && !(s->damp = mpm_damping_alloc(s))) {
     mpm_sim_free(s);
     snprintf(err, errlen, "out of memory for the damping's node arrays");
+    return MPM_ENOMEM;
+  }
+  if (mpm_step_setup(s) != MPM_OK) {
+    mpm_sim_free(s);
+    snprintf(err, errlen, "out of memory for the step's phases");
     return MPM_ENOMEM;
   }
   for (size_t i = nbar; i < np; i++)
