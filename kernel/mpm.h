@@ -574,6 +574,10 @@ void mpm_sim_free(mpm_sim *s);
  * the RMS particle displacement error over A at t = 10 (*e; MPM_OK or the step's status). */
 mpm_scene mpm_mms_scene(double h, int scheme, int bc);
 mpm_status mpm_mms_error(double h, int scheme, int bc, double *e, char *err, size_t errlen);
+/* The time schemes (mpm_scheme.c): the index of the one named `name` (-1: none), and
+ * the name of index i (that of MPM_SCHEME_USL when i is not one). */
+int mpm_scheme_find(const char *name);
+const char *mpm_scheme_name(int i);
 /* One explicit step (eqs. 2-7) with the scene's scheme.  On failure, err names the step, particle and field. */
 mpm_status mpm_sim_step(mpm_sim *s, char *err, size_t errlen);
 double mpm_sim_delta(const mpm_sim *s);
