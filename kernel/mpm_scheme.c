@@ -6,14 +6,13 @@
 
 #include "mpm_phase.h"
 
-extern const mpm_scheme_type mpm_scheme_usl, mpm_scheme_musl, mpm_scheme_usf, mpm_scheme_usavg, mpm_scheme_usthird;
+extern const mpm_scheme_type mpm_scheme_usl, mpm_scheme_musl, mpm_scheme_usf, mpm_scheme_usavg;
 
 const mpm_scheme_type *const mpm_schemes[] = {
   [MPM_SCHEME_USL] = &mpm_scheme_usl,
   [MPM_SCHEME_MUSL] = &mpm_scheme_musl,
   [MPM_SCHEME_USF] = &mpm_scheme_usf,
   [MPM_SCHEME_USAVG] = &mpm_scheme_usavg,
-  &mpm_scheme_usthird,
 };
 const int mpm_nschemes = (int)(sizeof mpm_schemes / sizeof mpm_schemes[0]);
 
