@@ -329,22 +329,8 @@ typedef struct {
 
 typedef struct mpm_iface mpm_iface; /* decohesion.path = interface (mpm_iface.h) */
 
-/* The second velocity field (grid.fields = 2, mpm_fields.c): at a node that a separated
- * particle's support covers ("split"), the particles on the far side of the band, as
- * seen from the band's local centre (crk), sum into nd2 instead of nd. */
-typedef struct {
-  mpm_node *nd2;           /* the second field's records, nnx * nny (used where split)   */
-  uint8_t *split;          /* 1 where a node holds two fields this step                 */
-  double *crk;             /* the band's local centre at a split node (x, y pairs)      */
-  double *cw;              /* the weights summed into crk (scratch)                     */
-  double *dc;              /* the velocity change the contact (or the interface) made in
-                              field 1 and 2 at a split node this step (x, y of field 1,
-                              then of field 2; 0 without contact): the ledger           */
-  double nx, ny;           /* the failure plane's normal: side 2 is n . (x - crk) > 0   */
-  int nsplit;              /* split nodes this step (0: one field everywhere)           */
-  mpm_iface *ifc;          /* decohesion.path = interface: the split nodes are its, from
-                              the first step; NULL otherwise                            */
-} mpm_fields;
+/* The second velocity field across a separated band (grid.fields = two): mpm_fields.h. */
+typedef struct mpm_fields mpm_fields;
 
 typedef struct {
   int ncx, ncy;            /* cells in x and y                                         */

@@ -70,6 +70,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "mpm_fields.h"
 #include "mpm.h"
 #include "mpm_phase.h"
 #include "mpm_node.h"

@@ -13,6 +13,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "mpm_fields.h"
 #include "mpm.h"
 #include "mpm_gimp.h"
 #include "mpm_iface.h"

@@ -49,6 +49,7 @@
 #include <omp.h>
 #endif
 
+#include "mpm_fields.h"
 #include "mpm.h"
 #include "mpm_gimp.h"
 #include "mpm_node.h"

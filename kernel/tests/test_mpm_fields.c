@@ -23,6 +23,7 @@
 
 #include <cmocka.h>
 
+#include "mpm_fields.h"
 #include "mpm.h"
 #include "test_util.h"
 
