@@ -579,6 +579,16 @@ void mpm_sim_energy(const mpm_sim *s, mpm_energy *e);
  * the bar. */
 int mpm_iface_pieces(const mpm_sim *s);
 int mpm_iface_piece(const mpm_sim *s, int i, double xy[4], double *lam, int *state);
+/* What a caller reads of the kernel's bookkeeping (verify/: summary.json and the bench). */
+typedef struct {
+  int nmax;                /* threads allocated for                                    */
+  long steps_multi;        /* steps run on more than one thread                        */
+  long nprobe, nbusy;      /* probes of the thread count done; skipped (no idle core)  */
+} mpm_threads_info;
+void mpm_sim_threads(const mpm_sim *s, mpm_threads_info *out);
+/* The kernel's memory per particle (particles, sorting, grid and fields, the rest),
+ * bytes rounded. */
+size_t mpm_sim_bytes_per_particle(const mpm_sim *s);
 /* Called at the top of each step: picks the step's thread count (s->nthreads). */
 void mpm_threads_tick(mpm_sim *s);
 

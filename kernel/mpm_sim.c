@@ -519,3 +519,25 @@ void mpm_sim_energy(const mpm_sim *s, mpm_energy *e)
   e->L_debris = s->led.L_debris;
   e->L_damp = s->led.L_damp;
 }
+
+void mpm_sim_threads(const mpm_sim *s, mpm_threads_info *out)
+{
+  out->nmax = s->thr.nmax;
+  out->steps_multi = s->thr.steps_multi;
+  out->nprobe = s->thr.nprobe;
+  out->nbusy = s->thr.nbusy;
+}
+
+size_t mpm_sim_bytes_per_particle(const mpm_sim *s)
+{
+  const size_t np = s->p->n, nn = (size_t)s->g->nnx * (size_t)s->g->nny;
+  const size_t ncell = (size_t)s->g->ncx * (size_t)s->g->ncy;
+  const size_t particles = np * (16 * sizeof(double) + 2);         /* mpm_particles  */
+  const size_t sorting = np * (sizeof(double) + 1 + 2 * sizeof(uint32_t)) + (ncell + 1) * sizeof(size_t) +
+                         ((size_t)s->nstrip + 1) * sizeof(size_t);
+  const size_t fields = s->g->fld ? nn * (sizeof(mpm_node) + 1 + 3 * sizeof(double)) : 0;
+  const size_t grid = nn * sizeof(mpm_node) + fields;
+  const size_t other = s->nhead * sizeof(uint32_t) + (size_t)s->thr.nmax * sizeof(mpm_defer) +
+                       (size_t)(s->ngrip + s->nfixx) * sizeof(int);
+  return (particles + sorting + grid + other + np / 2) / np;
+}
