@@ -72,6 +72,7 @@
 
 #include "mpm_fields.h"
 #include "mpm.h"
+#include "mpm_kernel.h"
 #include "mpm_phase.h"
 #include "mpm_node.h"
 #include "mpm_iface.h"

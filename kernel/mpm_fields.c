@@ -30,6 +30,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "mpm_kernel.h"
 #include "mpm_fields.h"
 #include "mpm_gimp.h"
 #include "mpm_iface.h"

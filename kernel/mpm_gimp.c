@@ -14,6 +14,7 @@
 #include <math.h>
 #include <stdint.h>
 
+#include "mpm_kernel.h"
 #include "mpm_fields.h"
 #include "mpm_gimp.h"
 

@@ -3,6 +3,7 @@
  * particles' weights (grid.weights): hooks at the step's start (mpm_phase.h).  The
  * paper's fixed grid at the particles' positions has no hook.
  */
+#include "mpm_kernel.h"
 #include "mpm_phase.h"
 
 /* The stretch that carries the grid (and the laid places) this step. */

@@ -48,6 +48,7 @@
 #endif
 
 #include "mpm.h"
+#include "mpm_kernel.h"
 #include "mpm_node.h"
 #include "mpm_nodes.h"
 #include "mpm_phase.h"

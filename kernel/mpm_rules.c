@@ -9,6 +9,7 @@
 #include <stdio.h>
 
 #include "mpm.h"
+#include "mpm_kernel.h"
 
 /* The scene files' words of the enumerated options, for messages. */
 static const char *word(int v, const char *const *w, int n)

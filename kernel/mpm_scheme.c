@@ -4,6 +4,7 @@
  */
 #include <string.h>
 
+#include "mpm_kernel.h"
 #include "mpm_phase.h"
 
 extern const mpm_scheme_type mpm_scheme_usl, mpm_scheme_musl, mpm_scheme_usf, mpm_scheme_usavg;

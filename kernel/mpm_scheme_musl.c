@@ -5,6 +5,7 @@
  * velocities, so a node that a particle barely touches (tiny m_i, finite f_i) cannot
  * inject a huge strain: the cell-crossing instability of USL.
  */
+#include "mpm_kernel.h"
 #include "mpm_nodes.h"
 #include "mpm_phase.h"
 #include "mpm_scatter.h"

@@ -2,6 +2,7 @@
  * mpm_scheme_usavg.c - update-stress-average (Nairn 2003): half the strain increment as
  * USF before the forces, half as USL after them.
  */
+#include "mpm_kernel.h"
 #include "mpm_phase.h"
 
 static mpm_status usavg_gather(mpm_sim *s, char *err, size_t errlen)

@@ -3,6 +3,7 @@
  * projected v_i, the stress updated, the forces of the new stress scattered, then the
  * node update and a gather that only moves the particles.
  */
+#include "mpm_kernel.h"
 #include "mpm_phase.h"
 
 static mpm_status usf_gather(mpm_sim *s, char *err, size_t errlen)

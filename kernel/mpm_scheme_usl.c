@@ -3,6 +3,7 @@
  * then one gather that moves the particles, adds the FLIP increment to their velocities
  * and takes the strain from v^L.
  */
+#include "mpm_kernel.h"
 #include "mpm_phase.h"
 
 static mpm_status usl_gather(mpm_sim *s, char *err, size_t errlen)

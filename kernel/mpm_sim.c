@@ -15,6 +15,7 @@
 
 #include "mpm_fields.h"
 #include "mpm.h"
+#include "mpm_kernel.h"
 #include "mpm_gimp.h"
 #include "mpm_iface.h"
 #include "mpm_phase.h"

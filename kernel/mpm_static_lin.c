@@ -12,6 +12,7 @@
 
 #include <suitesparse/umfpack.h>
 
+#include "mpm_kernel.h"
 #include "mpm_static.h"
 
 struct mpm_lin {
