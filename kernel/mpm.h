@@ -153,7 +153,7 @@ typedef struct {
   double h;              /* grid spacing                                               */
   int ppc;               /* particles per cell, a perfect square (1, 4, 9, ...)        */
   double margin;         /* empty space around the bar (length; the left side adds the grip's travel) */
-  int scheme;            /* MPM_SCHEME_USL (paper) or MPM_SCHEME_MUSL                  */
+  int scheme;            /* MPM_SCHEME_*: a row of mpm_schemes (mpm_scheme.c)         */
   int grid_motion;       /* MPM_GRID_FIXED (default, the paper) or MPM_GRID_STRETCH   */
   int weights;           /* MPM_WEIGHTS_CURRENT (default, the paper) or MPM_WEIGHTS_LAID */
   int shape;             /* MPM_SHAPE_LINEAR (default, the paper) or MPM_SHAPE_GIMP    */
@@ -329,22 +329,8 @@ typedef struct {
 
 typedef struct mpm_iface mpm_iface; /* decohesion.path = interface (mpm_iface.h) */
 
-/* The second velocity field (grid.fields = 2, mpm_fields.c): at a node that a separated
- * particle's support covers ("split"), the particles on the far side of the band, as
- * seen from the band's local centre (crk), sum into nd2 instead of nd. */
-typedef struct {
-  mpm_node *nd2;           /* the second field's records, nnx * nny (used where split)   */
-  uint8_t *split;          /* 1 where a node holds two fields this step                 */
-  double *crk;             /* the band's local centre at a split node (x, y pairs)      */
-  double *cw;              /* the weights summed into crk (scratch)                     */
-  double *dc;              /* the velocity change the contact (or the interface) made in
-                              field 1 and 2 at a split node this step (x, y of field 1,
-                              then of field 2; 0 without contact): the ledger           */
-  double nx, ny;           /* the failure plane's normal: side 2 is n . (x - crk) > 0   */
-  int nsplit;              /* split nodes this step (0: one field everywhere)           */
-  mpm_iface *ifc;          /* decohesion.path = interface: the split nodes are its, from
-                              the first step; NULL otherwise                            */
-} mpm_fields;
+/* The second velocity field across a separated band (grid.fields = two): mpm_fields.h. */
+typedef struct mpm_fields mpm_fields;
 
 typedef struct {
   int ncx, ncy;            /* cells in x and y                                         */
@@ -365,40 +351,8 @@ static inline size_t mpm_grid_node(const mpm_grid *g, int i, int j)
 }
 void mpm_grid_free(mpm_grid *g);
 
-/* decohesion.Le = row (mpm_band.c): Le per particle row of the bar, measured from the
- * particles softening in it, k dx |sin a| with k = sum / lam (mpm_band_le). */
-typedef struct {
-  int nrow, nstrip;        /* particle rows of the bar; strips of the gather            */
-  double idy;              /* 1 / the row height h / sqrt(ppc)                           */
-  double wlen;             /* Le per participating particle, dx |sin a| Le_factor        */
-  double le0;              /* a row's Le before any of its particles has softened        */
-  double *acc;             /* per strip and row: sum of this step's dlambda (softening), and
-                              the largest min(lambda, 1) reached                        */
-  double *lam;             /* each row's crack state: the largest min(lambda, 1) in it   */
-  double *sum;             /* each row's softening so far, the sum of its particles' dlambda */
-  double *xl;              /* each row's lead: the x0 of its particle with the largest lambda */
-  double reach;            /* Le = zone: only the particles within this x0 distance of the
-                              row's lead count in sum (2 h + dx: their supports touch the
-                              lead's); 0 for Le = row, every particle of the row counts  */
-} mpm_band;
-
-mpm_band *mpm_band_alloc(int nrow, int nstrip, double dy, double wlen, double le0, double reach);
-void mpm_band_free(mpm_band *b);
-void mpm_band_step(mpm_band *b);
-static inline int mpm_band_row(const mpm_band *b, double y0)
-{
-  const int j = (int)(y0 * b->idy);
-  return j < 0 ? 0 : j >= b->nrow ? b->nrow - 1 : j;
-}
-/* Row j's Le for this step: k wlen, k = sum / lam (at least 1), once it has softened. */
-static inline double mpm_band_le(const mpm_band *b, int j)
-{
-  const double lam = b->lam[j], sum = b->sum[j];
-  if (!(lam > 0.0 && sum > 0.0))
-    return b->le0;
-  const double k = sum / lam;
-  return (k > 1.0 ? k : 1.0) * b->wlen;
-}
+/* decohesion.Le = row: the rows' measured Le (mpm_kernel.h). */
+typedef struct mpm_band mpm_band;
 
 /* ---- energies (sec. 3 eq. 25 for the surface terms) ---- */
 typedef struct {
@@ -443,8 +397,6 @@ typedef struct {
   long nbusy;              /* probes skipped: no idle core (load average)              */
 } mpm_threads;
 
-/* Sets up t for `requested` threads (<= 0: automatic, up to OpenMP's default). */
-void mpm_threads_init(mpm_threads *t, int requested, size_t particles);
 /* The ledger's sums (mpm_step.c), accumulated step by step in a fixed order. */
 typedef struct {
   double L_bc, L_flip, L_scheme, W_head, L_contact, L_debris, L_damp;
@@ -528,19 +480,12 @@ typedef struct {
   mpm_band *band;          /* decohesion.Le = row: the rows' measured Le, or NULL       */
   double (*led_part)[MPM_LED_N]; /* per-strip partial sums of the step (nstrip rows)  */
   struct mpm_damping *damp; /* time.damping > 0: its state (mpm_damping.c), else NULL   */
+  const struct mpm_scheme_type *scheme; /* time.scheme's phases (mpm_phase.h)          */
+  struct mpm_phases *ph;   /* the hooks and loops the step walks, chosen at setup       */
 } mpm_sim;
 
-/* Local damping (time.damping, mpm_damping.c): after the node update (and the second
- * field's), on every free velocity component; under MUSL, its share of the stress power
- * after the re-projection. */
+/* Local damping (time.damping): its state (mpm_kernel.h). */
 typedef struct mpm_damping mpm_damping;
-mpm_damping *mpm_damping_alloc(const mpm_sim *s);
-void mpm_damping_free(mpm_damping *d);
-void mpm_damping_apply(mpm_sim *s, double bfac);
-void mpm_damping_musl(mpm_sim *s);
-/* time.damping_about = parts, once the band has cut the bar: each bar particle's velocity
- * relaxes toward the motion of its part's held end (mpm_damping.c); books L_damp. */
-void mpm_damping_parts(mpm_sim *s);
 
 enum { MPM_T_SORT = 0, MPM_T_P2G, MPM_T_GRID, MPM_T_G2P, MPM_T_CONST };
 /* Materials.  The head is the loading machine (paper, sec. 4.4: "a rigid head with
@@ -559,8 +504,6 @@ enum { MPM_MAT_BAR = 0, MPM_MAT_IMP = 1, MPM_MAT_HEAD = 2, MPM_MAT_DEBRIS = 3, M
 #define MPM_SORT_EVERY 64  /* steps between sorts (quasi-static: particles move ~1e-5 h a
                               step; 16 cost 0.45 ns per particle-step more, measured)  */
 
-/* Sorts the particles by cell (stable counting sort) and rebuilds the strips. */
-void mpm_sim_sort(mpm_sim *s);
 
 /* nthreads > 0: that many threads; <= 0: chosen per step by measurement, up to OpenMP's
  * default (mpm_threads.c).  Results do not depend on it (fixed summation order). */
@@ -572,7 +515,11 @@ void mpm_sim_free(mpm_sim *s);
  * the RMS particle displacement error over A at t = 10 (*e; MPM_OK or the step's status). */
 mpm_scene mpm_mms_scene(double h, int scheme, int bc);
 mpm_status mpm_mms_error(double h, int scheme, int bc, double *e, char *err, size_t errlen);
-/* One explicit step (eqs. 2-7, USL).  On failure, err names the step, particle and field. */
+/* The time schemes (mpm_scheme.c): the index of the one named `name` (-1: none), and
+ * the name of index i (that of MPM_SCHEME_USL when i is not one). */
+int mpm_scheme_find(const char *name);
+const char *mpm_scheme_name(int i);
+/* One explicit step (eqs. 2-7) with the scene's scheme.  On failure, err names the step, particle and field. */
 mpm_status mpm_sim_step(mpm_sim *s, char *err, size_t errlen);
 double mpm_sim_delta(const mpm_sim *s);
 /* The grip's displacement after `ahead` more steps at its current speed (ahead 0: delta). */
@@ -587,14 +534,16 @@ void mpm_sim_energy(const mpm_sim *s, mpm_energy *e);
  * the bar. */
 int mpm_iface_pieces(const mpm_sim *s);
 int mpm_iface_piece(const mpm_sim *s, int i, double xy[4], double *lam, int *state);
-/* Called at the top of each step: picks the step's thread count (s->nthreads). */
-void mpm_threads_tick(mpm_sim *s);
-
-/* The grip's speed for the next step (mpm_control.c), at the top of each step. */
-void mpm_control_step(mpm_sim *s);
-
-/* Updates s->cut after new separations (cheap when there are none). */
-void mpm_sim_cut(mpm_sim *s);
+/* What a caller reads of the kernel's bookkeeping (verify/: summary.json and the bench). */
+typedef struct {
+  int nmax;                /* threads allocated for                                    */
+  long steps_multi;        /* steps run on more than one thread                        */
+  long nprobe, nbusy;      /* probes of the thread count done; skipped (no idle core)  */
+} mpm_threads_info;
+void mpm_sim_threads(const mpm_sim *s, mpm_threads_info *out);
+/* The kernel's memory per particle (particles, sorting, grid and fields, the rest),
+ * bytes rounded. */
+size_t mpm_sim_bytes_per_particle(const mpm_sim *s);
 
 /* ---- the quasi-static solver (mpm_static.c) ----
  * Load increments on the same grid, particles, shapes and laws, each solved by Newton's

@@ -33,6 +33,7 @@
 #include <string.h>
 
 #include "mpm.h"
+#include "mpm_kernel.h"
 
 mpm_band *mpm_band_alloc(int nrow, int nstrip, double dy, double wlen, double le0, double reach)
 {

@@ -20,6 +20,7 @@
 #include <math.h>
 
 #include "mpm.h"
+#include "mpm_kernel.h"
 
 #define MPM_CONTROL_VMAX 10.0 /* the grip's speed stays within this many loading.speed */
 

@@ -70,7 +70,10 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "mpm_fields.h"
 #include "mpm.h"
+#include "mpm_kernel.h"
+#include "mpm_phase.h"
 #include "mpm_node.h"
 #include "mpm_iface.h"
 
@@ -182,8 +185,9 @@ static void damp_record(mpm_node *n, const double c[2], double *vb, double *del,
 
 /* After mpm_nodes_update and mpm_fields_grid: delta on every free component of both
  * fields; bfac as theirs. */
-void mpm_damping_apply(mpm_sim *s, double bfac)
+void mpm_damping_apply(mpm_sim *s)
 {
+  const double bfac = s->scheme->bfac;
   mpm_damping *d = s->damp;
   const mpm_grid *g = s->g;
   const mpm_fields *f = g->fld;
@@ -289,3 +293,10 @@ void mpm_damping_parts(mpm_sim *s)
   }
   s->led.L_damp += dke;
 }
+
+/* time.damping > 0: after the node update (and the fields'), after MUSL's re-projection,
+ * and on the parts once the band has cut the bar. */
+const mpm_hook mpm_hook_damping = {"damping",
+                                   {[MPM_PH_GRID] = mpm_damping_apply,
+                                    [MPM_PH_MUSL] = mpm_damping_musl,
+                                    [MPM_PH_END] = mpm_damping_parts}};

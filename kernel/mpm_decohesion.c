@@ -47,6 +47,7 @@
 #include <gsl/gsl_roots.h>
 
 #include "mpm.h"
+#include "mpm_kernel.h"
 
 #define MPM_DCOH_FTOL 1e-12  /* |F| after a softening step               */
 #define MPM_DCOH_MAXIT 60

@@ -30,8 +30,11 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "mpm_kernel.h"
+#include "mpm_fields.h"
 #include "mpm_gimp.h"
 #include "mpm_iface.h"
+#include "mpm_phase.h"
 
 mpm_fields *mpm_fields_alloc(size_t nn, double nx, double ny)
 {
@@ -73,10 +76,6 @@ void mpm_fields_mark(mpm_sim *s)
   mpm_fields *f = s->g->fld;
   const mpm_particles *p = s->p;
   const mpm_grid *g = s->g;
-  if (f->ifc) { /* the interface's split nodes are fixed (mpm_iface_alloc) */
-    memset(f->nd2, 0, (size_t)g->nnx * (size_t)g->nny * sizeof(mpm_node));
-    return;
-  }
   if (!s->cut)
     return; /* a cut band has its separated particles (separation is never undone) */
   const size_t nn = (size_t)g->nnx * (size_t)g->nny, nny = (size_t)g->nny;
@@ -130,6 +129,7 @@ void mpm_fields_mark(mpm_sim *s)
       f->crk[2 * n + 1] /= f->cw[n];
       f->nsplit++;
     }
+  s->ph->split = f->nsplit != 0;
 }
 
 /* The ledger's change at one record (field 1 or 2 of a split node) when the contact
@@ -150,7 +150,7 @@ static void contact_ledger(mpm_ledger *L, double m, double vn, double dvn, doubl
 }
 
 /* Step 3 and the second field's eq. 4: after mpm_nodes_update has done the first field.
- * bfac: the share of the strain taken from v^L after it (mpm_nodes_update's).  The ledger
+ * bfac: the scheme's share of the strain taken from v^L after it (mpm_phase.h).  The ledger
  * (mpm_step.c, "Energy"): the second field's node terms A, K and B, as grid_nodes sums
  * the first field's, and what the contact changes in both (contact_ledger).  Summed
  * per pair, the contact's loss is mu (w2L - w1L)(w2 - w1) / 2, mu = m1 m2 / (m1 + m2),
@@ -159,9 +159,10 @@ static void contact_ledger(mpm_ledger *L, double m, double vn, double dvn, doubl
  * fields resting against each other however hard the stress presses them, negative
  * only where they were parting at the start and the stress brought them together
  * (mpm_energy.L_contact).  Serial in node order: the same sums whatever the threads. */
-void mpm_fields_grid(mpm_sim *s, double bfac)
+void mpm_fields_grid(mpm_sim *s)
 {
   mpm_fields *f = s->g->fld;
+  const double bfac = s->scheme->bfac;
   if (f->nsplit == 0)
     return;
   mpm_grid *g = s->g;
@@ -217,16 +218,15 @@ void mpm_fields_grid(mpm_sim *s, double bfac)
       b->fy += db * ny;
     }
   }
-  if (f->ifc)
-    mpm_iface_grid(s, bfac);
 }
 
 /* USF and USAVG: the second field's projected velocity v = p / m into (fx, fy), as
  * mpm_nodes_start_velocity does for the first, and the ledger's stress power of that share
  * (frac) of the strain increment, -frac dt f . v, from the forces still in the lanes. */
-void mpm_fields_start(mpm_sim *s, double frac)
+void mpm_fields_start(mpm_sim *s)
 {
   mpm_fields *f = s->g->fld;
+  const double frac = s->scheme->start_frac;
   if (f->nsplit == 0)
     return;
   const size_t nn = (size_t)s->g->nnx * (size_t)s->g->nny;
@@ -269,6 +269,11 @@ void mpm_fields_musl(mpm_sim *s)
     b->fy = b->qy * im;
   }
   s->led.s_B += B;
-  if (f->ifc)
-    mpm_iface_musl(s);
 }
+
+/* Two fields across the cut band (grid.fields = two, no interface). */
+const mpm_hook mpm_hook_fields = {"fields",
+                                  {[MPM_PH_MARK] = mpm_fields_mark,
+                                   [MPM_PH_START] = mpm_fields_start,
+                                   [MPM_PH_GRID] = mpm_fields_grid,
+                                   [MPM_PH_MUSL] = mpm_fields_musl}};

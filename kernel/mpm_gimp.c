@@ -14,6 +14,8 @@
 #include <math.h>
 #include <stdint.h>
 
+#include "mpm_kernel.h"
+#include "mpm_fields.h"
 #include "mpm_gimp.h"
 
 /* The 3 x 3 node shares of the particles that have the same nearest node (they are

@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "mpm.h"
+#include "mpm_kernel.h"
 
 mpm_grid *mpm_grid_alloc(int ncx, int ncy, double ox, double oy, double h)
 {

@@ -61,8 +61,11 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "mpm_kernel.h"
+#include "mpm_fields.h"
 #include "mpm_gimp.h"
 #include "mpm_iface.h"
+#include "mpm_phase.h"
 
 /* quadrature of the line for An and the flaw: points per cell of line */
 #define IFACE_QUAD 200
@@ -110,12 +113,106 @@ static void flaw_lengths(const mpm_sim *s, const mpm_iface *f, double s0, double
   }
 }
 
+/* An: the line integral of each node's uGIMP weight for a particle of the run's size
+ * centred on the line from s0 to s1 (midpoint rule). */
+static void line_weights(const mpm_sim *s, mpm_iface *f, double s0, double s1)
+{
+  const mpm_grid *g = s->g;
+  const size_t nny = (size_t)g->nny;
+  const double h = s->sc.h, lx = f->lx, ly = f->ly, ca = f->tx, sa = f->ty;
+  double lcx = 0.0, lcy = 0.0;
+  mpm_gimp_lc(s, &lcx, &lcy);
+  const int nq = (int)ceil((s1 - s0) / h * IFACE_QUAD);
+  const double ds = (s1 - s0) / nq;
+  for (int i = 0; i < nq; i++) {
+    const double sl = s0 + (i + 0.5) * ds, x = lx + sl * ca, y = ly + sl * sa;
+    mpm_gimp1 gx, gy;
+    mpm_gimp_1d((x - g->ox) * g->ihx, lcx, &gx);
+    mpm_gimp_1d((y - g->oy) * g->ihy, lcy, &gy);
+    size_t n[9];
+    double w[9];
+    mpm_gimp_stencil((size_t)gx.i0 * nny + (size_t)gy.i0, nny, &gx, &gy, n, w);
+    for (int q = 0; q < 9; q++)
+      f->An[n[q]] += w[q] * ds;
+  }
+}
+
+/* The split nodes, their list in node order and each node's segment; 0 if out of memory. */
+static int split_nodes(const mpm_sim *s, mpm_iface *f)
+{
+  const mpm_grid *g = s->g;
+  mpm_fields *fl = g->fld;
+  const size_t nn = (size_t)g->nnx * (size_t)g->nny, nny = (size_t)g->nny;
+  const double h = s->sc.h, lx = f->lx, ly = f->ly, ca = f->tx, sa = f->ty;
+  /* the split nodes (never a held one: its reaction stays that of one field), and the
+   * segment of each node */
+  const double reach = MPM_IFACE_REACH * h * (fabs(sa) + fabs(ca));
+  for (size_t n = 0; n < nn; n++) {
+    const double X = g->ox + (double)(n / nny) * g->hx, Y = g->oy + (double)(n % nny) * g->h;
+    fl->split[n] = fabs(f->nx * (X - lx) + f->ny * (Y - ly)) <= reach;
+    f->seg[n] = seg_of(f, X, Y);
+  }
+  for (int q = 0; q < s->ngrip; q++)
+    fl->split[s->grip[q]] = 0;
+  for (int q = 0; q < s->nfixx; q++)
+    fl->split[s->fixx[q]] = 0;
+  fl->split[s->fixy] = 0;
+  fl->nsplit = 0;
+  for (size_t n = 0; n < nn; n++)
+    fl->nsplit += fl->split[n];
+  /* the split nodes in node order: fixed for the run, so each step walks this list */
+  if (!(f->node = malloc((size_t)(fl->nsplit > 0 ? fl->nsplit : 1) * sizeof(size_t))))
+    return 0;
+  for (size_t n = 0; n < nn; n++)
+    if (fl->split[n]) {
+      f->node[f->nnode++] = n;
+      f->A[f->seg[n]] += f->An[n];
+    }
+  return 1;
+}
+
+/* Slivers into their neighbours (see below); amin: a quarter of a segment's length. */
+static void merge_slivers(const mpm_sim *s, mpm_iface *f, double amin)
+{
+  const size_t nn = (size_t)s->g->nnx * (size_t)s->g->nny;
+  /* a segment with under a quarter of its length of line joins its larger neighbour,
+   * if that one is a whole segment (the bar's edges: the line ends inside it); the
+   * slivers left, the uGIMP tails beyond the bar, hold no line */
+  for (int b = 0; b < f->nseg; b++)
+    f->owner[b] = b;
+  for (int b = 0; b < f->nseg; b++)
+    if (f->A[b] > 0.0 && f->A[b] < amin) {
+      const int lo = b > 0 ? b - 1 : b + 1, hi = b + 1 < f->nseg ? b + 1 : b - 1;
+      const int to = f->A[lo] > f->A[hi] ? lo : hi;
+      if (!(f->A[to] >= amin))
+        continue;
+      for (size_t n = 0; n < nn; n++)
+        if (f->seg[n] == b)
+          f->seg[n] = to;
+      f->A[to] += f->A[b];
+      f->A[b] = 0.0;
+      f->owner[b] = to;
+    }
+}
+
+/* Each segment's strengths, the flaw's by its length lf on the line, and its state. */
+static void strengths(const mpm_scene *sc, mpm_iface *f, const double *lf, double amin)
+{
+  for (int b = 0; b < f->nseg; b++) {
+    const double share = f->A[b] > 0.0 ? fmin(lf[b] / f->A[b], 1.0) : 0.0;
+    f->snf[b] = sc->snf * (1.0 - (1.0 - sc->imp_factor) * share);
+    f->stf[b] = sc->stf * (1.0 - (1.0 - sc->imp_stf_factor) * share);
+    /* a segment with no line in it (beyond the bar's edges) is open from the start */
+    f->state[b] = f->A[b] >= amin ? MPM_SEG_STUCK : MPM_SEG_OPEN;
+  }
+}
+
 mpm_iface *mpm_iface_alloc(mpm_sim *s, double lx, double ly)
 {
   const mpm_scene *sc = &s->sc;
   mpm_grid *g = s->g;
   mpm_fields *fl = g->fld;
-  const size_t nn = (size_t)g->nnx * (size_t)g->nny, nny = (size_t)g->nny;
+  const size_t nn = (size_t)g->nnx * (size_t)g->nny;
   mpm_iface *f = calloc(1, sizeof *f);
   if (!f)
     return NULL;
@@ -155,77 +252,19 @@ mpm_iface *mpm_iface_alloc(mpm_sim *s, double lx, double ly)
     mpm_iface_free(f);
     return NULL;
   }
-  /* An: the line integral of each node's uGIMP weight for a particle of the run's size
-   * centred on the line (midpoint rule) */
-  double lcx = 0.0, lcy = 0.0;
-  mpm_gimp_lc(s, &lcx, &lcy);
-  const int nq = (int)ceil((s1 - s0) / h * IFACE_QUAD);
-  const double ds = (s1 - s0) / nq;
-  for (int i = 0; i < nq; i++) {
-    const double sl = s0 + (i + 0.5) * ds, x = lx + sl * ca, y = ly + sl * sa;
-    mpm_gimp1 gx, gy;
-    mpm_gimp_1d((x - g->ox) * g->ihx, lcx, &gx);
-    mpm_gimp_1d((y - g->oy) * g->ihy, lcy, &gy);
-    size_t n[9];
-    double w[9];
-    mpm_gimp_stencil((size_t)gx.i0 * nny + (size_t)gy.i0, nny, &gx, &gy, n, w);
-    for (int q = 0; q < 9; q++)
-      f->An[n[q]] += w[q] * ds;
-  }
-  /* the split nodes (never a held one: its reaction stays that of one field), and the
-   * segment of each node */
-  const double reach = MPM_IFACE_REACH * h * (fabs(sa) + fabs(ca));
-  for (size_t n = 0; n < nn; n++) {
-    const double X = g->ox + (double)(n / nny) * g->hx, Y = g->oy + (double)(n % nny) * g->h;
-    fl->split[n] = fabs(f->nx * (X - lx) + f->ny * (Y - ly)) <= reach;
-    f->seg[n] = seg_of(f, X, Y);
-  }
-  for (int q = 0; q < s->ngrip; q++)
-    fl->split[s->grip[q]] = 0;
-  for (int q = 0; q < s->nfixx; q++)
-    fl->split[s->fixx[q]] = 0;
-  fl->split[s->fixy] = 0;
-  fl->nsplit = 0;
-  for (size_t n = 0; n < nn; n++)
-    fl->nsplit += fl->split[n];
-  /* the split nodes in node order: fixed for the run, so each step walks this list */
-  if (!(f->node = malloc((size_t)(fl->nsplit > 0 ? fl->nsplit : 1) * sizeof(size_t)))) {
+  line_weights(s, f, s0, s1);
+  if (!split_nodes(s, f)) {
     free(lf);
     mpm_iface_free(f);
     return NULL;
   }
-  for (size_t n = 0; n < nn; n++)
-    if (fl->split[n]) {
-      f->node[f->nnode++] = n;
-      f->A[f->seg[n]] += f->An[n];
-    }
   /* a segment with under a quarter of its length of line joins its larger neighbour,
    * if that one is a whole segment (the bar's edges: the line ends inside it); the
    * slivers left, the uGIMP tails beyond the bar, hold no line */
   const double amin = 0.25 * f->sw;
-  for (int b = 0; b < f->nseg; b++)
-    f->owner[b] = b;
-  for (int b = 0; b < f->nseg; b++)
-    if (f->A[b] > 0.0 && f->A[b] < amin) {
-      const int lo = b > 0 ? b - 1 : b + 1, hi = b + 1 < f->nseg ? b + 1 : b - 1;
-      const int to = f->A[lo] > f->A[hi] ? lo : hi;
-      if (!(f->A[to] >= amin))
-        continue;
-      for (size_t n = 0; n < nn; n++)
-        if (f->seg[n] == b)
-          f->seg[n] = to;
-      f->A[to] += f->A[b];
-      f->A[b] = 0.0;
-      f->owner[b] = to;
-    }
+  merge_slivers(s, f, amin);
   flaw_lengths(s, f, s0, s1, lf);
-  for (int b = 0; b < f->nseg; b++) {
-    const double share = f->A[b] > 0.0 ? fmin(lf[b] / f->A[b], 1.0) : 0.0;
-    f->snf[b] = sc->snf * (1.0 - (1.0 - sc->imp_factor) * share);
-    f->stf[b] = sc->stf * (1.0 - (1.0 - sc->imp_stf_factor) * share);
-    /* a segment with no line in it (beyond the bar's edges) is open from the start */
-    f->state[b] = f->A[b] >= amin ? MPM_SEG_STUCK : MPM_SEG_OPEN;
-  }
+  strengths(sc, f, lf, amin);
   free(lf);
   return f;
 }
@@ -352,8 +391,9 @@ static void advance(mpm_sim *s, mpm_iface *f)
     s->cut = 1;
 }
 
-void mpm_iface_grid(mpm_sim *s, double bfac)
+void mpm_iface_grid(mpm_sim *s)
 {
+  const double bfac = s->scheme->bfac;
   mpm_grid *g = s->g;
   mpm_fields *fl = g->fld;
   mpm_iface *f = fl->ifc;
@@ -515,3 +555,36 @@ int mpm_iface_piece(const mpm_sim *s, int i, double xy[4], double *lam, int *sta
   *state = f->state[o];
   return 1;
 }
+
+/* The interface's split nodes are fixed (mpm_iface_alloc): before each scatter only the
+ * second field's records are zeroed. */
+static void iface_mark(mpm_sim *s)
+{
+  const mpm_grid *g = s->g;
+  memset(g->fld->nd2, 0, (size_t)g->nnx * (size_t)g->nny * sizeof(mpm_node));
+  s->ph->split = g->fld->nsplit != 0;
+}
+
+/* The second field's eq. 4 and contact where open (mpm_fields_grid), then the law. */
+static void iface_grid(mpm_sim *s)
+{
+  if (s->g->fld->nsplit == 0)
+    return;
+  mpm_fields_grid(s);
+  mpm_iface_grid(s);
+}
+
+static void iface_musl(mpm_sim *s)
+{
+  if (s->g->fld->nsplit == 0)
+    return;
+  mpm_fields_musl(s);
+  mpm_iface_musl(s);
+}
+
+/* decohesion.path = interface: two fields split along the line, which carries the law. */
+const mpm_hook mpm_hook_iface = {"interface",
+                                 {[MPM_PH_MARK] = iface_mark,
+                                  [MPM_PH_START] = mpm_fields_start,
+                                  [MPM_PH_GRID] = iface_grid,
+                                  [MPM_PH_MUSL] = iface_musl}};

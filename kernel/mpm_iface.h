@@ -50,7 +50,7 @@ mpm_iface *mpm_iface_alloc(mpm_sim *s, double lx, double ly);
 void mpm_iface_free(mpm_iface *f);
 /* After the second field's eq. 4 at every split node (mpm_fields_grid): the onset, the
  * law's impulses and the ledger. */
-void mpm_iface_grid(mpm_sim *s, double bfac);
+void mpm_iface_grid(mpm_sim *s);
 /* MUSL (mpm_fields_musl): the softening segments' work on the opening v'2 - v'1, their
  * lambda, the segments that open and the cut; then the ledger's B at split nodes, and v'
  * shared where stuck. */

@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "mpm.h"
+#include "mpm_kernel.h"
 
 #define MMS_PI 3.14159265358979323846
 #define MMS_A 0.03

@@ -48,8 +48,10 @@
 #endif
 
 #include "mpm.h"
+#include "mpm_kernel.h"
 #include "mpm_node.h"
 #include "mpm_nodes.h"
+#include "mpm_phase.h"
 
 /* grid.node_mass = limited applies where the strain is taken from v^L (usl, usavg) on
  * bilinear shapes (uGIMP's gradient vanishes with its weight at the support's edge, so
@@ -57,7 +59,7 @@
 int mpm_nodes_limit_on(const mpm_sim *s)
 {
   return s->sc.node_mass == MPM_NODEMASS_LIMITED && s->sc.shape == MPM_SHAPE_LINEAR &&
-         (s->sc.scheme == MPM_SCHEME_USL || s->sc.scheme == MPM_SCHEME_USAVG);
+         mpm_schemes[s->sc.scheme]->bfac > 0.0;
 }
 
 /* The nodal mass limit's constants ("Nodal mass limit"): k_i = ck sum_p V_p a_ip bounds
@@ -195,8 +197,9 @@ static inline __attribute__((always_inline)) void grid_nodes(mpm_sim *s, double 
  * increment (v^L - v at a free node; at a held node what sc.bc says).  bfac: the share
  * of the strain increment taken from v^L after this update (USL 1, USAVG 1/2, MUSL and
  * USF 0), for the ledger's stress power B.  The GIMP path calls this too. */
-void mpm_nodes_update(mpm_sim *s, double bfac)
+void mpm_nodes_update(mpm_sim *s)
 {
+  const double bfac = s->scheme->bfac;
   mpm_grid *g = s->g;
   const double dt = s->sc.dt;
   const int lim = mpm_nodes_limit_on(s);

@@ -11,8 +11,8 @@
  * sums each node's sum_p V_p (|Gx_ip| + |Gy_ip|) into lane qx. */
 int mpm_nodes_limit_on(const mpm_sim *s);
 /* eq. 4 and the reactions: after it lanes (px, py) hold v^L and (fx, fy) the FLIP
- * increment; bfac is the share of the strain taken from v^L (USL 1, USAVG 1/2, else 0). */
-void mpm_nodes_update(mpm_sim *s, double bfac);
+ * increment; the ledger takes the scheme's share bfac of the strain from v^L. */
+void mpm_nodes_update(mpm_sim *s);
 /* USF, USAVG: the projected v_i with the constraints into (fx, fy), before the forces. */
 void mpm_nodes_start_velocity(mpm_sim *s, double frac);
 /* MUSL: v' = q / m with the constraints into (fx, fy). */

@@ -4,6 +4,7 @@
 #include <stdlib.h>
 
 #include "mpm.h"
+#include "mpm_kernel.h"
 
 mpm_particles *mpm_particles_alloc(size_t n)
 {

@@ -9,13 +9,13 @@
 #include <stdio.h>
 
 #include "mpm.h"
+#include "mpm_kernel.h"
 
 /* The scene files' words of the enumerated options, for messages. */
 static const char *word(int v, const char *const *w, int n)
 {
   return v >= 0 && v < n ? w[v] : "?";
 }
-static const char *const SCHEME[] = {"usl", "musl", "usf", "usavg"};
 static const char *const SHAPE[] = {"linear", "gimp"};
 static const char *const FIELDS[] = {"one", "two"};
 static const char *const MOTION[] = {"fixed", "stretch"};
@@ -30,7 +30,7 @@ static const char *iface_rules(const mpm_scene *sc, char *err, size_t len)
     snprintf(err, len, "decohesion.path: interface needs grid.fields = two, grid.shape = gimp, time.scheme = musl and "
              "Model 1 with q = 1, s0 = snf, eta = 0 (here: fields %s, shape %s, scheme %s, model %d, q %g, s0 %g, "
              "snf %g, eta %g; allowed otherwise: path = free or line)", W(sc->fields, FIELDS), W(sc->shape, SHAPE),
-             W(sc->scheme, SCHEME), sc->model, sc->q, sc->s0, sc->snf, sc->eta);
+             mpm_scheme_name(sc->scheme), sc->model, sc->q, sc->s0, sc->snf, sc->eta);
     return "decohesion.path";
   }
   const double a = sc->alpha_deg * (3.14159265358979323846 / 180.0), c = cos(a) / sin(a);
@@ -52,7 +52,7 @@ mpm_status mpm_scene_rules(const mpm_scene *sc, const char **key, char *err, siz
    * passes) */
   if (sc->damping_beta > 0.0 && sc->scheme != MPM_SCHEME_MUSL) {
     snprintf(err, len, "time.damping_beta: %g needs time.scheme = musl (here: %s; allowed: 0 with %s)", sc->damping_beta,
-             W(sc->scheme, SCHEME), W(sc->scheme, SCHEME));
+             mpm_scheme_name(sc->scheme), mpm_scheme_name(sc->scheme));
     k = "time.damping_beta";
   }
   if (!k && sc->model && sc->path == MPM_PATH_IFACE)

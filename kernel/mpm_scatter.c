@@ -15,7 +15,9 @@
 #include <omp.h>
 #endif
 
+#include "mpm_fields.h"
 #include "mpm.h"
+#include "mpm_kernel.h"
 #include "mpm_gimp.h"
 #include "mpm_node.h"
 #include "mpm_nodes.h"

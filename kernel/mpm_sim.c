@@ -13,9 +13,12 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "mpm_fields.h"
 #include "mpm.h"
+#include "mpm_kernel.h"
 #include "mpm_gimp.h"
 #include "mpm_iface.h"
+#include "mpm_phase.h"
 
 const char *mpm_strerror(mpm_status s)
 {
@@ -77,7 +80,7 @@ mpm_status mpm_scene_check(const mpm_scene *sc, char *err, size_t errlen)
   const int n = (int)lround(sqrt((double)sc->ppc));
   if (sc->ppc < 1 || n * n != sc->ppc) BAD("grid.ppc must be a perfect square (1, 4, 9, ...)");
   if (!(sc->margin >= 0.0)) BAD("grid.margin must be >= 0");
-  if (sc->scheme < MPM_SCHEME_USL || sc->scheme > MPM_SCHEME_USAVG) BAD("time.scheme must be usl, musl, usf or usavg");
+  if (sc->scheme < 0 || sc->scheme >= mpm_nschemes) BAD("time.scheme must be usl, musl, usf or usavg");
   if (sc->bc < MPM_BC_LAGRANGIAN || sc->bc > MPM_BC_CONSISTENT) BAD("grid.bc must be lagrangian, both or consistent");
   if (sc->node_mass != MPM_NODEMASS_LUMPED && sc->node_mass != MPM_NODEMASS_LIMITED) BAD("grid.node_mass must be lumped or limited");
   if (sc->head != MPM_HEAD_RIGID && sc->head != MPM_HEAD_NONE) BAD("loading.head must be rigid or none");
@@ -131,34 +134,45 @@ void mpm_sim_free(mpm_sim *s)
   free(s->rowsep);
   free(s->led_part);
   mpm_band_free(s->band);
+  free(s->ph);
   free(s);
 }
 
-mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char *err, size_t errlen)
+/* The run's layout: the bar's cells, the grid's padding, the particle counts, the grip. */
+typedef struct {
+  double h;
+  int cx, cy, pad, padl, n1, grip0, ngrip, nfixcol;
+  size_t nbar, nhead, np;
+} layout;
+
+static layout layout_of(const mpm_scene *sc)
 {
-  *out = NULL;
-  mpm_status st = mpm_scene_check(sc, err, errlen);
-  if (st != MPM_OK)
-    return st;
-  mpm_sim *s = calloc(1, sizeof *s);
-  if (!s)
-    return MPM_ENOMEM;
-  s->sc = *sc;
-  s->vgrip = sc->speed;
-  s->ctl_D0 = INFINITY; /* dissipation control: the target starts at D (mpm_control.c) */
-  const double h = sc->h;
-  const int cx = (int)whole_cells(sc->L, h), cy = (int)whole_cells(sc->H, h);
+  layout l;
+  const double h = l.h = sc->h;
+  l.cx = (int)whole_cells(sc->L, h);
+  l.cy = (int)whole_cells(sc->H, h);
   /* The grid is only as large as the motion needs: margin all round (at least one
    * cell), and on the left the grip's travel to end_delta besides. */
-  const int pad = 1 + (int)ceil(sc->margin / h - 1e-9);
-  const int padl = pad + MPM_HEAD_CELLS + (int)ceil(sc->end_delta / h - 1e-9);
-  s->g = mpm_grid_alloc(padl + cx + pad, cy + 2 * pad, -padl * h, -pad * h, h);
-  const int n1 = (int)lround(sqrt((double)sc->ppc));
-  const size_t nbar = (size_t)cx * (size_t)cy * (size_t)sc->ppc;
-  const size_t nhead = sc->head == MPM_HEAD_NONE ? 0 : (size_t)MPM_HEAD_CELLS * (size_t)cy * (size_t)sc->ppc;
-  const size_t np = nbar + nhead;
-  const int grip0 = sc->head == MPM_HEAD_NONE ? padl : pad; /* first gripped node column */
-  const int ngrip = (padl - grip0 + 1) * (cy + 1);
+  l.pad = 1 + (int)ceil(sc->margin / h - 1e-9);
+  l.padl = l.pad + MPM_HEAD_CELLS + (int)ceil(sc->end_delta / h - 1e-9);
+  l.n1 = (int)lround(sqrt((double)sc->ppc));
+  l.nbar = (size_t)l.cx * (size_t)l.cy * (size_t)sc->ppc;
+  l.nhead = sc->head == MPM_HEAD_NONE ? 0 : (size_t)MPM_HEAD_CELLS * (size_t)l.cy * (size_t)sc->ppc;
+  l.np = l.nbar + l.nhead;
+  l.grip0 = sc->head == MPM_HEAD_NONE ? l.padl : l.pad; /* first gripped node column */
+  l.ngrip = (l.padl - l.grip0 + 1) * (l.cy + 1);
+  /* uGIMP: the support of the bar's last particles reaches the node column beyond
+   * x = L, which is held too (the fixed support is a wall, like the head on the left). */
+  l.nfixcol = sc->shape == MPM_SHAPE_GIMP ? 2 : 1;
+  return l;
+}
+
+/* The grid and the arrays; 0 if one could not be made (mpm_sim_free frees the rest). */
+static int alloc_arrays(mpm_sim *s, const mpm_scene *sc, const layout *l, int nthreads)
+{
+  const int cy = l->cy, ngrip = l->ngrip, nfixcol = l->nfixcol;
+  const size_t nhead = l->nhead, np = l->np;
+  s->g = mpm_grid_alloc(l->padl + l->cx + l->pad, cy + 2 * l->pad, -l->padl * l->h, -l->pad * l->h, l->h);
   mpm_threads_init(&s->thr, nthreads, np);
   s->nthreads = s->thr.use;
   s->p = mpm_particles_alloc(np);
@@ -171,9 +185,6 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
   s->defer = calloc((size_t)s->thr.nmax, sizeof *s->defer);
   s->head = malloc((nhead ? nhead : 1) * sizeof *s->head);
   s->grip = malloc(sizeof(int) * (size_t)ngrip);
-  /* uGIMP: the support of the bar's last particles reaches the node column beyond
-   * x = L, which is held too (the fixed support is a wall, like the head on the left). */
-  const int nfixcol = sc->shape == MPM_SHAPE_GIMP ? 2 : 1;
   s->fixx = malloc(sizeof(int) * (size_t)(nfixcol * (cy + 1)));
   s->nrow = cy * (int)lround(sqrt((double)sc->ppc));
   s->rowsep = malloc((size_t)s->nrow);
@@ -197,12 +208,14 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
       ok = (s->g->fld = mpm_fields_alloc((size_t)s->g->nnx * (size_t)s->g->nny, sin(a), -cos(a))) != NULL;
     }
   }
-  if (!ok) {
-    mpm_sim_free(s);
-    snprintf(err, errlen, "out of memory for %zu particles", np);
-    return MPM_ENOMEM;
-  }
+  return ok;
+}
 
+/* Le (decohesion.Le); ROW and ZONE: the band's rows as well.  0 if out of memory. */
+static int le_setup(mpm_sim *s, const mpm_scene *sc, const layout *l, double *Le_out)
+{
+  const double h = l->h;
+  const int n1 = l->n1;
   /* Le = V_e / A_d (eq. 41): for a square of side a crossed by a line at alpha,
    * a * max(|sin a|, |cos a|).  a = h (cell) or h / n (particle), docs/model.md sec. 6. */
   const double a = sc->alpha_deg * (3.14159265358979323846 / 180.0);
@@ -218,12 +231,15 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
   /* ROW: each row starts from the staircase length and then measures its own
    * (mpm_band.c); a row is dy = h / n high and its particles dx = h / n wide.  ZONE: the
    * same, counting only the particles within 2 h + dx of the row's lead. */
-  if (rows && !(s->band = mpm_band_alloc(s->nrow, s->nstrip, h / n1, sc->le_factor * (h / n1) * fabs(sin(a)), Le,
-                                         sc->le_mode == MPM_LE_ZONE ? 2.0 * h + h / n1 : 0.0))) {
-    mpm_sim_free(s);
-    snprintf(err, errlen, "out of memory for the rows' Le");
-    return MPM_ENOMEM;
-  }
+  *Le_out = Le;
+  return !rows || (s->band = mpm_band_alloc(s->nrow, s->nstrip, h / n1, sc->le_factor * (h / n1) * fabs(sin(a)), Le,
+                                         sc->le_mode == MPM_LE_ZONE ? 2.0 * h + h / n1 : 0.0)) != NULL;
+}
+
+/* The bar, its imperfection, the head (the loading machine), debris and the bar off the
+ * crack's path. */
+static void materials(mpm_sim *s, const mpm_scene *sc, double Le)
+{
   mpm_material_init(&s->mat[MPM_MAT_BAR], sc, sc->snf, Le);
   mpm_material_init(&s->mat[MPM_MAT_IMP], sc, sc->snf * sc->imp_factor, Le);
   s->mat[MPM_MAT_IMP].stf *= sc->imp_stf_factor; /* a shear-governed scene's imperfection */
@@ -241,11 +257,13 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
   s->mat[MPM_MAT_ELASTIC] = s->mat[MPM_MAT_BAR];
   s->mat[MPM_MAT_ELASTIC].model = MPM_DCOH_NONE; /* fn = ft = 0: the elastic trial always holds */
   mpm_material_derive(&s->mat[MPM_MAT_ELASTIC]);
-  s->nhead = nhead;
+}
 
-  /* Particles at the centres of an n x n subdivision of each cell.  The velocity starts
-   * as the quasi-static field of the loading, vx = -speed (L - X) / L, so the grip does
-   * not launch a start-up wave (a decision; the paper does not say). */
+/* The bar's particles; returns the imperfection's (the particle nearest imp_x, imp_y). */
+static size_t place_bar(mpm_sim *s, const mpm_scene *sc, const layout *l)
+{
+  const double h = l->h;
+  const int n1 = l->n1, cx = l->cx, cy = l->cy;
   mpm_particles *p = s->p;
   const double d = h / n1, mp = sc->rho * d * d;
   for (int i = 0; i < 3; i++)
@@ -255,7 +273,6 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
   size_t k = 0;
   double best = INFINITY;
   size_t imp = 0;
-  double ifx = 0.0, ify = 0.0; /* decohesion.path = interface: the line's point */
   for (int j = 0; j < cy * n1; j++)
     for (int i = 0; i < cx * n1; i++, k++) {
       p->x[k] = p->x0[k] = (i + 0.5) * d;
@@ -272,6 +289,16 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
         imp = k;
       }
     }
+  return imp;
+}
+
+/* The imperfection's material and the crack's path (decohesion.path); MPM_EINVAL when
+ * share = line cannot be laid on a node column. */
+static mpm_status mark_paths(mpm_sim *s, const mpm_scene *sc, const layout *l, size_t imp, char *err, size_t errlen)
+{
+  mpm_particles *p = s->p;
+  const double h = l->h, d = h / l->n1, a = sc->alpha_deg * (3.14159265358979323846 / 180.0);
+  const size_t nbar = l->nbar;
   if (sc->model && (sc->imp_factor < 1.0 || sc->imp_stf_factor < 1.0)) {
     p->mat[imp] = MPM_MAT_IMP;
     /* imperfection.size = cell: the whole cell of that particle (the same lattice cell
@@ -295,8 +322,7 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
   if (sc->model && sc->path == MPM_PATH_IFACE) {
     for (size_t q = 0; q < nbar; q++)
       p->mat[q] = MPM_MAT_ELASTIC;
-    ifx = p->x0[imp];
-    ify = p->y0[imp];
+    const double ifx = p->x0[imp];
     /* share = line: the crack, the edge between the two sides' particles, must lie on a
      * node column.  At alpha 90 the flaw's particle column lies on the line and joins the
      * first side (mpm_iface_side), so the crack runs along that column's far edge. */
@@ -306,12 +332,21 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
                "decohesion.share = line: the interface's crack at x = %g (the edge of the flaw's particle column at x = %g) is "
                "not on a node column of h = %g; move imperfection.x (now %g) so that it is, or use share = stick",
                xc, ifx, h, sc->imp_x);
-      mpm_sim_free(s);
       return MPM_EINVAL;
     }
   }
+  return MPM_OK;
+}
+
+static void place_head(mpm_sim *s, const mpm_scene *sc, const layout *l)
+{
+  mpm_particles *p = s->p;
+  const double d = l->h / l->n1, mp = s->mat[MPM_MAT_BAR].mp;
+  const int n1 = l->n1, cy = l->cy;
+  const size_t nbar = l->nbar, nhead = l->nhead;
   /* The head: the same lattice continued MPM_HEAD_CELLS cells beyond x = 0, moving with
    * the grip. */
+  size_t k = nbar;
   for (int j = 0; nhead && j < cy * n1; j++)
     for (int i = -MPM_HEAD_CELLS * n1; i < 0; i++, k++) {
       p->x[k] = p->x0[k] = (i + 0.5) * d;
@@ -321,7 +356,12 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
       p->V[k] = d * d;
       p->mat[k] = MPM_MAT_HEAD;
     }
+}
 
+static void bc_nodes(mpm_sim *s, const layout *l)
+{
+  const int grip0 = l->grip0, padl = l->padl, pad = l->pad, cy = l->cy, cx = l->cx, nfixcol = l->nfixcol;
+  const int ngrip = l->ngrip;
   /* Boundary nodes: every column from the head's travel to x = 0 is gripped (rows
    * 0..H); the column x = L is fixed in x, its mid-height node in y as well. */
   const mpm_grid *g = s->g;
@@ -336,18 +376,54 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
   s->ngrip = ngrip;
   s->nfixx = nfixcol * (cy + 1);
   s->fixy = s->fixx[cy / 2];
-  if (sc->model && sc->path == MPM_PATH_IFACE && !(s->g->fld->ifc = mpm_iface_alloc(s, ifx, ify))) {
+}
+
+/* Fails with MPM_ENOMEM and a message. */
+static mpm_status nomem(mpm_sim *s, const char *what, char *err, size_t errlen)
+{
+  mpm_sim_free(s);
+  snprintf(err, errlen, "out of memory for %s", what);
+  return MPM_ENOMEM;
+}
+
+mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char *err, size_t errlen)
+{
+  *out = NULL;
+  mpm_status st = mpm_scene_check(sc, err, errlen);
+  if (st != MPM_OK)
+    return st;
+  mpm_sim *s = calloc(1, sizeof *s);
+  if (!s)
+    return MPM_ENOMEM;
+  s->sc = *sc;
+  s->vgrip = sc->speed;
+  s->ctl_D0 = INFINITY; /* dissipation control: the target starts at D (mpm_control.c) */
+  const layout l = layout_of(sc);
+  if (!alloc_arrays(s, sc, &l, nthreads)) {
     mpm_sim_free(s);
-    snprintf(err, errlen, "out of memory for the interface's arrays");
+    snprintf(err, errlen, "out of memory for %zu particles", l.np);
     return MPM_ENOMEM;
   }
-  if (sc->damping > 0.0 && !(s->damp = mpm_damping_alloc(s))) {
+  double Le;
+  if (!le_setup(s, sc, &l, &Le))
+    return nomem(s, "the rows' Le", err, errlen);
+  materials(s, sc, Le);
+  s->nhead = l.nhead;
+  const size_t imp = place_bar(s, sc, &l);
+  if ((st = mark_paths(s, sc, &l, imp, err, errlen)) != MPM_OK) {
     mpm_sim_free(s);
-    snprintf(err, errlen, "out of memory for the damping's node arrays");
-    return MPM_ENOMEM;
+    return st;
   }
-  for (size_t i = nbar; i < np; i++)
-    s->led.KE_head0 += 0.5 * p->m[i] * (p->vx[i] * p->vx[i] + p->vy[i] * p->vy[i]);
+  place_head(s, sc, &l);
+  bc_nodes(s, &l);
+  if (sc->model && sc->path == MPM_PATH_IFACE && !(s->g->fld->ifc = mpm_iface_alloc(s, s->p->x0[imp], s->p->y0[imp])))
+    return nomem(s, "the interface's arrays", err, errlen);
+  if (sc->damping > 0.0 && !(s->damp = mpm_damping_alloc(s)))
+    return nomem(s, "the damping's node arrays", err, errlen);
+  if (mpm_step_setup(s) != MPM_OK)
+    return nomem(s, "the step's phases", err, errlen);
+  for (size_t i = l.nbar; i < l.np; i++)
+    s->led.KE_head0 += 0.5 * s->p->m[i] * (s->p->vx[i] * s->p->vx[i] + s->p->vy[i] * s->p->vy[i]);
   mpm_sim_sort(s);
   *out = s;
   return MPM_OK;
@@ -443,4 +519,26 @@ void mpm_sim_energy(const mpm_sim *s, mpm_energy *e)
   e->L_contact = s->led.L_contact;
   e->L_debris = s->led.L_debris;
   e->L_damp = s->led.L_damp;
+}
+
+void mpm_sim_threads(const mpm_sim *s, mpm_threads_info *out)
+{
+  out->nmax = s->thr.nmax;
+  out->steps_multi = s->thr.steps_multi;
+  out->nprobe = s->thr.nprobe;
+  out->nbusy = s->thr.nbusy;
+}
+
+size_t mpm_sim_bytes_per_particle(const mpm_sim *s)
+{
+  const size_t np = s->p->n, nn = (size_t)s->g->nnx * (size_t)s->g->nny;
+  const size_t ncell = (size_t)s->g->ncx * (size_t)s->g->ncy;
+  const size_t particles = np * (16 * sizeof(double) + 2);         /* mpm_particles  */
+  const size_t sorting = np * (sizeof(double) + 1 + 2 * sizeof(uint32_t)) + (ncell + 1) * sizeof(size_t) +
+                         ((size_t)s->nstrip + 1) * sizeof(size_t);
+  const size_t fields = s->g->fld ? nn * (sizeof(mpm_node) + 1 + 3 * sizeof(double)) : 0;
+  const size_t grid = nn * sizeof(mpm_node) + fields;
+  const size_t other = s->nhead * sizeof(uint32_t) + (size_t)s->thr.nmax * sizeof(mpm_defer) +
+                       (size_t)(s->ngrip + s->nfixx) * sizeof(int);
+  return (particles + sorting + grid + other + np / 2) / np;
 }

@@ -23,6 +23,7 @@
 #include <string.h>
 
 #include "mpm.h"
+#include "mpm_kernel.h"
 
 _Static_assert(MPM_STRIP >= 3, "strips must be 3 columns or wider for the colouring to be safe");
 

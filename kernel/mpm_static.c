@@ -30,6 +30,7 @@
 #include <string.h>
 #include <time.h>
 
+#include "mpm_kernel.h"
 #include "mpm_static.h"
 
 #define MPM_QS_FTOL 1e-9

@@ -18,6 +18,7 @@
 #include <string.h>
 #include <time.h>
 
+#include "mpm_kernel.h"
 #include "mpm_shape.h"
 #include "mpm_static.h"
 

@@ -31,6 +31,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "mpm_kernel.h"
+#include "mpm_fields.h"
 #include "mpm_iface.h"
 #include "mpm_static.h"
 

@@ -17,6 +17,7 @@
 #include <gsl/gsl_linalg.h>
 #include <suitesparse/umfpack.h>
 
+#include "mpm_kernel.h"
 #include "mpm_static.h"
 
 #define MPM_LIN_BAND_MAX 160 /* bands up to this many unknowns either side of the diagonal */

@@ -1,30 +1,19 @@
 /*
- * mpm_step.c - one explicit MPM step, update-stress-last as in the paper
- * (sec. 2, eqs. 2-7), with the boundary conditions, their reactions and the energy
- * ledger.
+ * mpm_step.c - one explicit MPM step as a list of named phases (mpm_phase.h): the start
+ * (threads, grip, cut, grid laid, sort), the scatter, the scheme's phase before the
+ * node update, the node update, the scheme's gather, the end (head, ledger).  The
+ * scheme (mpm_scheme_*.c) and the optional physics' hooks are chosen once, at setup
+ * (mpm_step_setup); the step tests no method option.  The paper's USL (sec. 2):
  *
  *   p2g   m_i, (m v)_i, f_i = -sum_p V_p sigma_p . G_ip            eqs. 2, 3
  *   grid  v_i = (m v)_i / m_i,  v^L_i = v_i + dt f_i / m_i; BCs      eq. 4
  *   g2p   x_p += dt sum v^L_i N_ip,  v_p += sum (v^L_i - v_i) N_ip    eqs. 5, 6
  *         de_p = dt sym(sum v^L_i (x) G_ip), then the decohesion update  eq. 7
  *
- * MUSL (time.scheme = musl) differs only in the strain: the updated particle
- * velocities are projected to the grid again, v'_i = sum m_p v_p N_ip / m_i (BCs
- * applied), and de_p = dt sym(sum v'_i (x) G_ip).  v'_i is a weighted mean of particle
- * velocities, so a node that a particle barely touches (tiny m_i, finite f_i) cannot
- * inject a huge strain: the cell-crossing instability of USL.
- *
  * N and G are taken at the start of the step in every pass (mpm_shape.h).  The
- * scatters are mpm_scatter.c's (bilinear) and mpm_gimp.c's (grid.shape = gimp) and the gathers below take the uGIMP
- * branch (3 x 3 nodes); with grid.fields = two, once the band has cut the bar
- * (mpm_sim_cut), the passes are the instantiations with the two-field test, and
- * mpm_fields.c marks the split nodes before the scatter and updates the second field
- * and the contact after the node update (mpm_nodes.c).
- *
- * USF (time.scheme = usf) takes the strain from the projected v_i first,
- * de_p = dt sym(sum v_i (x) G_ip), updates the stress, scatters the forces of the new
- * stress, and then moves the particles with v^L; USAVG takes half the strain increment
- * as USF before the forces and half as USL after them (Bardenhagen 2002, Nairn 2003).
+ * scatters are mpm_scatter.c's (bilinear) and mpm_gimp.c's (uGIMP); the gathers below
+ * are one loop instantiated per pass, shape and field count (with two fields, once
+ * nodes are split, each stencil is tested for split nodes).
  *
  * Boundary conditions, the node update of eq. 4 and the nodal mass limit: mpm_nodes.c.
  *
@@ -53,16 +42,20 @@
 #include <math.h>
 #include <stddef.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <time.h>
 #ifdef _OPENMP
 #include <omp.h>
 #endif
 
+#include "mpm_fields.h"
 #include "mpm.h"
+#include "mpm_kernel.h"
 #include "mpm_gimp.h"
 #include "mpm_node.h"
 #include "mpm_nodes.h"
+#include "mpm_phase.h"
 #include "mpm_scatter.h"
 #include "mpm_shape.h"
 
@@ -104,19 +97,20 @@ static int name_nonfinite(const mpm_sim *s, char *err, size_t errlen)
 }
 
 
-typedef struct {
+struct g2p_acc {
   long soften, separate, bracketed;
   double tconst;   /* seconds in the full constitutive update */
   int bad;         /* the update returned non-finite */
   int resort;      /* a particle drifted out of its strip's safe range */
   size_t bad_k;
-} g2p_acc;
+};
 
 /* The full decohesion update (sec. 4) of the particles in the thread's list, in list
  * order, off the hot loop; one timing per batch.  Returns the ledger's
  * sum m sigma_new : deps over them (ledger_step). */
-static __attribute__((noinline)) double constitutive_flush(const mpm_sim *s, int q, mpm_particles *restrict p,
-                                                            mpm_defer *d, mpm_dwork *dw, g2p_acc *acc)
+static inline __attribute__((always_inline)) double flush_impl(const mpm_sim *s, int q, mpm_particles *restrict p,
+                                                                mpm_defer *d, mpm_dwork *dw, g2p_acc *acc,
+                                                                const int rows)
 {
   if (d->n == 0)
     return 0.0;
@@ -128,7 +122,7 @@ static __attribute__((noinline)) double constitutive_flush(const mpm_sim *s, int
     mpm_band *b = s->band;
     mpm_material mrow;
     int j = 0;
-    if (b && m->model != MPM_DCOH_NONE && !p->sep[k]) { /* Le = row: this row's measured length */
+    if (rows && m->model != MPM_DCOH_NONE && !p->sep[k]) { /* Le = row: this row's measured length */
       j = mpm_band_row(b, p->y0[k]);
       mrow = *m;
       mrow.Le = mpm_band_le(b, j);
@@ -156,7 +150,7 @@ static __attribute__((noinline)) double constitutive_flush(const mpm_sim *s, int
     p->wcoh[k] += info.w * p->V[k] / (info.path == MPM_DPATH_SOFTEN ? m->Le : m->Lopen);
     const double dl = fmin(o.lam, 1.0) - fmin(in.lam, 1.0);
     double dd = 0.0;
-    if (!b) {
+    if (!rows) {
       dd = m->U0 * dl * p->V[k] / m->Le;
     } else if (m == &mrow) {
       /* Le = row: a particle's dissipation ends where it separates, the rest of its
@@ -181,6 +175,19 @@ static __attribute__((noinline)) double constitutive_flush(const mpm_sim *s, int
   d->n = 0;
   acc->tconst += wall() - t0;
   return qs;
+}
+
+/* decohesion.Le = row (mpm_band.c) or any other Le: chosen once (mpm_step_setup). */
+static __attribute__((noinline)) double flush_plain(const mpm_sim *s, int q, mpm_particles *p, mpm_defer *d,
+                                                     mpm_dwork *dw, g2p_acc *acc)
+{
+  return flush_impl(s, q, p, d, dw, acc, 0);
+}
+
+static __attribute__((noinline)) double flush_rows(const mpm_sim *s, int q, mpm_particles *p, mpm_defer *d,
+                                                    mpm_dwork *dw, g2p_acc *acc)
+{
+  return flush_impl(s, q, p, d, dw, acc, 1);
 }
 
 /* What a gather pass does (g2p_strip_impl): move the particles (eq. 5), update their
@@ -347,7 +354,7 @@ static inline __attribute__((always_inline)) void g2p_strip_impl(mpm_sim *s, int
       }
     }
     d->n = nd_;
-    qs += constitutive_flush(s, q, s->p, d, dw, acc);
+    qs += s->ph->flush(s, q, s->p, d, dw, acc);
   }
   if ((mode & G2P_X) && xlo <= xhi) {
     const double clo_x = (xlo - ox) * ihx + shift, chi_x = (xhi - ox) * ihx + shift;
@@ -358,41 +365,52 @@ static inline __attribute__((always_inline)) void g2p_strip_impl(mpm_sim *s, int
   s->led_part[q][MPM_LED_BV] += bv;
 }
 
-/* One copy of the loop per pass kind and shape, so that each reads only the lanes it
- * needs and the bilinear USL loop stays as it was. */
-static void g2p_strip(mpm_sim *s, int q, int mode, double frac, mpm_defer *d, mpm_dwork *dw, g2p_acc *acc)
-{
-  if (s->g->fld && s->g->fld->nsplit) { /* the loops with the two-field test, once a band is cut */
-    const int gimp = s->sc.shape == MPM_SHAPE_GIMP;
-    switch (mode) {
-    case G2P_USL: g2p_strip_impl(s, q, G2P_USL | G2P_TWO, gimp, frac, d, dw, acc); break;
-    case G2P_MUSL: g2p_strip_impl(s, q, G2P_MUSL | G2P_TWO, gimp, 1.0, d, dw, acc); break;
-    case G2P_STRAIN_F: g2p_strip_impl(s, q, G2P_STRAIN_F | G2P_TWO, gimp, frac, d, dw, acc); break;
-    case G2P_MOVE: g2p_strip_impl(s, q, G2P_MOVE | G2P_TWO, gimp, 1.0, d, dw, acc); break;
-    }
-    return;
+/* One copy of the loop per pass kind and shape, with and without the two-field test,
+ * so that each reads only the lanes it needs and the bilinear USL loop stays as it
+ * was; mpm_step_setup picks the shape's row once. */
+#define G2P_FN(name, mode, gimp, fr)                                                                   \
+  static void name(mpm_sim *s, int q, double frac, mpm_defer *d, mpm_dwork *dw, g2p_acc *acc)          \
+  {                                                                                                    \
+    (void)frac;                                                                                        \
+    g2p_strip_impl(s, q, mode, gimp, fr, d, dw, acc);                                                  \
   }
-  if (s->sc.shape == MPM_SHAPE_GIMP) {
-    switch (mode) {
-    case G2P_USL: g2p_strip_impl(s, q, G2P_USL, 1, frac, d, dw, acc); break;
-    case G2P_MUSL: g2p_strip_impl(s, q, G2P_MUSL, 1, 1.0, d, dw, acc); break;
-    case G2P_STRAIN_F: g2p_strip_impl(s, q, G2P_STRAIN_F, 1, frac, d, dw, acc); break;
-    case G2P_MOVE: g2p_strip_impl(s, q, G2P_MOVE, 1, 1.0, d, dw, acc); break;
-    }
-    return;
+G2P_FN(g2p_lin_usl, G2P_USL, 0, frac)
+G2P_FN(g2p_lin_musl, G2P_MUSL, 0, 1.0)
+G2P_FN(g2p_lin_strain, G2P_STRAIN_F, 0, frac)
+G2P_FN(g2p_lin_move, G2P_MOVE, 0, 1.0)
+G2P_FN(g2p_gimp_usl, G2P_USL, 1, frac)
+G2P_FN(g2p_gimp_musl, G2P_MUSL, 1, 1.0)
+G2P_FN(g2p_gimp_strain, G2P_STRAIN_F, 1, frac)
+G2P_FN(g2p_gimp_move, G2P_MOVE, 1, 1.0)
+#undef G2P_FN
+/* The two-field loops take the shape at run time, once per strip: a constant shape
+ * there lets the compiler contract the sums otherwise (FMA), and a45's load.csv moved
+ * in the last digit. */
+#define G2P_FN2(name, mode, fr)                                                                        \
+  static void name(mpm_sim *s, int q, double frac, mpm_defer *d, mpm_dwork *dw, g2p_acc *acc)          \
+  {                                                                                                    \
+    (void)frac;                                                                                        \
+    g2p_strip_impl(s, q, mode, s->sc.shape == MPM_SHAPE_GIMP, fr, d, dw, acc);                         \
   }
-  switch (mode) {
-  case G2P_USL: g2p_strip_impl(s, q, G2P_USL, 0, frac, d, dw, acc); break;
-  case G2P_MUSL: g2p_strip_impl(s, q, G2P_MUSL, 0, 1.0, d, dw, acc); break;
-  case G2P_STRAIN_F: g2p_strip_impl(s, q, G2P_STRAIN_F, 0, frac, d, dw, acc); break;
-  case G2P_MOVE: g2p_strip_impl(s, q, G2P_MOVE, 0, 1.0, d, dw, acc); break;
-  }
-}
+G2P_FN2(g2p_two_usl, G2P_USL | G2P_TWO, frac)
+G2P_FN2(g2p_two_musl, G2P_MUSL | G2P_TWO, 1.0)
+G2P_FN2(g2p_two_strain, G2P_STRAIN_F | G2P_TWO, frac)
+G2P_FN2(g2p_two_move, G2P_MOVE | G2P_TWO, 1.0)
+#undef G2P_FN2
 
-/* A gather pass over all strips (mode: G2P_*). */
-static mpm_status g2p(mpm_sim *s, int mode, double frac, char *err, size_t errlen)
+/* [two fields][shape][pass] */
+static const mpm_g2p_fn G2P_TAB[2][2][MPM_G2P_N] = {
+  {{g2p_lin_usl, g2p_lin_musl, g2p_lin_strain, g2p_lin_move},
+   {g2p_gimp_usl, g2p_gimp_musl, g2p_gimp_strain, g2p_gimp_move}},
+  {{g2p_two_usl, g2p_two_musl, g2p_two_strain, g2p_two_move},
+   {g2p_two_usl, g2p_two_musl, g2p_two_strain, g2p_two_move}},
+};
+
+/* A gather pass over all strips (pass: MPM_G2P_*). */
+static mpm_status g2p(mpm_sim *s, int pass, double frac, char *err, size_t errlen)
 {
   g2p_acc tot = {0, 0, 0, 0.0, 0, 0, 0};
+  const mpm_g2p_fn fn = s->ph->g2p[s->ph->split][pass];
 #ifdef _OPENMP
 #pragma omp parallel num_threads(s->nthreads)
 #endif
@@ -404,7 +422,7 @@ static mpm_status g2p(mpm_sim *s, int mode, double frac, char *err, size_t errle
 #pragma omp for schedule(dynamic, 1)
 #endif
     for (int q = 0; q < s->nstrip; q++)
-      g2p_strip(s, q, mode, frac, d, dw, &acc);
+      fn(s, q, frac, d, dw, &acc);
 #ifdef _OPENMP
 #pragma omp critical
 #endif
@@ -503,43 +521,6 @@ static void head_rigid(mpm_sim *s)
   L->W_head = ke1 - L->KE_head0 + L->head_reset;
 }
 
-/* Lays the background grid for this step (MPM_GRID_STRETCH: along the bar's mean
- * stretch, so that the gripped column stays on the bar's left end, the fixed one on its
- * right end). */
-static void lay_grid(mpm_sim *s)
-{
-  if (s->sc.grid_motion != MPM_GRID_STRETCH || s->cut) {
-    /* once the band has cut the bar there is no mean stretch to follow: the grid stays,
-     * and with grid.weights = laid the particles are taken where they are from now on
-     * (they moved by their offsets from the laid places: sort them again) */
-    if (s->sc.weights == MPM_WEIGHTS_LAID && !s->laid_done) {
-      s->laid_done = 1;
-      s->resort = 1;
-    }
-    return;
-  }
-  mpm_grid *g = s->g;
-  const double L = s->sc.L, stretch = 1.0 + mpm_sim_delta(s) / L;
-  g->hx = s->sc.h * stretch;
-  g->ihx = 1.0 / g->hx;
-  g->ox = L + (s->grid_ox0 - L) * stretch;
-  if (s->sc.weights == MPM_WEIGHTS_LAID) {
-    /* each bar particle to its laid place carried by the stretch (mpm.h, grid.weights);
-     * the rigid head keeps its own place (it follows the grip, not the stretch) */
-    mpm_particles *p = s->p;
-    for (size_t k = 0; k < p->n; k++) {
-      if (p->mat[k] == MPM_MAT_HEAD)
-        continue;
-      const double xl = L + (p->x0[k] - L) * stretch;
-      p->wdx[k] = p->x[k] - xl;
-      p->wdy[k] = p->y[k] - p->y0[k];
-      p->x[k] = xl;
-      p->y[k] = p->y0[k];
-    }
-    s->laid = 1;
-  }
-}
-
 /* grid.weights = laid, when a step ends (mpm_sim_step, failed or not): the step moved
  * each particle from its laid place; it is where it was plus that move (the next
  * lay_grid writes the offsets afresh) */
@@ -609,8 +590,7 @@ static int scatter_zeroed(mpm_sim *s)
 {
   mpm_grid *g = s->g;
   memset(g->nd, 0, (size_t)g->nnx * (size_t)g->nny * sizeof(mpm_node));
-  if (g->fld)
-    mpm_fields_mark(s);
+  mpm_phase_hooks(s, MPM_PH_MARK);
   return mpm_scatter(s, 0);
 }
 
@@ -642,88 +622,101 @@ static mpm_status p2g(mpm_sim *s, char *err, size_t errlen)
   return st;
 }
 
-/* A gather pass, timed apart from the constitutive updates inside it. */
-static mpm_status g2p_timed(mpm_sim *s, int mode, double frac, char *err, size_t errlen)
+void mpm_phase_time(mpm_sim *s, int which)
 {
-  const double t0 = wall(), c0 = s->time_split[MPM_T_CONST];
-  const mpm_status st = g2p(s, mode, frac, err, errlen);
-  s->time_split[MPM_T_G2P] += (wall() - t0) - (s->time_split[MPM_T_CONST] - c0);
+  const double t = wall();
+  s->time_split[which] += t - s->ph->tmark;
+  s->ph->tmark = t;
+}
+
+mpm_status mpm_phase_none(mpm_sim *s, char *err, size_t errlen)
+{
+  (void)s;
+  (void)err;
+  (void)errlen;
+  return MPM_OK;
+}
+
+mpm_status mpm_phase_p2g(mpm_sim *s, char *err, size_t errlen)
+{
+  const mpm_status st = p2g(s, err, errlen);
+  mpm_phase_time(s, MPM_T_P2G);
   return st;
 }
 
-static mpm_status step(mpm_sim *s, char *err, size_t errlen)
+/* A gather pass, timed apart from the constitutive updates inside it. */
+mpm_status mpm_phase_g2p(mpm_sim *s, int pass, double frac, char *err, size_t errlen)
+{
+  const double c0 = s->time_split[MPM_T_CONST];
+  const mpm_status st = g2p(s, pass, frac, err, errlen);
+  mpm_phase_time(s, MPM_T_G2P);
+  s->time_split[MPM_T_G2P] -= s->time_split[MPM_T_CONST] - c0;
+  return st;
+}
+
+mpm_status mpm_phase_strain_first(mpm_sim *s, char *err, size_t errlen)
+{
+  const double frac = s->scheme->start_frac;
+  mpm_nodes_start_velocity(s, frac);
+  mpm_phase_hooks(s, MPM_PH_START);
+  mpm_phase_time(s, MPM_T_GRID);
+  mpm_status st = mpm_phase_g2p(s, MPM_G2P_STRAIN_F, frac, err, errlen);
+  if (st == MPM_OK)
+    st = mpm_phase_p2g(s, err, errlen);
+  return st;
+}
+
+/* The step's start: the thread count, the grip's speed, the cut, the grid laid, the
+ * particles sorted (every MPM_SORT_EVERY steps, or when one left its strip's range),
+ * the ledger's step sums zeroed. */
+static void begin(mpm_sim *s)
 {
   mpm_threads_tick(s);
   mpm_control_step(s);
   mpm_sim_cut(s);
-  lay_grid(s);
-  double t0 = wall(), t1;
+  mpm_phase_hooks(s, MPM_PH_LAY);
+  s->ph->tmark = wall();
   if (s->resort || s->step % MPM_SORT_EVERY == 0) {
     mpm_sim_sort(s);
-    t1 = wall();
-    s->time_split[MPM_T_SORT] += t1 - t0;
-    t0 = t1;
+    mpm_phase_time(s, MPM_T_SORT);
   }
   memset(s->led_part, 0, (size_t)s->nstrip * sizeof *s->led_part);
   mpm_ledger *L = &s->led;
   L->s_A = L->s_K = L->s_B = L->s_Bheld = L->s_Bstart = L->s_H = L->s_Wtrue = L->s_Wbook = L->s_C = L->s_Dmp = L->s_I = 0.0;
-  const int sch = s->sc.scheme;
-  mpm_status st = p2g(s, err, errlen);
-  if (st != MPM_OK)
-    return st;
-  t1 = wall();
-  s->time_split[MPM_T_P2G] += t1 - t0;
-  if (sch == MPM_SCHEME_USF || sch == MPM_SCHEME_USAVG) {
-    /* the stress first (all of it, or half), from the projected velocity; then the
-     * forces of the new stress */
-    const double frac = sch == MPM_SCHEME_USF ? 1.0 : 0.5;
-    mpm_nodes_start_velocity(s, frac);
-    if (s->g->fld)
-      mpm_fields_start(s, frac);
-    t0 = wall();
-    s->time_split[MPM_T_GRID] += t0 - t1;
-    if ((st = g2p_timed(s, G2P_STRAIN_F, frac, err, errlen)) != MPM_OK)
-      return st;
-    t0 = wall();
-    if ((st = p2g(s, err, errlen)) != MPM_OK)
-      return st;
-    t1 = wall();
-    s->time_split[MPM_T_P2G] += t1 - t0;
-  }
-  const double bfac = sch == MPM_SCHEME_USL ? 1.0 : sch == MPM_SCHEME_USAVG ? 0.5 : 0.0;
-  mpm_nodes_update(s, bfac);
-  if (s->g->fld)
-    mpm_fields_grid(s, bfac);
-  if (s->damp)
-    mpm_damping_apply(s, bfac);
-  t0 = wall();
-  s->time_split[MPM_T_GRID] += t0 - t1;
-  if (sch == MPM_SCHEME_MUSL) {
-    mpm_scatter(s, 1); /* counted in g2p, as the first half of MUSL's gather */
-    mpm_nodes_musl_velocity(s);
-    if (s->g->fld)
-      mpm_fields_musl(s);
-    if (s->damp)
-      mpm_damping_musl(s);
-    s->time_split[MPM_T_G2P] += wall() - t0;
-    st = g2p_timed(s, G2P_MUSL, 1.0, err, errlen);
-  } else if (sch == MPM_SCHEME_USF) {
-    st = g2p_timed(s, G2P_MOVE, 1.0, err, errlen);
-  } else {
-    st = g2p_timed(s, G2P_USL, sch == MPM_SCHEME_USAVG ? 0.5 : 1.0, err, errlen);
-  }
-  if (st != MPM_OK)
-    return st;
-  if (s->band)
-    mpm_band_step(s->band);
+}
+
+/* eq. 4 with the constraints, and what the optional physics does to the nodes. */
+static void nodes(mpm_sim *s)
+{
+  mpm_nodes_update(s);
+  mpm_phase_hooks(s, MPM_PH_GRID);
+  mpm_phase_time(s, MPM_T_GRID);
+}
+
+/* The step's end: the rigid head, the ledger, the grip and the clock. */
+static void finish(mpm_sim *s)
+{
+  mpm_phase_hooks(s, MPM_PH_GATHER);
   head_rigid(s);
-  if (s->damp)
-    mpm_damping_parts(s);
+  mpm_phase_hooks(s, MPM_PH_END);
   ledger_step(s);
   s->ugrip += s->vgrip * s->sc.dt;
   s->P_peak = fmax(s->P_peak, s->P_grip);
   s->step++;
   s->t = s->step * s->sc.dt;
+}
+
+static mpm_status step(mpm_sim *s, char *err, size_t errlen)
+{
+  const mpm_scheme_type *sch = s->scheme;
+  mpm_status st;
+  begin(s);
+  if ((st = mpm_phase_p2g(s, err, errlen)) != MPM_OK || (st = sch->before_nodes(s, err, errlen)) != MPM_OK)
+    return st;
+  nodes(s);
+  if ((st = sch->gather(s, err, errlen)) != MPM_OK)
+    return st;
+  finish(s);
   return MPM_OK;
 }
 
@@ -732,4 +725,49 @@ mpm_status mpm_sim_step(mpm_sim *s, char *err, size_t errlen)
   const mpm_status st = step(s, err, errlen);
   unlay(s); /* here, so that a step that failed half-way puts its particles back too */
   return st;
+}
+
+/* The band's rows after the gather (decohesion.Le = row or zone). */
+static void band_gather(mpm_sim *s)
+{
+  mpm_band_step(s->band);
+}
+
+const mpm_hook mpm_hook_band = {"band", {[MPM_PH_GATHER] = band_gather}};
+
+static void add_hook(struct mpm_phases *P, const mpm_hook *h)
+{
+  for (int ph = 0; ph < MPM_PH_N; ph++)
+    if (h->at[ph]) {
+      assert(P->n[ph] < MPM_HOOK_MAX);
+      P->fn[ph][P->n[ph]++] = h->at[ph];
+    }
+}
+
+mpm_status mpm_step_setup(mpm_sim *s)
+{
+  struct mpm_phases *P = calloc(1, sizeof *P);
+  if (!P)
+    return MPM_ENOMEM;
+  const mpm_scene *sc = &s->sc;
+  s->scheme = mpm_schemes[sc->scheme];
+  /* in the order they act at a phase they share */
+  if (sc->grid_motion == MPM_GRID_STRETCH)
+    add_hook(P, &mpm_hook_stretch);
+  if (sc->weights == MPM_WEIGHTS_LAID)
+    add_hook(P, &mpm_hook_laid);
+  if (s->g->fld)
+    add_hook(P, s->g->fld->ifc ? &mpm_hook_iface : &mpm_hook_fields);
+  if (s->damp)
+    add_hook(P, &mpm_hook_damping);
+  if (s->band)
+    add_hook(P, &mpm_hook_band);
+  const int gimp = sc->shape == MPM_SHAPE_GIMP;
+  for (int i = 0; i < MPM_G2P_N; i++) {
+    P->g2p[0][i] = G2P_TAB[0][gimp][i];
+    P->g2p[1][i] = G2P_TAB[1][gimp][i];
+  }
+  P->flush = s->band ? flush_rows : flush_plain;
+  s->ph = P;
+  return MPM_OK;
 }

@@ -34,6 +34,7 @@
 #endif
 
 #include "mpm.h"
+#include "mpm_kernel.h"
 
 static double wall(void)
 {

@@ -123,20 +123,6 @@ static void prestress(mpm_sim *s, double sigma)
   s->t = s->step * sc->dt;
 }
 
-static size_t bytes_per_particle(const mpm_sim *s)
-{
-  const size_t np = s->p->n, nn = (size_t)s->g->nnx * (size_t)s->g->nny;
-  const size_t ncell = (size_t)s->g->ncx * (size_t)s->g->ncy;
-  const size_t particles = np * (16 * sizeof(double) + 2);         /* mpm_particles  */
-  const size_t sorting = np * (sizeof(double) + 1 + 2 * sizeof(uint32_t)) + (ncell + 1) * sizeof(size_t) +
-                         ((size_t)s->nstrip + 1) * sizeof(size_t);
-  const size_t fields = s->g->fld ? nn * (sizeof(mpm_node) + 1 + 3 * sizeof(double)) : 0;
-  const size_t grid = nn * sizeof(mpm_node) + fields;
-  const size_t other = s->nhead * sizeof(uint32_t) + (size_t)s->thr.nmax * sizeof(mpm_defer) +
-                       (size_t)(s->ngrip + s->nfixx) * sizeof(int);
-  return (particles + sorting + grid + other + np / 2) / np;
-}
-
 static void usage(FILE *f)
 {
   fprintf(f,
@@ -374,7 +360,7 @@ int ver_cmd_bench(int argc, char **argv)
         split += s->time_split[q];
       char id[96];
       snprintf(id, sizeof id, "%s-h%g-ppc%d-%s", vs.name, cases[c].h, cases[c].ppc, cases[c].method);
-      const size_t bpp = bytes_per_particle(s);
+      const size_t bpp = mpm_sim_bytes_per_particle(s);
       if (json) {
         cJSON *o = cJSON_CreateObject();
         cJSON_AddStringToObject(o, "case", id);

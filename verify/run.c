@@ -431,10 +431,12 @@ static void finish(const run_state *r, ver_summary *u, double w0, double c0)
   u->cpu_s = ver_now_cpu() - c0;
   u->steps = s->step;
   u->threads_req = r->o->threads;
-  u->threads_max = s->thr.nmax;
-  u->steps_multi = s->thr.steps_multi;
-  u->probes = s->thr.nprobe;
-  u->probes_busy = s->thr.nbusy;
+  mpm_threads_info ti;
+  mpm_sim_threads(s, &ti);
+  u->threads_max = ti.nmax;
+  u->steps_multi = ti.steps_multi;
+  u->probes = ti.nprobe;
+  u->probes_busy = ti.nbusy;
   u->particles = s->p->n;
   u->updates_per_s = u->wall_s > 0 ? (double)s->p->n * (double)s->step / u->wall_s : 0;
   u->peak_P = r->peak;

@@ -84,8 +84,6 @@ static const struct {
   int value;
 } ENUMS[] = {
   {K_LE, "cell", MPM_LE_CELL}, {K_LE, "particle", MPM_LE_PARTICLE}, {K_LE, "staircase", MPM_LE_STAIRCASE}, {K_LE, "row", MPM_LE_ROW}, {K_LE, "zone", MPM_LE_ZONE},
-  {K_SCHEME, "usl", MPM_SCHEME_USL}, {K_SCHEME, "musl", MPM_SCHEME_MUSL}, {K_SCHEME, "usf", MPM_SCHEME_USF},
-  {K_SCHEME, "usavg", MPM_SCHEME_USAVG},
   {K_BC, "lagrangian", MPM_BC_LAGRANGIAN}, {K_BC, "both", MPM_BC_BOTH}, {K_BC, "consistent", MPM_BC_CONSISTENT},
   {K_HEAD, "rigid", MPM_HEAD_RIGID}, {K_HEAD, "none", MPM_HEAD_NONE},
   {K_CONTROL, "grip", MPM_CONTROL_GRIP}, {K_CONTROL, "dissipation", MPM_CONTROL_DISSIPATION},
@@ -106,7 +104,7 @@ static const struct {
 
 int ver_scene_enum_type(ktype t)
 {
-  if (t == K_PRESET) /* the presets' own table: scene_method.c */
+  if (t == K_PRESET || t == K_SCHEME) /* the presets' own table (scene_method.c), the kernel's schemes */
     return 1;
   for (size_t i = 0; i < NENUMS; i++)
     if (ENUMS[i].type == t)
@@ -118,6 +116,8 @@ int ver_scene_enum_value(ktype t, const char *word, int *value)
 {
   if (t == K_PRESET)
     return (*value = ver_method_find(word)) >= 0 ? 0 : -1;
+  if (t == K_SCHEME)
+    return (*value = mpm_scheme_find(word)) >= 0 ? 0 : -1;
   for (size_t i = 0; i < NENUMS; i++)
     if (ENUMS[i].type == t && !strcmp(ENUMS[i].word, word)) {
       *value = ENUMS[i].value;
@@ -130,6 +130,8 @@ const char *ver_scene_enum_word(ktype t, int value)
 {
   if (t == K_PRESET)
     return ver_method_name(value);
+  if (t == K_SCHEME)
+    return mpm_scheme_name(value);
   const char *first = "";
   for (size_t i = 0; i < NENUMS; i++)
     if (ENUMS[i].type == t) {

@@ -25,6 +25,7 @@
 #include <cmocka.h>
 
 #include "mpm.h"
+#include "mpm_kernel.h"
 #include "test_util.h"
 
 /* The Fig. 6 bar (L 192, H 32, E 1024, nu 0.25, rho 1), elastic, h 8, dt 0.1. */

@@ -31,6 +31,7 @@
 #include <gsl/gsl_errno.h>
 
 #include "mpm.h"
+#include "mpm_kernel.h"
 #include "test_util.h"
 
 #define PI 3.14159265358979323846

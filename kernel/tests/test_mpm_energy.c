@@ -37,6 +37,7 @@
 #include <cmocka.h>
 
 #include "mpm.h"
+#include "mpm_kernel.h"
 #include "test_util.h"
 
 #define PI 3.14159265358979323846

@@ -23,7 +23,9 @@
 
 #include <cmocka.h>
 
+#include "mpm_fields.h"
 #include "mpm.h"
+#include "mpm_kernel.h"
 #include "test_util.h"
 
 /* A short bar, 48 x 16, h 2, 1 ppc, decohesion across x (alpha 90), uGIMP, no grip or

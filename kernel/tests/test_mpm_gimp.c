@@ -18,6 +18,7 @@
 #include <gsl/gsl_integration.h>
 
 #include "mpm.h"
+#include "mpm_kernel.h"
 #include "test_util.h"
 #include "mpm_shape.h"
 

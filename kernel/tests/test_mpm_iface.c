@@ -45,6 +45,7 @@
 #include <cmocka.h>
 
 #include "mpm.h"
+#include "mpm_kernel.h"
 #include "test_util.h"
 
 /* built twice (kernel/meson.build): IFACE_SLOW runs the long tests, the other build the

@@ -40,6 +40,7 @@
 #include <cmocka.h>
 
 #include "mpm.h"
+#include "mpm_kernel.h"
 #include "test_util.h"
 
 static double mms_error(double h, int scheme, int bc)

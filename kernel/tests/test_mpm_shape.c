@@ -16,6 +16,7 @@
 #include <cmocka.h>
 
 #include "mpm.h"
+#include "mpm_kernel.h"
 #include "test_util.h"
 #include "mpm_shape.h"
 

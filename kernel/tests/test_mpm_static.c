@@ -18,6 +18,7 @@
 #include <cmocka.h>
 
 #include "mpm.h"
+#include "mpm_kernel.h"
 #include "test_util.h"
 
 /* A 48 x 8 bar on h 4 at 4 ppc, g = 0.5 (U0 = 0.5 L snf^2 / E), the paper's flaw.  (On
