@@ -209,6 +209,53 @@ mpm_status mpm_static_number(mpm_static *q, char *err, size_t errlen)
   return MPM_OK;
 }
 
+/* Particle c's entries of the tangent (V B^T C_p B with the update's algorithmic tangent
+ * C_p), of d R / d delta (kfd) and, where it softens (wD > 0), of the control's gradient
+ * (ga, gb); k is its first place in the map. */
+static void particle_tangent(mpm_static *q, size_t c, const mpm_material *m, const mpm_dstate *in, const double de[3],
+                             double wD, size_t k, double *Ax)
+{
+  const size_t M = MPM_ST_MAX;
+  const int cn = q->cnt[c];
+  const int *nd = q->node + c * M;
+  const double *Gx = q->Gx + c * M, *Gy = q->Gy + c * M, V = q->s->p->V[q->pid[c]];
+  double Cp[3][3], dl[3]; /* the update's algorithmic tangent and d lambda / d de */
+  mpm_dcoh_tangent(m, in, de, Cp, dl, q->dw);
+  for (int b = 0; b < 2 * cn; b++) {
+    /* d de / d u_b: (Gx, 0, Gy / 2) for an x component, (0, Gy, Gx / 2) for y */
+    const int bn = nd[b / 2], bc = b % 2;
+    const double d0 = bc ? 0.0 : Gx[b / 2], d1 = bc ? Gy[b / 2] : 0.0, d2 = 0.5 * (bc ? Gx[b / 2] : Gy[b / 2]);
+    const double sx = Cp[0][0] * d0 + Cp[0][1] * d1 + Cp[0][2] * d2;
+    const double sy = Cp[1][0] * d0 + Cp[1][1] * d1 + Cp[1][2] * d2;
+    const double sxy = Cp[2][0] * d0 + Cp[2][1] * d1 + Cp[2][2] * d2;
+    const int eb = q->eq[2 * bn + bc];
+    if (wD > 0.0) {
+      const double gd = wD * (dl[0] * d0 + dl[1] * d1 + dl[2] * d2);
+      if (eb >= 0)
+        q->ga[eb] += gd;
+      else if (eb == MPM_DOF_GRIP)
+        q->gb -= gd; /* u = -delta there */
+    }
+    for (int a = 0; a < cn; a++) {
+      const double kx = V * (Gx[a] * sx + Gy[a] * sxy), ky = V * (Gy[a] * sy + Gx[a] * sxy);
+      const int ex = q->eq[2 * nd[a]], ey = q->eq[2 * nd[a] + 1];
+      const int kx_at = q->map[k + (size_t)(2 * a) * (size_t)(2 * cn) + (size_t)b];
+      const int ky_at = q->map[k + (size_t)(2 * a + 1) * (size_t)(2 * cn) + (size_t)b];
+      if (eb >= 0) {
+        if (kx_at >= 0)
+          Ax[kx_at] += kx;
+        if (ky_at >= 0)
+          Ax[ky_at] += ky;
+      } else if (eb == MPM_DOF_GRIP) { /* d R / d delta = -K_{f,grip} */
+        if (ex >= 0)
+          q->kfd[ex] -= kx;
+        if (ey >= 0)
+          q->kfd[ey] -= ky;
+      }
+    }
+  }
+}
+
 mpm_status mpm_static_eval(mpm_static *q, int tangent)
 {
   const double t0 = now();
@@ -275,44 +322,8 @@ mpm_status mpm_static_eval(mpm_static *q, int tangent)
       if (ey >= 0)
         q->R[ey] += fy;
     }
-    if (!tangent)
-      continue;
-    double C[3][3], dl[3]; /* the update's algorithmic tangent and d lambda / d de */
-    mpm_dcoh_tangent(m, &in, de, C, dl, q->dw);
-    const int ld = wD > 0.0 && info.path != MPM_DPATH_ELASTIC;
-    for (int b = 0; b < 2 * cn; b++) {
-      /* d de / d u_b: (Gx, 0, Gy / 2) for an x component, (0, Gy, Gx / 2) for y */
-      const int bn = nd[b / 2], bc = b % 2;
-      const double d0 = bc ? 0.0 : Gx[b / 2], d1 = bc ? Gy[b / 2] : 0.0, d2 = 0.5 * (bc ? Gx[b / 2] : Gy[b / 2]);
-      const double sx = C[0][0] * d0 + C[0][1] * d1 + C[0][2] * d2;
-      const double sy = C[1][0] * d0 + C[1][1] * d1 + C[1][2] * d2;
-      const double sxy = C[2][0] * d0 + C[2][1] * d1 + C[2][2] * d2;
-      const int eb = q->eq[2 * bn + bc];
-      if (ld) {
-        const double gd = wD * (dl[0] * d0 + dl[1] * d1 + dl[2] * d2);
-        if (eb >= 0)
-          q->ga[eb] += gd;
-        else if (eb == MPM_DOF_GRIP)
-          q->gb -= gd; /* u = -delta there */
-      }
-      for (int a = 0; a < cn; a++) {
-        const double kx = V * (Gx[a] * sx + Gy[a] * sxy), ky = V * (Gy[a] * sy + Gx[a] * sxy);
-        const int ex = q->eq[2 * nd[a]], ey = q->eq[2 * nd[a] + 1];
-        const int kx_at = q->map[k + (size_t)(2 * a) * (size_t)(2 * cn) + (size_t)b];
-        const int ky_at = q->map[k + (size_t)(2 * a + 1) * (size_t)(2 * cn) + (size_t)b];
-        if (eb >= 0) {
-          if (kx_at >= 0)
-            Ax[kx_at] += kx;
-          if (ky_at >= 0)
-            Ax[ky_at] += ky;
-        } else if (eb == MPM_DOF_GRIP) { /* d R / d delta = -K_{f,grip} */
-          if (ex >= 0)
-            q->kfd[ex] -= kx;
-          if (ey >= 0)
-            q->kfd[ey] -= ky;
-        }
-      }
-    }
+    if (tangent)
+      particle_tangent(q, c, m, &in, de, wD > 0.0 && info.path != MPM_DPATH_ELASTIC ? wD : 0.0, k, Ax);
     k += 4 * (size_t)cn * (size_t)cn;
   }
   if (q->iface) { /* the line's law between the split nodes' two slots */
