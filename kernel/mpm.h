@@ -77,7 +77,7 @@ enum { MPM_GRID_FIXED = 0, MPM_GRID_STRETCH = 1 };
  * body and its motion relative to the grid (the halves unloading in the softening, some
  * 0.04 h) never moves a uGIMP box across a node.  Such a move, under a stress, changes the
  * nodal forces the way no strain energy does, and MUSL, which damps no wave, grows a
- * grid-scale wave from it (analytic/ana_stab.c; docs/interface.md, "Its causes").  The
+ * grid-scale wave from it (analytic/ana_stab.c; docs/findings.md).  The
  * particles still move: the step adds each one's offset from its laid
  * place back when it ends, so output, energies and the next step see where it is. */
 enum { MPM_WEIGHTS_CURRENT = 0, MPM_WEIGHTS_LAID = 1 };
@@ -110,22 +110,22 @@ enum { MPM_DAMP_DRIFT = 0, MPM_DAMP_PARTS = 1 };
  * path_reach h of the failure line through the imperfection (the cells that line
  * crosses, widened by path_reach cells); the others are elastic (MPM_MAT_ELASTIC).  A
  * laminate delaminates along its ply interface: the crack's path is the plane at alpha
- * through where it starts (docs/bands.md sec. 3c).  IFACE: no particle softens; the
+ * through where it starts (docs/findings.md).  IFACE: no particle softens; the
  * line is a cohesive interface between two velocity fields (mpm_iface.c,
- * docs/interface.md). */
+ * docs/findings.md). */
 enum { MPM_PATH_FREE = 0, MPM_PATH_LINE = 1, MPM_PATH_IFACE = 2 };
 /* decohesion.reversed_shear: shear on the failure plane against a particle's accumulated
  * tangential jump (s_nt upt < 0).  EVEN (the paper): eq. 23 is even in s_nt, so it softens
  * the particle as shear the other way does.  CLOSING: it closes the slip elastically and
  * neither starts nor drives decohesion, as <sn> keeps normal compression out of eq. 23
- * (mpm_decohesion.c; docs/bands.md sec. 5j). */
+ * (mpm_decohesion.c; docs/findings.md). */
 enum { MPM_SHEAR_EVEN = 0, MPM_SHEAR_CLOSING = 1 };
 /* decohesion.share (path = interface): how a softening segment's traction is shared among
  * its nodes (mpm_iface.c).  STICK: each node's own stick impulse, scaled by the segment's
  * factor.  LINE: the segment's traction times the node's length of line An (the consistent
  * nodal force of a traction on the line), never more than sticks the node; built for a
  * line along a node column that the grid follows (alpha 90, grid.motion = stretch; the
- * crack on a node column, mpm_sim.c), docs/interface.md, "The column on the line". */
+ * crack on a node column, mpm_sim.c), docs/findings.md. */
 enum { MPM_SHARE_STICK = 0, MPM_SHARE_LINE = 1 };
 
 /* ---- scene: everything a run needs, as plain numbers (filled by verify/scene.c) ---- */

@@ -3,7 +3,7 @@
  * = c > 0), for scenes that ask a quasi-static question through a dynamic release: a
  * snapback (g < 1, eq. 35) under the paper's grip control throws the stored excess
  * (1 / g - 1) UF area into elastic waves once the band opens, and their reflections at
- * the held ends fail the ends (docs/bands.md sec. 5c).  c = 0 is the paper's undamped
+ * the held ends fail the ends (docs/findings.md).  c = 0 is the paper's undamped
  * step, bit for bit.
  *
  * Each free velocity component of each node gets, after the node update (eq. 4), the
@@ -18,7 +18,7 @@
  * The first version took Cundall's local form, -alpha |f| sign(v - vbar): scale-free, it
  * acts at full strength on any small bias of v - vbar, and after the cut it put energy
  * back (L_damp fell from 8.9 to 4.8 at fig8 h 2) and pushed the parts into each other
- * (grip load -13 % of the peak at delta 0.95); docs/bands.md sec. 5e.  Held components
+ * (grip load -13 % of the peak at delta 0.95); docs/findings.md.  Held components
  * (grip and fixed end) are not damped: their reactions stay the constraint's.
  *
  * About what (time.damping_about): DRIFT (above; the default) or PARTS.  To a slow
@@ -26,7 +26,7 @@
  * by about tau dv/dt, so the force is about -c tau m dv/dt (c tau = 12.6 for the files'
  * critical c and tau = 2 L / c_wave).  After the cut that resists the separated parts'
  * own slow motions: fig8's left part sliding back into the other needs about 14 times the
- * contact force (docs/bands.md sec. 5k).  With PARTS, once the band has cut the bar the
+ * contact force (docs/findings.md).  With PARTS, once the band has cut the bar the
  * node damping stops and each bar particle's velocity v relaxes instead toward the
  * motion of the end its part is held by, by
  *     v <- v - c dt (v - V_end)
@@ -37,14 +37,14 @@
  * release's and decays as exp(-c t).  The grip holds x only, but nothing quasi-static
  * drives a separated part in y: leaving the grip's part free in y (its mean vy kept) let
  * fig8's left part slide back into the other after the release (push 2.15 % of the peak
- * at h 8, 1 ppc; 0.03 % with it damped; docs/bands.md sec. 5l).  The parts are the ones
+ * at h 8, 1 ppc; 0.03 % with it damped; docs/findings.md).  The parts are the ones
  * the cut made (mpm_sim_cut: a separated particle in every particle row): in each row,
  * the particles left of the midpoint between the row's first and last separated particle
  * at the cut (reference x0) belong to the grip's part, those right of it to the fixed
  * end's, the band's own particles included, each with the side it lies on; a particle
  * on the midpoint (a row's lone separated particle), the head and debris are left alone.
  * Leaving the band's particles out (only those beyond the row's first and last separated
- * particle damped) let them ring on: a45 h 1, 9 ppc D 1.102 against 1.067 (docs/bands.md
+ * particle damped) let them ring on: a45 h 1, 9 ppc D 1.102 against 1.067 (docs/findings.md
  * sec. 5l).  The kinetic energy it takes is booked in L_damp.  Before the cut
  * (damping_from = start) the node damping about the drift acts as with DRIFT.  Serial, in
  * particle order.
@@ -53,7 +53,7 @@
  * first step; CUT, from the step the band has cut the bar (mpm_sim_cut) on, so that
  * everything up to the cut, the peak and the band's own opening included, is the
  * undamped step bit for bit and only the release after it is damped.  Both are measured
- * in docs/bands.md sec. 5e.  The low-pass runs from the first step either way.
+ * in docs/findings.md.  The low-pass runs from the first step either way.
  *
  * The ledger (mpm_step.c, "Energy").  With delta added to a record's increment d
  * (lanes f) and to v^L (lanes p), A = sum m v . d gains m v . delta, K = sum m |d|^2

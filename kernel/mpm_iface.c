@@ -1,9 +1,9 @@
 /*
  * mpm_iface.c - the crack as a cohesive interface between two velocity fields
- * (decohesion.path = interface; docs/interface.md derives and measures it).
+ * (decohesion.path = interface; docs/findings.md derives and measures it).
  *
  * A band of softening particles on an inclined line dissipates more than U0 per unit
- * area and carries load after it separates (docs/bands.md): the cell staircase makes
+ * area and carries load after it separates (docs/findings.md): the cell staircase makes
  * more material strain with the opening than the line holds.  Here no particle softens.
  * The paper's decohesion law (Model 1 with q = 1, eqs. 8-10) acts on the line itself:
  *  - the two fields (mpm_fields.c) exist from the first step.  Every node within
@@ -26,12 +26,12 @@
  *    traction J / (dt An) to the surface released the bar at 1 ppc: the stick traction
  *    scatters from node to node there, every node above the surface was cut at once, and
  *    the load fell from the peak to a quarter within half a wave transit: fig7 h 4,
- *    k_soft -5346 against the analytic -563; docs/interface.md.)
+ *    k_soft -5346 against the analytic -563; docs/findings.md.)
  *    decohesion.share = line instead gives each node the segment's traction times its
  *    length of line An (of the length at the nodes holding both fields), capped at its
  *    stick impulse: with a line along a node column (alpha 90, the grid following the
  *    bar) the scaled stick impulses leave the traction's spread among a segment's rows
- *    free, and a mode grew in it (iface90 h 1, 4 ppc: L_flip 2.5; docs/interface.md,
+ *    free, and a mode grew in it (iface90 h 1, 4 ppc: L_flip 2.5; docs/findings.md,
  *    "The column on the line").  lambda grows by the traction's work on the opening,
  *    dW per unit area (the impulse times the fields' relative velocity v'2 - v'1,
  *    MUSL's re-projected velocities that the particles' strain takes, summed over the
@@ -41,7 +41,7 @@
  *    taken UF = U0 / 2 per unit area whatever the mode.
  *    (lambda from an effective opening, sqrt((snf un)^2 + (stf ut)^2) / U0, counts the
  *    slip that Mode I's inclined opening makes ten times over with stf = 10 snf, and
- *    separated fig7 early: h 4, 4 ppc, W_ext 0.75 UF area; docs/interface.md);
+ *    separated fig7 early: h 4, 4 ppc, W_ext 0.75 UF area; docs/findings.md);
  *    (The fields' velocity after the impulse, v^L, instead: that opening rate runs ahead
  *    of the one the particles take, lambda outran the work, and at 1 ppc the softening
  *    was steep and short of UF: fig7 h 2, k_soft -716 against -563 and W_ext -3.2 %.)
@@ -53,7 +53,7 @@
  * lies in the square.  A segment with less than a quarter of the segment length of line
  * (the bar's edges) joins its larger neighbour.
  * Energy: the impulse's work on the fields over the step, -m c . (v + v^L) / 2 per record
- * (as the contact's, docs/energy.md), is the cohesive work and goes to W_coh; D is eq. 10
+ * (as the contact's, docs/verification.md), is the cohesive work and goes to W_coh; D is eq. 10
  * on the segments, U0 A min(lambda, 1).
  * Serial, in node and particle order: the same sums whatever the threads.
  */
@@ -449,7 +449,7 @@ void mpm_iface_grid(mpm_sim *s)
        * stuck and the capped steps; MUSL keeps what that puts into the bar's waves (with
        * the node's share of the segment's shear: iface90 h 4, 4 ppc at a sixteenth of the
        * grip speed, kinetic energy 4.5e-4 against the steady 4e-6; with none 1.6e-5;
-       * docs/interface.md, "Its causes") */
+       * docs/findings.md) */
       const double w = f->Ab[q] > 0.0 ? f->r[q] * f->An[k] / f->Ab[q] : 0.0;
       if (jn > 0.0)
         jn = f->Tn[q] > 0.0 ? fmin(jn, w * f->Tn[q]) : 0.0;

@@ -12,7 +12,7 @@
 /* One interface: the line at alpha through the flaw, cut into segments of MPM_IFACE_SEG h
  * along it.  Per node (nnx * nny): its segment and its share of the line.  Per segment:
  * its length, strengths, state and the paper's lambda. */
-#define MPM_IFACE_SEG 2.0      /* segment length, in cells (docs/interface.md, "Segments") */
+#define MPM_IFACE_SEG 2.0      /* segment length, in cells (docs/findings.md) */
 #define MPM_IFACE_REACH 2.5    /* split nodes: within this many h (|sin a| + |cos a|) of the line */
 enum { MPM_SEG_STUCK = 0, MPM_SEG_SOFT = 1, MPM_SEG_OPEN = 2 };
 

@@ -17,7 +17,7 @@
  *
  * Boundary conditions, the node update of eq. 4 and the nodal mass limit: mpm_nodes.c.
  *
- * Energy (the ledger; docs/energy.md derives it).  With d_i the FLIP increment at node i
+ * Energy (the ledger; docs/verification.md derives it).  With d_i the FLIP increment at node i
  * and dv_p = sum d_i N_ip, a step changes KE_p by A + Kp exactly (A = sum m_i v_i . d_i,
  * Kp = sum m_p |dv_p|^2 / 2) and SE + W_coh by B + Q (B = -dt sum f_i . u_i, u_i the
  * velocity the strain is taken from; Q = sum V dsigma : de / 2, formed by the gather as
@@ -545,7 +545,7 @@ static int particle_inside(const mpm_sim *s, size_t k)
 }
 
 /* Debris.  After the cut a snapback scene's release can fling a block of separated
- * particles off the bar (docs/bands.md sec. 6).  A separated particle (sep) of the bar
+ * particles off the bar (docs/findings.md).  A separated particle (sep) of the bar
  * found outside the grid leaves the computation: its kinetic and elastic energy are
  * booked in L_debris, its mass, velocity and stress become 0 and its material
  * MPM_MAT_DEBRIS (no stiffness, no strength), and it is parked at the nearest point one
