@@ -44,8 +44,8 @@
  * end's, the band's own particles included, each with the side it lies on; a particle
  * on the midpoint (a row's lone separated particle), the head and debris are left alone.
  * Leaving the band's particles out (only those beyond the row's first and last separated
- * particle damped) let them ring on: a45 h 1, 9 ppc D 1.102 against 1.067 (docs/findings.md
- * sec. 5l).  The kinetic energy it takes is booked in L_damp.  Before the cut
+ * particle damped) let them ring on: a45 h 1, 9 ppc D 1.102 against 1.067 (docs/findings.md).
+ * The kinetic energy it takes is booked in L_damp.  Before the cut
  * (damping_from = start) the node damping about the drift acts as with DRIFT.  Serial, in
  * particle order.
  *

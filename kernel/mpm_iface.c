@@ -31,8 +31,8 @@
  *    length of line An (of the length at the nodes holding both fields), capped at its
  *    stick impulse: with a line along a node column (alpha 90, the grid following the
  *    bar) the scaled stick impulses leave the traction's spread among a segment's rows
- *    free, and a mode grew in it (iface90 h 1, 4 ppc: L_flip 2.5; docs/findings.md,
- *    "The column on the line").  lambda grows by the traction's work on the opening,
+ *    free, and a mode grew in it (iface90 h 1, 4 ppc: L_flip 2.5; docs/findings.md).
+ *    lambda grows by the traction's work on the opening,
  *    dW per unit area (the impulse times the fields' relative velocity v'2 - v'1,
  *    MUSL's re-projected velocities that the particles' strain takes, summed over the
  *    segment's nodes; mpm_iface_musl): Model 1's power s . d up = U0 se dlambda with
