@@ -34,146 +34,12 @@
 #include "io.h"
 #include "metrics.h"
 #include "run.h"
+#include "run_out.h"
 #include "separation.h"
 
 #define VER_STATIC_MAX_INC 100000 /* a static run's increments: rows are allocated for them */
 
-/* Opens dir/name under a temporary name for writing; commit_file renames it into place.
- * Either, failing, says which file and why in bad (VER_RUN_BAD bytes), errno kept. */
-#define VER_RUN_BAD 1400
-static FILE *open_tmp(const char *dir, const char *name, char *tmp, size_t len, char *bad)
-{
-  char path[1100];
-  snprintf(path, sizeof path, "%s/%s", dir, name);
-  FILE *f = ver_io_open_tmp(path, tmp, len);
-  if (!f) {
-    const int e = errno;
-    snprintf(bad, VER_RUN_BAD, "%s: cannot write: %s", path, strerror(e));
-    errno = e;
-  }
-  return f;
-}
-
-static int commit_file(FILE *f, const char *tmp, char *bad)
-{
-  if (ver_io_commit(f, tmp) == 0)
-    return 0;
-  const int e = errno;
-  char path[1100] = "";
-  ver_io_tmp_final(tmp, path, sizeof path);
-  snprintf(bad, VER_RUN_BAD, "%s: cannot write: %s", path, strerror(e));
-  errno = e;
-  return -1;
-}
-
-/* decohesion.path = interface: the line's pieces with their segment's lambda and state,
- * <stem>-line.csv (docs/output-formats.md); nothing for the other paths. */
-static int write_line(const mpm_sim *s, const char *dir, const char *stem, char *bad)
-{
-  const int n = mpm_iface_pieces(s);
-  if (n == 0)
-    return 0;
-  char tmp[1100], name[128];
-  snprintf(name, sizeof name, "%s-line.csv", stem);
-  FILE *f = open_tmp(dir, name, tmp, sizeof tmp, bad);
-  if (!f)
-    return -1;
-  fprintf(f, "# delam line.csv schema %d\nxa,ya,xb,yb,lambda,state\n", VER_SCHEMA_LINE);
-  double *xy = malloc((size_t)n * 6 * sizeof *xy); /* xa ya xb yb lambda state, per written piece */
-  int m = 0;
-  for (int i = 0; i < n; i++) {
-    double q[4], lam;
-    int st;
-    if (mpm_iface_piece(s, i, q, &lam, &st)) {
-      fprintf(f, "%.9g,%.9g,%.9g,%.9g,%.9g,%d\n", q[0], q[1], q[2], q[3], lam, st);
-      if (xy) {
-        memcpy(xy + 6 * m, q, sizeof q);
-        xy[6 * m + 4] = lam;
-        xy[6 * m + 5] = st;
-        m++;
-      }
-    }
-  }
-  if (commit_file(f, tmp, bad)) {
-    free(xy);
-    return -1;
-  }
-  /* The same pieces as legacy VTK polydata, one line cell each, for ParaView. */
-  snprintf(name, sizeof name, "%s-line.vtk", stem);
-  if (!xy) /* no memory for the VTK copy: the CSV is written, the VTK left out */
-    return 0;
-  if (!(f = open_tmp(dir, name, tmp, sizeof tmp, bad))) {
-    free(xy);
-    return -1;
-  }
-  fprintf(f, "# vtk DataFile Version 3.0\ndelam line.vtk schema %d %s t=%g\nASCII\nDATASET POLYDATA\nPOINTS %d double\n",
-          VER_SCHEMA_LINE, stem, s->t, 2 * m);
-  for (int i = 0; i < m; i++)
-    fprintf(f, "%.9g %.9g 0\n%.9g %.9g 0\n", xy[6 * i], xy[6 * i + 1], xy[6 * i + 2], xy[6 * i + 3]);
-  fprintf(f, "LINES %d %d\n", m, 3 * m);
-  for (int i = 0; i < m; i++)
-    fprintf(f, "2 %d %d\n", 2 * i, 2 * i + 1);
-  fprintf(f, "CELL_DATA %d\nSCALARS lambda double 1\nLOOKUP_TABLE default\n", m);
-  for (int i = 0; i < m; i++)
-    fprintf(f, "%.9g\n", xy[6 * i + 4]);
-  fprintf(f, "SCALARS state int 1\nLOOKUP_TABLE default\n");
-  for (int i = 0; i < m; i++)
-    fprintf(f, "%d\n", (int)xy[6 * i + 5]);
-  free(xy);
-  return commit_file(f, tmp, bad);
-}
-
-static int write_snapshot(const mpm_sim *s, const char *dir, const char *stem, char *bad)
-{
-  const mpm_particles *p = s->p;
-  char tmp[1100], name[128];
-  snprintf(name, sizeof name, "%s.csv", stem);
-  FILE *f = open_tmp(dir, name, tmp, sizeof tmp, bad);
-  if (!f)
-    return -1;
-  fprintf(f, "# delam particles.csv schema %d\nx0,y0,x,y,ux,uy,lambda,sxx,syy,sxy,upn,upt,sep,wcoh,dis\n",
-          VER_SCHEMA_PARTICLES);
-  for (size_t k = 0; k < p->n; k++)
-    if (p->mat[k] != MPM_MAT_HEAD)
-      fprintf(f, "%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%d,%.9g,%.9g\n", p->x0[k], p->y0[k],
-            p->x[k], p->y[k], p->x[k] - p->x0[k], p->y[k] - p->y0[k], p->lam[k], p->sxx[k], p->syy[k],
-            p->sxy[k], p->upn[k], p->upt[k], p->sep[k], p->wcoh[k], p->dis[k]);
-  if (commit_file(f, tmp, bad))
-    return -1;
-  /* Legacy VTK polydata, one vertex per particle, for ParaView. */
-  snprintf(name, sizeof name, "%s.vtk", stem);
-  if (!(f = open_tmp(dir, name, tmp, sizeof tmp, bad)))
-    return -1;
-  const size_t nb = p->n - s->nhead; /* the bar's particles; the head is the machine */
-  fprintf(f, "# vtk DataFile Version 3.0\ndelam particles.vtk schema %d %s t=%g\nASCII\nDATASET POLYDATA\nPOINTS %zu double\n",
-          VER_SCHEMA_PARTICLES, stem, s->t, nb);
-  for (size_t k = 0; k < p->n; k++)
-    if (p->mat[k] != MPM_MAT_HEAD)
-      fprintf(f, "%.9g %.9g 0\n", p->x[k], p->y[k]);
-  fprintf(f, "VERTICES %zu %zu\n", nb, 2 * nb);
-  for (size_t k = 0; k < nb; k++)
-    fprintf(f, "1 %zu\n", k);
-  fprintf(f, "POINT_DATA %zu\nVECTORS displacement double\n", nb);
-  for (size_t k = 0; k < p->n; k++)
-    if (p->mat[k] != MPM_MAT_HEAD)
-      fprintf(f, "%.9g %.9g 0\n", p->x[k] - p->x0[k], p->y[k] - p->y0[k]);
-  const char *fields[] = {"lambda", "sxx", "syy", "sxy"};
-  const double *arrs[] = {p->lam, p->sxx, p->syy, p->sxy};
-  for (int q = 0; q < 4; q++) {
-    fprintf(f, "SCALARS %s double 1\nLOOKUP_TABLE default\n", fields[q]);
-    for (size_t k = 0; k < p->n; k++)
-      if (p->mat[k] != MPM_MAT_HEAD)
-        fprintf(f, "%.9g\n", arrs[q][k]);
-  }
-  if (commit_file(f, tmp, bad))
-    return -1;
-  return write_line(s, dir, stem, bad);
-}
-
-typedef struct {
-  double t, delta, Pg, Pf;
-  mpm_energy e;
-} row;
+typedef ver_run_row row;
 
 /* sum m vx sin(k X) over the bar's particles: the velocity of the axial mode k */
 static double modal_velocity(const mpm_sim *s, double k)
@@ -184,29 +50,6 @@ static double modal_velocity(const mpm_sim *s, double k)
     if (p->mat[i] != MPM_MAT_HEAD)
       a += p->m[i] * p->vx[i] * sin(k * p->x0[i]);
   return a;
-}
-
-static int write_rows(const row *r, long n, const char *dir, char *bad)
-{
-  char tmp[1100];
-  FILE *f = open_tmp(dir, "load.csv", tmp, sizeof tmp, bad);
-  if (!f)
-    return -1;
-  fprintf(f, "# delam load.csv schema %d\nt,delta,P_grip,P_fixed\n", VER_SCHEMA_LOAD);
-  for (long i = 0; i < n; i++)
-    fprintf(f, "%.9g,%.9g,%.9g,%.9g\n", r[i].t, r[i].delta, r[i].Pg, r[i].Pf);
-  if (commit_file(f, tmp, bad))
-    return -1;
-  if (!(f = open_tmp(dir, "energy.csv", tmp, sizeof tmp, bad)))
-    return -1;
-  /* the ledger's booked terms after the energies (mpm.h mpm_energy, mpm_step.c "Energy") */
-  fprintf(f, "# delam energy.csv schema %d\nt,W_ext,KE,SE,W_coh,D,L_bc,L_flip,L_scheme,W_head,L_contact,L_debris,L_damp\n",
-          VER_SCHEMA_ENERGY);
-  for (long i = 0; i < n; i++)
-    fprintf(f, "%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", r[i].t, r[i].e.W_ext, r[i].e.KE,
-            r[i].e.SE, r[i].e.W_coh, r[i].e.D, r[i].e.L_bc, r[i].e.L_flip, r[i].e.L_scheme, r[i].e.W_head,
-            r[i].e.L_contact, r[i].e.L_debris, r[i].e.L_damp);
-  return commit_file(f, tmp, bad);
 }
 
 /* Elastic slope of the written rows (metrics.h, one definition). */
@@ -391,7 +234,7 @@ static int take_snapshots(run_state *r, double delta, char *err, size_t errlen)
       char stem[64];
       snprintf(stem, sizeof stem, "snap-d%.3f", r->vs->snap[i]);
       char bad[VER_RUN_BAD];
-      if (write_snapshot(r->s, r->o->outdir, stem, bad) != 0) {
+      if (ver_run_write_snapshot(r->s, r->o->outdir, stem, bad) != 0) {
         rc = 1;
         snprintf(err, errlen, "%s", bad);
       }
@@ -561,7 +404,7 @@ static int write_pvd(const run_state *r, const char *dir, char *bad)
   if (!any)
     return 0;
   char tmp[1100];
-  FILE *f = open_tmp(dir, "snapshots.pvd", tmp, sizeof tmp, bad);
+  FILE *f = ver_run_open_tmp(dir, "snapshots.pvd", tmp, sizeof tmp, bad);
   if (!f)
     return -1;
   const int line = mpm_iface_pieces(r->s) > 0;
@@ -575,14 +418,14 @@ static int write_pvd(const run_state *r, const char *dir, char *bad)
                 r->vs->snap[i]);
     }
   fputs("</Collection>\n</VTKFile>\n", f);
-  return commit_file(f, tmp, bad);
+  return ver_run_commit(f, tmp, bad);
 }
 
 static int write_results(run_state *r, ver_summary *u, int rc, char *err, size_t errlen)
 {
   const char *dir = r->o->outdir;
   char bad[VER_RUN_BAD];
-  const int files = write_rows(r->rows, r->nrow, dir, bad) != 0 || write_snapshot(r->s, dir, "final", bad) != 0 ||
+  const int files = ver_run_write_rows(r->rows, r->nrow, dir, bad) != 0 || ver_run_write_snapshot(r->s, dir, "final", bad) != 0 ||
                     write_pvd(r, dir, bad) != 0;
   if (files) {
     u->complete = 0;
