@@ -6,7 +6,18 @@
 #ifndef DELAM_MPM_KERNEL_H
 #define DELAM_MPM_KERNEL_H
 
+#include <time.h>
+
 #include "mpm.h"
+
+/* Seconds on the monotonic clock: the kernel's timings (time split, thread probes, the
+ * static solver's phases). */
+static inline double mpm_wall(void)
+{
+  struct timespec ts;
+  clock_gettime(CLOCK_MONOTONIC, &ts);
+  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
 
 /* decohesion.Le = row (mpm_band.c): Le per particle row of the bar, measured from the
  * particles softening in it, k dx |sin a| with k = sum / lam (mpm_band_le). */

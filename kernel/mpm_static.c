@@ -50,20 +50,12 @@
 #define MPM_QS_MAXINC 5000 /* increments a run may take (Fig. 6 at h 2 takes under 100)      */
 #define MPM_QS_NEL 8      /* equal increments of the linear branch up to the first initiation */
 
-static double now(void)
-{
-  struct timespec ts;
-  clock_gettime(CLOCK_MONOTONIC, &ts);
-  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
 void mpm_static_free(mpm_static *q)
 {
   if (!q)
     return;
   void *f[] = {q->pid, q->cnt, q->node, q->N, q->Gx, q->Gy, q->eq, q->held, q->map, q->Un, q->Ut, q->R, q->kfd,
-               q->ga, q->x1, q->x2, q->du, q->pdir, q->tsxx, q->tsyy, q->tsxy, q->tlam, q->tupn, q->tupt, q->tw,
-               q->tsep, q->tpath};
+               q->ga, q->x1, q->x2, q->du, q->pdir, q->tst, q->tw, q->tpath};
   for (size_t i = 0; i < sizeof f / sizeof f[0]; i++)
     free(f[i]);
   mpm_static_iface_free(q);
@@ -148,19 +140,18 @@ static double norm_inf(const double *a, int n)
 
 static mpm_status factor(mpm_static *q)
 {
-  const double t0 = now();
+  const double t0 = mpm_wall();
   const mpm_status st = mpm_lin_factor(q->lin);
-  q->st.t_factor += now() - t0;
+  q->st.t_factor += mpm_wall() - t0;
   q->st.factorizations++;
-  q->have_factor = st == MPM_OK;
   return st;
 }
 
 static mpm_status solve(mpm_static *q, const double *b, double *x)
 {
-  const double t0 = now();
+  const double t0 = mpm_wall();
   const mpm_status st = mpm_lin_solve(q->lin, b, x);
-  q->st.t_solve += now() - t0;
+  q->st.t_solve += mpm_wall() - t0;
   return st;
 }
 
@@ -223,7 +214,6 @@ static int increment(mpm_static *q, int *iters)
   add_free(q, q->pdir, dd);
   q->dt += dd;
   const double Dtarget = q->Cn + q->step_D;
-  q->x2[0] = 0.0; /* (no unknowns: nothing to correct) */
   if (mpm_static_eval(q, 1) != MPM_OK)
     return 0;
   for (int it = 0;; it++) {
@@ -288,7 +278,7 @@ static void scale_to_initiation(mpm_static *q)
     const mpm_material *m = &s->mat[s->p->mat[q->pid[c]]];
     if (m->model == MPM_DCOH_NONE)
       continue;
-    const double F = mpm_dcoh_F(m, q->tsxx[c], q->tsyy[c], q->tsxy[c], 0.0), se = F + 1.0;
+    const double F = mpm_dcoh_F(m, q->tst[c].sxx, q->tst[c].syy, q->tst[c].sxy, 0.0), se = F + 1.0;
     if (se > 0.0)
       kmin = fmin(kmin, 1.0 / se);
   }
@@ -319,16 +309,17 @@ static void commit(mpm_static *q)
   for (size_t c = 0; c < q->np; c++) {
     const size_t i = q->pid[c];
     const mpm_material *m = &s->mat[p->mat[i]];
+    const mpm_dstate *o = &q->tst[c];
     if (m->model != MPM_DCOH_NONE)
-      p->dis[i] += m->U0 * (fmin(q->tlam[c], 1.0) - fmin(p->lam[i], 1.0)) * p->V[i] / m->Le;
-    p->sxx[i] = q->tsxx[c];
-    p->syy[i] = q->tsyy[c];
-    p->sxy[i] = q->tsxy[c];
-    p->lam[i] = q->tlam[c];
-    p->upn[i] = q->tupn[c];
-    p->upt[i] = q->tupt[c];
-    p->sep[i] = q->tsep[c];
-    p->str2[i] = mpm_dcoh_str2(m, q->tlam[c], q->tsep[c]);
+      p->dis[i] += m->U0 * (fmin(o->lam, 1.0) - fmin(p->lam[i], 1.0)) * p->V[i] / m->Le;
+    p->sxx[i] = o->sxx;
+    p->syy[i] = o->syy;
+    p->sxy[i] = o->sxy;
+    p->lam[i] = o->lam;
+    p->upn[i] = o->upn;
+    p->upt[i] = o->upt;
+    p->sep[i] = (uint8_t)o->sep;
+    p->str2[i] = mpm_dcoh_str2(m, o->lam, o->sep);
     p->wcoh[i] += q->tw[c];
     s->n_soften += q->tpath[c] == MPM_DPATH_SOFTEN;
     s->n_separate += q->tpath[c] == MPM_DPATH_SEPARATE;

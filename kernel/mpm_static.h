@@ -54,8 +54,9 @@ struct mpm_static {
   double *R, *kfd, *ga, *x1, *x2, *du;
   double gb;              /* d Ct / d delta through the gripped components               */
   /* the particles' trial state (np each) and what the increment booked */
-  double *tsxx, *tsyy, *tsxy, *tlam, *tupn, *tupt, *tw;
-  uint8_t *tsep, *tpath;
+  mpm_dstate *tst;        /* each particle's state after the update                      */
+  double *tw;             /* ... the traction work it booked                             */
+  uint8_t *tpath;         /* ... and the update's path (MPM_DPATH_*)                    */
   mpm_dwork *dw;
   /* loads and dissipation of the trial state */
   double Pg, Pf, Dt, Dn;
@@ -70,7 +71,6 @@ struct mpm_static {
   double pk_d;             /* delta at the largest load so far                          */
   double ch_d, ch_P;      /* the last increment's chord over (pk_d, the peak load)       */
   int nel;                /* equal grip increments left before the first initiation      */
-  int have_factor;        /* factors of some tangent are held                           */
   int have_eval;          /* the last evaluation is of the committed state               */
   int have_pred;          /* pdir, pden are the committed state's                        */
   double *pdir;           /* d u / d delta at the committed state (unknowns)             */
@@ -80,7 +80,6 @@ struct mpm_static {
    * copies of each split node, as a stiff elastic tie until it initiates */
   int iface;
   uint8_t *split;         /* nn: 1 where a node has the far side's second slot            */
-  int nsn;                /* split nodes                                                */
   int *snode;             /* their node indices                                        */
   double *sA;             /* their weights A = max(a_0 . n, 0), a_0 the near side's sum of
                              V grad N (the force of a uniform stress: sigma a_0)        */
@@ -90,8 +89,7 @@ struct mpm_static {
   double *pA;             /* per segment: sum of its nodes' A                           */
   mpm_dstate *pst, *ptr;  /* the law's committed and trial state per segment            */
   double *pw;             /* trial: the law's work this increment, times pA             */
-  size_t kpair;           /* where the segments' entries start in map                    */
-  size_t *kseg;           /* ... and each segment's                                     */
+  size_t *kseg;           /* where each segment's entries start in map                   */
   mpm_material imat;      /* the law as a material of the update: E1 = G = k0, E2 = 0, Le 1 */
 };
 

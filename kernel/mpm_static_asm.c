@@ -22,13 +22,6 @@
 #include "mpm_shape.h"
 #include "mpm_static.h"
 
-static double now(void)
-{
-  struct timespec ts;
-  clock_gettime(CLOCK_MONOTONIC, &ts);
-  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
 /* One particle's stencil: nodes with a weight or a gradient, at reference (x0, y0). */
 static int stencil(const mpm_sim *s, double x0, double y0, int *node, double *N, double *Gx, double *Gy)
 {
@@ -89,11 +82,12 @@ mpm_status mpm_static_setup(mpm_static *q, char *err, size_t errlen)
   q->held = calloc(2 * q->nslot, sizeof(double));
   q->Un = calloc(2 * q->nslot, sizeof(double));
   q->Ut = calloc(2 * q->nslot, sizeof(double));
-  double **t[] = {&q->tsxx, &q->tsyy, &q->tsxy, &q->tlam, &q->tupn, &q->tupt, &q->tw};
+  q->tst = malloc((np ? np : 1) * sizeof *q->tst);
+  double **t[] = {&q->tw};
   int ok = q->pid && q->cnt && q->node && q->N && q->Gx && q->Gy && q->eq && q->held && q->Un && q->Ut;
   for (size_t i = 0; ok && i < sizeof t / sizeof t[0]; i++)
     ok = (*t[i] = malloc((np ? np : 1) * sizeof(double))) != NULL;
-  ok = ok && (q->tsep = malloc(np ? np : 1)) && (q->tpath = malloc(np ? np : 1)) && (q->dw = mpm_dwork_alloc());
+  ok = ok && q->tst && (q->tpath = malloc(np ? np : 1)) && (q->dw = mpm_dwork_alloc());
   if (!ok) {
     snprintf(err, errlen, "out of memory for the static solver's %zu particles", np);
     return MPM_ENOMEM;
@@ -205,7 +199,7 @@ mpm_status mpm_static_number(mpm_static *q, char *err, size_t errlen)
   }
   q->st.unknowns = n;
   q->st.nnz = mpm_lin_nnz(q->lin);
-  q->have_factor = q->have_eval = q->have_pred = 0;
+  q->have_eval = q->have_pred = 0;
   return MPM_OK;
 }
 
@@ -258,7 +252,7 @@ static void particle_tangent(mpm_static *q, size_t c, const mpm_material *m, con
 
 mpm_status mpm_static_eval(mpm_static *q, int tangent)
 {
-  const double t0 = now();
+  const double t0 = mpm_wall();
   mpm_sim *s = q->s;
   mpm_particles *p = s->p;
   const size_t M = MPM_ST_MAX, ns = q->nslot;
@@ -292,18 +286,11 @@ mpm_status mpm_static_eval(mpm_static *q, int tangent)
     }
     const mpm_material *m = &s->mat[p->mat[i]];
     const mpm_dstate in = {p->sxx[i], p->syy[i], p->sxy[i], p->lam[i], p->upn[i], p->upt[i], p->sep[i]};
-    mpm_dstate o;
     mpm_dinfo info;
-    const mpm_status st = mpm_dcoh_update(m, &in, de, &o, &info, q->dw);
+    const mpm_status st = mpm_dcoh_update(m, &in, de, &q->tst[c], &info, q->dw);
     if (st != MPM_OK && bad == MPM_OK)
       bad = st;
-    q->tsxx[c] = o.sxx;
-    q->tsyy[c] = o.syy;
-    q->tsxy[c] = o.sxy;
-    q->tlam[c] = o.lam;
-    q->tupn[c] = o.upn;
-    q->tupt[c] = o.upt;
-    q->tsep[c] = (uint8_t)o.sep;
+    const mpm_dstate o = q->tst[c];
     q->tpath[c] = (uint8_t)info.path;
     q->tw[c] = info.w * p->V[i] / (info.path == MPM_DPATH_SOFTEN ? m->Le : m->Lopen);
     const double wD = m->model != MPM_DCOH_NONE ? m->U0 * p->V[i] / m->Le : 0.0;
@@ -336,6 +323,6 @@ mpm_status mpm_static_eval(mpm_static *q, int tangent)
   q->Pf = Pf;
   q->Dt = D;
   q->Ct = C;
-  q->st.t_eval += now() - t0;
+  q->st.t_eval += mpm_wall() - t0;
   return bad;
 }

@@ -115,7 +115,6 @@ static int segments(mpm_static *q, const mpm_iface *f, const double *An)
   int n = 0;
   for (size_t nd = 0; nd < nn; nd++)
     n += q->split[nd];
-  q->nsn = n;
   q->snode = malloc((size_t)(n ? n : 1) * sizeof *q->snode);
   q->sA = malloc((size_t)(n ? n : 1) * sizeof(double));
   q->sseg = malloc((size_t)(n ? n : 1) * sizeof *q->sseg);
@@ -258,7 +257,6 @@ size_t mpm_static_iface_nz(const mpm_static *q)
 
 size_t mpm_static_iface_pattern(mpm_static *q, int *ti, int *tj, size_t k, size_t *m)
 {
-  q->kpair = k;
   for (int g = 0; g < q->nseg; g++) {
     q->kseg[g] = k;
     for (int a = q->segstart[g]; a < q->segstart[g + 1]; a++)

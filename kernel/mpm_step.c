@@ -63,13 +63,6 @@
  * its remaining strength squared on (a rounding margin, far above 1 ulp). */
 #define MPM_TRIAL_SAFE (1.0 - 1e-9)
 
-static double wall(void)
-{
-  struct timespec ts;
-  clock_gettime(CLOCK_MONOTONIC, &ts);
-  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
 static int thread_id(void)
 {
 #ifdef _OPENMP
@@ -114,7 +107,7 @@ static inline __attribute__((always_inline)) double flush_impl(const mpm_sim *s,
 {
   if (d->n == 0)
     return 0.0;
-  const double t0 = wall();
+  const double t0 = mpm_wall();
   double qs = 0.0;
   for (size_t i = 0; i < d->n; i++) {
     const size_t k = d->k[i];
@@ -173,7 +166,7 @@ static inline __attribute__((always_inline)) double flush_impl(const mpm_sim *s,
     acc->bracketed += info.bracketed;
   }
   d->n = 0;
-  acc->tconst += wall() - t0;
+  acc->tconst += mpm_wall() - t0;
   return qs;
 }
 
@@ -624,7 +617,7 @@ static mpm_status p2g(mpm_sim *s, char *err, size_t errlen)
 
 void mpm_phase_time(mpm_sim *s, int which)
 {
-  const double t = wall();
+  const double t = mpm_wall();
   s->time_split[which] += t - s->ph->tmark;
   s->ph->tmark = t;
 }
@@ -675,7 +668,7 @@ static void begin(mpm_sim *s)
   mpm_control_step(s);
   mpm_sim_cut(s);
   mpm_phase_hooks(s, MPM_PH_LAY);
-  s->ph->tmark = wall();
+  s->ph->tmark = mpm_wall();
   if (s->resort || s->step % MPM_SORT_EVERY == 0) {
     mpm_sim_sort(s);
     mpm_phase_time(s, MPM_T_SORT);

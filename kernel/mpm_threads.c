@@ -36,13 +36,6 @@
 #include "mpm.h"
 #include "mpm_kernel.h"
 
-static double wall(void)
-{
-  struct timespec ts;
-  clock_gettime(CLOCK_MONOTONIC, &ts);
-  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
 /* 1 if the machine has no idle core for a second thread: the 1-minute load average
  * (runnable tasks, this run's own thread among them) above the cores less one half.
  * Linux's /proc/loadavg; where it cannot be read, 0 (the probes decide alone). */
@@ -113,7 +106,7 @@ static void decide(mpm_threads *t)
     t->left--; /* a stretch on one thread needs no clock */
     return;
   }
-  const double now = wall(), dt = now - t->last;
+  const double now = mpm_wall(), dt = now - t->last;
   const int have = t->last > 0.0;
   t->last = now;
   if (t->phase == MPM_TPH_RUN) {
