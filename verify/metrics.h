@@ -142,6 +142,9 @@ double ver_curve_err_bar(const ana_bar *b, const double *delta, const double *P,
  * its peak, less the analytic branch's delta there, over delta_peak (NaN if it never
  * does).  NaN without rows. */
 double ver_curve_path(const ana_bar *b, const double *delta, const double *P, size_t n, double *d5);
+/* Its bound in verify's check (policy.c), at alpha 90 and inclined. */
+#define VER_PATH_TOL_90 0.005
+#define VER_PATH_TOL_INCLINED 0.01
 
 /* The same against the bar at the run's own grip speed (ana_wave: the 1-D wave solution
  * with the plane as a cohesive line xg from the grip; docs/verification.md "The exact
