@@ -201,6 +201,8 @@ void ver_report_static_cases(report *R);
 void ver_report_write_static(report *R, FILE *vars);
 /* The template placeholders static:<scene>:p, :verdict, :n and rate:<scene>:h<h>. */
 void ver_report_static_vars(report *R);
+/* Their table in the document (the convergence figure's section). */
+void ver_report_static_table(report *R);
 
 /* report_text.c */
 /* The figures, in the report's order (sets R->fig). */

@@ -13,9 +13,14 @@
 #include "metrics.h"
 #include "report.h"
 
-/* The finest h of each sweep scene's static line: fig6 h 1 costs about 12 CPU s at 4 ppc,
- * the inclined scenes at h 1 several times more (fig7 h 2: 6.4 s). */
+/* The finest h of each sweep scene's static line (CPU s at 4 ppc, one thread, measured
+ * on a loaded machine): fig6 h 1 29 s; fig7 h 2 6.4 s, fig8 h 2 22 s, and h 1 several
+ * times more. */
 static const double static_hmin[REP_NSWEEP] = {1, 2, 2};
+
+/* The least fitted order called convergence: below it the error falls by less than a
+ * third at each halving of h. */
+#define REP_ORDER_MIN 0.5
 
 void ver_report_static_cases(report *R)
 {
@@ -42,42 +47,17 @@ static const rep_case *static_at(const rep_ctx *r, const char *scene, double h)
   return NULL;
 }
 
-/* A static run's load as a function of delta: its rows up to the first where delta moves
- * back (a snapback), linearly interpolated. */
-typedef struct {
-  const double *d, *P;
-  size_t n;
-} static_curve;
-
-static double static_load(const void *ctx, double delta)
-{
-  const static_curve *q = ctx;
-  if (delta <= q->d[0])
-    return q->P[0] * (q->d[0] > 0 ? delta / q->d[0] : 1.0); /* from the unloaded origin */
-  for (size_t i = 1; i < q->n; i++)
-    if (delta <= q->d[i]) {
-      const double w = q->d[i] > q->d[i - 1] ? (delta - q->d[i - 1]) / (q->d[i] - q->d[i - 1]) : 1.0;
-      return q->P[i - 1] + w * (q->P[i] - q->P[i - 1]);
-    }
-  return q->P[q->n - 1];
-}
-
 /* The explicit run e's rate error: RMS of (P_e - P_s(delta)) / Pmax over e's rows up to
  * its curve-error window (ver_curve_end) and no further than the static run s follows
- * delta forward - the explicit curve error's definition (ver_curve_l2) with the static
- * curve in place of the analytic one.  NaN where either has no rows. */
+ * delta forward (ver_curve_err_curve: the explicit curve error with the static curve in
+ * place of the analytic one).  NaN where either has no rows. */
 static double rate_dist(const rep_case *e, const rep_case *s)
 {
   double *ed, *eP, *sd, *sP;
   const int ne = ver_report_load(e, &ed, &eP), ns = ver_report_load(s, &sd, &sP);
   double dist = NAN;
-  if (ne > 0 && ns > 1 && e->bar_ok) {
-    size_t m = 1;
-    while (m < (size_t)ns && sd[m] >= sd[m - 1])
-      m++;
-    const static_curve q = {sd, sP, m};
-    dist = ver_curve_l2(ed, eP, (size_t)ne, fmin(e->cmp_end, sd[m - 1]), e->bar.Pmax, static_load, &q, NULL, 0);
-  }
+  if (ne > 0 && ns > 0 && e->bar_ok)
+    dist = ver_curve_err_curve(sd, sP, (size_t)ns, ed, eP, (size_t)ne, e->cmp_end, e->bar.Pmax);
   free(ed);
   free(eP);
   free(sd);
@@ -131,12 +111,15 @@ void ver_report_write_static(report *R, FILE *vars)
     ft->n = n;
     ft->p_curve = ver_conv_order(hh, ep, (size_t)n, &ft->c_curve);
     ft->p_diss = ft->c_diss = NAN;
-    /* converges: an order above zero from three grids or more, the error falling at every
-     * refinement, and each grid within verify's bound on curve_path */
-    const char *v = n < 3 ? "too few grids"
-                    : !(ft->p_curve > 0) || !falls ? "does NOT converge"
-                    : within                      ? "converges"
-                                                  : "converges, above the bound";
+    /* converges: an order of REP_ORDER_MIN or more from three grids or more, the error
+     * falling at every refinement, each grid within verify's bound; levels off: the
+     * order is above zero but below that (a floor h does not remove) */
+    const char *v = n < 3                                     ? "too few grids"
+                    : !(ft->p_curve > 0)                      ? "does NOT converge"
+                    : ft->p_curve < REP_ORDER_MIN || !falls   ? (within ? "levels off, within the bound"
+                                                                        : "levels off, above the bound")
+                    : within                                  ? "converges"
+                                                              : "converges, above the bound";
     snprintf(R->sverdict[s], sizeof R->sverdict[s], "%s", v);
     fprintf(vars, "p_static_%s = %.6g\nc_static_%s = %.6g\nv_static_%s = \"%s\"\n", sc,
             isfinite(ft->p_curve) ? ft->p_curve : 0, sc, isfinite(ft->c_curve) ? ft->c_curve : -50, sc, v);
@@ -178,4 +161,28 @@ void ver_report_static_vars(report *R)
     }
     rep_vars_set(&R->vars, key, "%s", len ? buf : "none");
   }
+}
+
+static const char *fmt_num(double x, char *buf, size_t len)
+{
+  snprintf(buf, len, isfinite(x) ? "%.4g" : "n/a", x);
+  return buf;
+}
+
+void ver_report_static_table(report *R)
+{
+  static const char *const head[8] = {"case", "h", "curve_path", "RMS load error / Pmax", "D", "D analytic",
+                                      "CPU s", "explicit 4 ppc: distance from it"};
+  rep_table *t = rep_doc_table(&R->doc, 8, head);
+  for (int s = 0; s < REP_NSWEEP; s++)
+    for (double h = 8; h >= 1; h /= 2) {
+      const rep_case *c = static_at(&R->r, rep_sweep_scene[s], h), *e = ver_report_sweep(&R->r, rep_sweep_scene[s], h, REP_STATIC_PPC);
+      if (!c)
+        continue;
+      char a[32], b[32], d[32], f[32], g[32];
+      rep_table_row(t, c->complete ? REP_ROW_PLAIN : REP_ROW_FAIL, "%s\t%g\t%s\t%s\t%s\t%s\t%.3g\t%s", c->id, h,
+                    fmt_num(c->curve_path, a, sizeof a), fmt_num(c->curve_err, b, sizeof b),
+                    fmt_num(c->D_final, d, sizeof d), fmt_num(c->bar.D_sep, f, sizeof f), c->cpu_s,
+                    fmt_num(e && e->have ? rate_dist(e, c) : NAN, g, sizeof g));
+    }
 }
