@@ -19,7 +19,7 @@ do for [i=1:3] {
   ycol = sc eq "fig8" ? 3 : 2
   pt_line = sprintf(" u 4:($5 > 0.5 ? $%d : 1/0) w lp", ycol)
   set title sprintf("%s.ini%s", sc, ycol == 3 ? " (snapback): explicit lines dissipation error,\nstatic line distance from the analytic path" : ": load error")
-  set ylabel (ycol == 3 ? "|D / (U_0 area) - 1|; static: path distance / P_{max}" : "RMS load error / P_{max}")
+  set ylabel (ycol == 3 ? "explicit: |D / (U_0 area) - 1|" : "RMS load error / P_{max}")
   pf = sprintf('data/sweep-%s-paper.dat', sc)
   fi = sprintf('data/sweep-%s-iface.dat', sc)
   fb = sprintf('data/sweep-%s-band.dat', sc)
@@ -31,8 +31,12 @@ do for [i=1:3] {
   if (exists_file(fb)) { cmd = cmd.", fb".pt_line." pt 11 ps 1.5 lw 2 dt 4 lc rgb '#006400' title \"explicit, band method, 1 ppc\"" }
   fs = sprintf('data/sweep-%s-static.dat', sc)
   scol = sc eq "fig8" ? 2 : 3
-  stit = sc eq "fig8" ? "quasi-static solver, 4 ppc (path distance)" : "quasi-static solver, 4 ppc"
-  if (exists_file(fs)) { cmd = cmd.sprintf(", fs u 5:($6 > 0.5 ? $%d : 1/0) w lp pt 13 ps 1.6 lw 2.5 lc rgb '#e07000' title \"%s\"", scol, stit) }
+  stit = sc eq "fig8" ? "static solver, 4 ppc (path distance, right)" : "quasi-static solver, 4 ppc"
+  # fig8: the static line on its own axis (right), a distance along the path, not a D error
+  sax = sc eq "fig8" ? "x1y2" : "x1y1"
+  unset y2tics; unset y2label; unset logscale y2
+  if (sc eq "fig8") { set y2tics (0.001, 0.002, 0.003, 0.004, 0.006); set logscale y2; set y2range [0.0015:0.006]; set format y2 "%.3f"; set y2label "static: distance from the analytic path / P_{max}" }
+  if (exists_file(fs)) { cmd = cmd.sprintf(", fs u 5:($6 > 0.5 ? $%d : 1/0) axes %s w lp pt 13 ps 1.6 lw 2.5 lc rgb '#e07000' title \"%s\"", scol, sax, stit) }
   eval cmd
 }
 unset multiplot

@@ -108,6 +108,8 @@ void ver_report_measure(const rep_ctx *r, rep_case *c)
     c->curve_err = ver_curve_err_bar(b, d, P, (size_t)n, c->cmp_end, &c->max_dev, c->static_run);
     if (c->static_run)
       c->curve_path = ver_curve_path(b, d, P, (size_t)n, NULL);
+    if (c->static_run && b->snapback) /* P(delta) has two values: curve_path judges the path */
+      c->curve_err = c->max_dev = NAN;
     const ana_wave_params wp = ver_report_wave_params(c);
     c->curve_wave = ver_curve_err_wave(b, wp.speed, wp.rho, wp.xg, wp.thr, d, P, (size_t)n, c->cmp_end, NULL,
                                        &c->wave_peak);
