@@ -150,6 +150,23 @@ void ver_report_static_vars(report *R)
       rep_vars_set(&R->vars, key, "%.2g at h = %g (%.2g CPU s)", fin->curve_path, fin->h, fin->cpu_s);
     else
       rep_vars_set(&R->vars, key, "none");
+    /* the work-precision line from its cheapest to its dearest run: the load error, or
+     * curve_path on a snapback bar (the quantities workprec.gp draws) */
+    const rep_case *lo = NULL, *hi = NULL;
+    for (double h = 8; h >= 1; h /= 2) {
+      const rep_case *c = static_at(r, sc, h);
+      if (c && c->complete) {
+        lo = lo ? lo : c;
+        hi = c;
+      }
+    }
+    snprintf(key, sizeof key, "static:%s:wp", sc);
+    if (lo && hi != lo) {
+      const int sb = lo->bar_ok && lo->bar.snapback;
+      rep_vars_set(&R->vars, key, "%s %.2g to %.2g over %.2g to %.2g CPU s", sb ? "curve_path" : "load error",
+                   sb ? lo->curve_path : lo->curve_err, sb ? hi->curve_path : hi->curve_err, lo->cpu_s, hi->cpu_s);
+    } else
+      rep_vars_set(&R->vars, key, "n/a");
     snprintf(key, sizeof key, "rate:%s", sc);
     char buf[160] = "";
     size_t len = 0;
