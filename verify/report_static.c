@@ -18,8 +18,8 @@
  * times more. */
 static const double static_hmin[REP_NSWEEP] = {1, 2, 2};
 
-/* The least fitted order called convergence: below it the error falls by less than a
- * third at each halving of h. */
+/* The least fitted order called convergence: below it the error falls by less than 30 %
+ * at each halving of h (2^-0.5 = 0.71). */
 #define REP_ORDER_MIN 0.5
 
 void ver_report_static_cases(report *R)
@@ -30,7 +30,7 @@ void ver_report_static_cases(report *R)
       /* until 0: the scene's own stop rule, past the fall of the load that curve_path needs */
       const int k = ver_report_add(r, rep_sweep_scene[s], h, REP_STATIC_PPC, 0, 0, "solver.type=static", NULL,
                                    REP_STATIC, 0);
-      if (k >= 0) /* cost in particles x increments (a few hundred), not explicit steps */
+      if (k >= 0) /* particles (the paper's 192 x 32 bar) x increments (a few hundred), not steps */
         r->c[k].cost = 1e3 * 192 * 32 / (h * h) * REP_STATIC_PPC;
     }
 }
@@ -71,6 +71,13 @@ static double path_tol(const rep_case *c)
   return c->bar.p.alpha_deg == 90.0 ? VER_PATH_TOL_90 : VER_PATH_TOL_INCLINED;
 }
 
+static void data_failed(const rep_ctx *r, const char *path)
+{
+  fprintf(stderr, "delam report: %s: cannot write\n", path);
+  if (r->io_bad)
+    (*r->io_bad)++;
+}
+
 void ver_report_write_static(report *R, FILE *vars)
 {
   const rep_ctx *r = &R->r;
@@ -81,10 +88,11 @@ void ver_report_write_static(report *R, FILE *vars)
     char path[REP_PATH + 96];
     snprintf(path, sizeof path, "%s/%s", r->out, name);
     FILE *f = fopen(path, "w");
-    if (!f && r->io_bad)
-      (*r->io_bad)++;
+    if (!f)
+      data_failed(r, path);
     if (f)
-      fprintf(f, "h,curve_path,curve_err,abs_diss_err,cpu_s,complete,particles,rate_dist,explicit_err,explicit_cpu_s\n");
+      fprintf(f, "h,curve_path,curve_err,abs_diss_err,cpu_s,complete,particles,rate_dist,explicit_err,"
+                 "explicit_cpu_s\n");
     double hh[8], ep[8];
     int n = 0, falls = 1, within = 1;
     for (double h = 8; h >= 1; h /= 2) {
@@ -104,8 +112,13 @@ void ver_report_write_static(report *R, FILE *vars)
         ep[n++] = c->curve_path;
       }
     }
-    if (f && (ferror(f) | fclose(f)) && r->io_bad)
-      (*r->io_bad)++;
+    if (f) { /* a file not written whole is removed: no figure is drawn from part of it */
+      const int bad = ferror(f);
+      if (fclose(f) != 0 || bad) {
+        remove(path);
+        data_failed(r, path);
+      }
+    }
     rep_fit *ft = &R->sfits[s];
     memset(ft, 0, sizeof *ft);
     ft->n = n;
@@ -193,7 +206,8 @@ void ver_report_static_table(report *R)
   rep_table *t = rep_doc_table(&R->doc, 8, head);
   for (int s = 0; s < REP_NSWEEP; s++)
     for (double h = 8; h >= 1; h /= 2) {
-      const rep_case *c = static_at(&R->r, rep_sweep_scene[s], h), *e = ver_report_sweep(&R->r, rep_sweep_scene[s], h, REP_STATIC_PPC);
+      const rep_case *c = static_at(&R->r, rep_sweep_scene[s], h);
+      const rep_case *e = ver_report_sweep(&R->r, rep_sweep_scene[s], h, REP_STATIC_PPC);
       if (!c)
         continue;
       char a[32], b[32], d[32], f[32], g[32];
