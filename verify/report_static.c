@@ -14,7 +14,7 @@
 #include "report.h"
 
 /* The finest h of each sweep scene's static line (CPU s at 4 ppc, one thread, measured
- * on a loaded machine): fig6 h 1 29 s; fig7 h 2 6.4 s, fig8 h 2 22 s, and h 1 several
+ * on a loaded machine): fig6 h 1 29 s; fig7 h 2 5.1 s, fig8 h 2 44 s, and h 1 several
  * times more. */
 static const double static_hmin[REP_NSWEEP] = {1, 2, 2};
 
