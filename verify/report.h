@@ -31,6 +31,7 @@ enum {
   REP_IFACE = 128,  /* an inclined paper scene with decohesion.path = interface (docs/methods.md) */
   REP_BAND = 256,   /* an inclined paper scene whose file runs the interface, with the band method */
   REP_WAVE = 512,   /* iface90.ini: Fig. 6's bar on the interface, against the exact solution at the grip speed */
+  REP_STATIC = 1024, /* the sweep scenes with the quasi-static solver (report_static.c)          */
 };
 
 /* Outcome of a time-step sweep point. */
@@ -89,6 +90,9 @@ typedef struct {
   double drop_width;    /* delta interval in which P fell from 0.9 to 0.1 of its peak; NaN    */
   double max_absP;      /* largest |P| in load.csv (blow-up test)                             */
   int rows;             /* rows of load.csv read                                              */
+  /* the quasi-static solver (solver.type = static: rows are equilibrium states) */
+  int static_run;       /* 1 if summary.json says the run was static                          */
+  double curve_path;    /* static: RMS distance from the analytic path (ver_curve_path); NaN  */
 } rep_case;
 
 typedef struct {
@@ -136,6 +140,8 @@ typedef struct {
   int verify_rc;           /* exit status of the report's own delam verify; -1 none */
   int sweep_from;          /* sweep points taken from the verify folder         */
   rep_fit fits[REP_NSWEEP];
+  rep_fit sfits[REP_NSWEEP]; /* the static sweep (REP_STATIC, 4 ppc): p_curve of curve_path */
+  char sverdict[REP_NSWEEP][48]; /* its verdict per scene (report_static.c)           */
   rep_fig fig[REP_MAX_FIGS];
   int nfig;
   double t_runs, t0;
@@ -184,6 +190,19 @@ void ver_report_verdict_summary(report *R);
 void ver_report_verdicts(report *R);
 /* Adds the table of the paper's numbers beside the measured ones. */
 void ver_report_paper_table(report *R);
+
+/* report_static.c: the sweep scenes with the quasi-static solver at REP_STATIC_PPC,
+ * h = 8, 4, 2 (and 1 for fig6), beside the explicit sweep */
+#define REP_STATIC_PPC 4
+void ver_report_static_cases(report *R);
+/* OUT/data/sweep-<scene>-static.dat (h, curve_path, RMS load error, |D error|, CPU s,
+ * complete, particles, and the explicit run's distance from the static one at the same h
+ * and ppc); fits R->sfits and verdicts R->sverdict; their vars in vars.gp. */
+void ver_report_write_static(report *R, FILE *vars);
+/* The template placeholders static:<scene>:p, :verdict, :n and rate:<scene>:h<h>. */
+void ver_report_static_vars(report *R);
+/* Their table in the document (the convergence figure's section). */
+void ver_report_static_table(report *R);
 
 /* report_text.c */
 /* The figures, in the report's order (sets R->fig). */

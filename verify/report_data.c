@@ -47,6 +47,7 @@ int ver_report_read_summary(rep_case *c)
   snprintf(c->path, sizeof c->path, "%s", d.path);
   snprintf(c->reversed_shear, sizeof c->reversed_shear, "%s", d.reversed_shear);
   c->path_reach = d.path_reach;
+  c->static_run = u->static_run;
   snprintf(c->le, sizeof c->le, "%s", d.le);
   snprintf(c->error, sizeof c->error, "%.255s", d.error);
   return 0;
@@ -88,7 +89,7 @@ void ver_report_measure(const rep_ctx *r, rep_case *c)
 {
   c->rho = c->imp_x = NAN;
   c->bar_ok = scene_bar(r, c->scene, &c->bar, &c->rho, &c->imp_x) == 0;
-  c->curve_wave = c->wave_peak = NAN;
+  c->curve_wave = c->wave_peak = c->curve_path = NAN;
   if (!c->have || !c->bar_ok)
     return;
   const ana_bar *b = &c->bar;
@@ -103,7 +104,12 @@ void ver_report_measure(const rep_ctx *r, rep_case *c)
     mabs = isfinite(P[i]) ? fmax(mabs, fabs(P[i])) : INFINITY;
   c->max_absP = mabs;
   if (n > 0) {
-    c->curve_err = ver_curve_err_bar(b, d, P, (size_t)n, c->cmp_end, &c->max_dev, 0);
+    /* a static run's rows are states, compared at their own delta (ver_curve_l2) */
+    c->curve_err = ver_curve_err_bar(b, d, P, (size_t)n, c->cmp_end, &c->max_dev, c->static_run);
+    if (c->static_run)
+      c->curve_path = ver_curve_path(b, d, P, (size_t)n, NULL);
+    if (c->static_run && b->snapback) /* P(delta) has two values: curve_path judges the path */
+      c->curve_err = c->max_dev = NAN;
     const ana_wave_params wp = ver_report_wave_params(c);
     c->curve_wave = ver_curve_err_wave(b, wp.speed, wp.rho, wp.xg, wp.thr, d, P, (size_t)n, c->cmp_end, NULL,
                                        &c->wave_peak);
