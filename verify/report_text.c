@@ -385,4 +385,5 @@ void ver_report_set_vars(report *R)
   sweep_vars(R);
   stab_vars(R);
   rate_vars(R);
+  ver_report_qs_vars(R);
 }
