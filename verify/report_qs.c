@@ -142,9 +142,9 @@ static void qs3_write(const rep_ctx *r, int i, int j, FILE *vars)
     if (r->io_bad)
       (*r->io_bad)++;
   }
-  char note[160];
-  qs_note(c, note, sizeof note);
-  fprintf(vars, "f3k_note_%d_%d = \"%s\"\nf3k_have_%d_%d = %d\n", i, j, note, i, j, c != NULL);
+  /* the figure's key is short: where it stopped is in the text */
+  fprintf(vars, "f3k_note_%d_%d = \"%s\"\nf3k_have_%d_%d = %d\n", i, j, c && !c->complete ? " (stopped)" : "", i, j,
+          c != NULL);
 }
 
 void ver_report_qs_write(const rep_ctx *r, FILE *vars)
