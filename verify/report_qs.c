@@ -94,18 +94,10 @@ static double qs_path(const rep_case *c, double *d5)
   return e;
 }
 
-/* " (stopped at delta = X, P = Y Pmax)" for a run that ended early, else "". */
+/* ", stopped" for a run that ended early (a key's note; where, in the text), else "". */
 static void qs_note(const rep_case *c, char *buf, size_t len)
 {
-  buf[0] = '\0';
-  if (c && !c->complete) {
-    double *d, *P;
-    const int n = ver_report_load(c, &d, &P);
-    snprintf(buf, len, " (stopped at {/Symbol d} = %.3g, P = %.2f P_{max})", c->delta_end,
-             n > 0 && c->bar_ok ? P[n - 1] / c->bar.Pmax : NAN);
-    free(d);
-    free(P);
-  }
+  snprintf(buf, len, "%s", c && !c->complete ? ", stopped" : "");
 }
 
 /* Fig. 3 in the kernel's axes: E e_ave / r0 with e_ave = delta / L, and
@@ -143,7 +135,7 @@ static void qs3_write(const rep_ctx *r, int i, int j, FILE *vars)
       (*r->io_bad)++;
   }
   /* the figure's key is short: where it stopped is in the text */
-  fprintf(vars, "f3k_note_%d_%d = \"%s\"\nf3k_have_%d_%d = %d\n", i, j, c && !c->complete ? " (stopped)" : "", i, j,
+  fprintf(vars, "f3k_note_%d_%d = \"%s\"\nf3k_have_%d_%d = %d\n", i, j, c && !c->complete ? ", stopped" : "", i, j,
           c != NULL);
 }
 
