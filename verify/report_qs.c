@@ -94,6 +94,17 @@ static double qs_path(const rep_case *c, double *d5)
   return e;
 }
 
+/* The load of a run's last row (NaN without rows). */
+static double qs_last_P(const rep_case *c)
+{
+  double *d, *P;
+  const int n = ver_report_load(c, &d, &P);
+  const double last = n > 0 ? P[n - 1] : NAN;
+  free(d);
+  free(P);
+  return last;
+}
+
 /* ", stopped" for a run that ended early (a key's note; where, in the text), else "". */
 static void qs_note(const rep_case *c, char *buf, size_t len)
 {
@@ -182,11 +193,11 @@ void ver_report_qs_vars(report *R)
     else
       snprintf(buf, sizeof buf,
                "Quasi-static solver (%.150s, `--solver static`, h = %g, %d ppc; docs/static.md): the run STOPPED at "
-               "delta = %.3g (%.200s); its rows up to there are drawn, marked as stopped in the key. Their distance "
-               "from the analytic path (curve_path, to the last row) is %.2g; peak %.4g (%+.1f %% against the "
-               "analytic); %ld increments, %.3g s CPU.",
-               c->id, c->h, c->ppc, c->delta_end, c->error[0] ? c->error : "no message", e, c->peak_P,
-               100 * (c->peak_P / c->bar.Pmax - 1), c->steps, c->cpu_s);
+               "delta = %.3g, P = %.2f Pmax (its message: %.300s); its rows up to there are drawn, marked as stopped "
+               "in the key. Their distance from the analytic path (curve_path, to the last row) is %.2g; peak %.4g "
+               "(%+.1f %% against the analytic); %ld increments, %.3g s CPU.",
+               c->id, c->h, c->ppc, c->delta_end, qs_last_P(c) / c->bar.Pmax, c->error[0] ? c->error : "none", e,
+               c->peak_P, 100 * (c->peak_P / c->bar.Pmax - 1), c->steps, c->cpu_s);
     rep_vars_set(&R->vars, key, "%s", buf);
   }
   /* Fig. 3: the largest curve_path over the complete runs, and the runs that stopped */
@@ -221,6 +232,10 @@ void ver_report_qs_vars(report *R)
   rep_vars_num(&R->vars, "fig3k:ppc", QS3_PPC);
   rep_vars_num(&R->vars, "fig3k:done", ndone);
   rep_vars_num(&R->vars, "fig3k:worst", worst >= 0 ? worst : NAN);
-  rep_vars_set(&R->vars, "fig3k:worst_case", "%s", wc ? wc->id : "(none)");
+  if (wc)
+    rep_vars_set(&R->vars, "fig3k:worst_case", "q = %g, g = %g: %s", rep_fig3_q[(int)wc->tag / 3],
+                 rep_fig3_g[(int)wc->tag % 3], wc->id);
+  else
+    rep_vars_set(&R->vars, "fig3k:worst_case", "no complete run");
   rep_vars_set(&R->vars, "fig3k:stopped", "%s", nstop ? stopped : "none");
 }
