@@ -20,7 +20,7 @@ static const char *const qs_scene[3] = {"fig8", "a45", "a30"};
 #define QS_H 4.0
 #define QS_PPC 4
 /* Fig. 3's bars: fig6.ini's band at its coarsest grid; the curves lie within a line's
- * width of the closed form there (curve_path 0.002-0.004 of the peak, docs/static.md). */
+ * width of the closed form there (curve_path 0.0016-0.0039, docs/static.md). */
 #define QS3_SCENE "fig6"
 #define QS3_H 8.0
 #define QS3_PPC 4
@@ -63,7 +63,7 @@ void ver_report_qs_cases(rep_ctx *r)
     }
 }
 
-/* The static case of scene s (REP_QS), with a result, or NULL. */
+/* The static run of a snapback scene (REP_QS), with a result, or NULL. */
 static const rep_case *qs_case(const rep_ctx *r, const char *scene)
 {
   const rep_case *c = ver_report_first(r, REP_QS, scene);
