@@ -12,6 +12,7 @@
 #define REP_NSET 13 /* at least VER_PAPER_NSETS (checked in report_run.c) */
 
 #include <stddef.h>
+#include <stdio.h>
 
 #include "ana.h"
 #include "report_doc.h"
@@ -32,6 +33,8 @@ enum {
   REP_BAND = 256,   /* an inclined paper scene whose file runs the interface, with the band method */
   REP_WAVE = 512,   /* iface90.ini: Fig. 6's bar on the interface, against the exact solution at the grip speed */
   REP_STATIC = 1024, /* the sweep scenes with the quasi-static solver (report_static.c)          */
+  REP_QS = 4096,    /* a snapback scene on the quasi-static solver (report_qs.c)                  */
+  REP_QS3 = 8192,   /* one of Fig. 3's nine bars on the quasi-static solver (report_qs.c; tag 3 i + j) */
 };
 
 /* Outcome of a time-step sweep point. */
@@ -233,6 +236,14 @@ int ver_report_run_cases(rep_ctx *r);
  * progress line says so instead of "failed". */
 void ver_report_spawn_all(char ***argvs, const char *cwd, char **logs, char **names, int n, int jobs,
                           int *status, const char *what, const int *meant_to_fail);
+
+/* report_qs.c: the quasi-static solver's runs, the snapback scenes (REP_QS) and Fig. 3's
+ * nine bars (REP_QS3, q = rep_fig3_q[i], g = rep_fig3_g[j]). */
+void ver_report_qs_cases(rep_ctx *r);
+/* Their vars (qs_<scene>, f3k_*) and OUT/data/fig3-kernel-q<q>-g<g>.csv. */
+void ver_report_qs_write(const rep_ctx *r, FILE *vars);
+/* Their placeholders (qs_<scene>:para, fig3k:*). */
+void ver_report_qs_vars(report *R);
 
 /* report_data.c */
 /* Reads summary.json of c->dir into *c; 0 if read. */

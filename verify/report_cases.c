@@ -294,6 +294,8 @@ void ver_report_build_cases(report *R)
       ver_report_add_sets(r, sc, 4, 1, 0, 1.0, musl, 1 + nb, REP_SCHEME, 1);
     }
   }
+  /* the quasi-static solver: the snapback scenes and Fig. 3's bars (report_qs.c) */
+  ver_report_qs_cases(r);
 }
 
 const rep_case *ver_report_first(const rep_ctx *r, int role, const char *scene)

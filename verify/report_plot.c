@@ -380,6 +380,7 @@ void ver_report_write_data(report *R)
             scenes[s], c->bar.p.alpha_deg);
   }
   write_fig3(r, vars);
+  ver_report_qs_write(r, vars);
   write_sweeps(r, R->fits, vars);
   ver_report_write_static(R, vars);
   write_stab(r, vars);

@@ -386,4 +386,5 @@ void ver_report_set_vars(report *R)
   stab_vars(R);
   rate_vars(R);
   ver_report_static_vars(R);
+  ver_report_qs_vars(R);
 }
