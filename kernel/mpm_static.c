@@ -54,10 +54,6 @@ void mpm_static_free(mpm_static *q)
 {
   if (!q)
     return;
-  if (getenv("DELAM_STATIC_KIN"))
-    fprintf(stderr, "static kinematics %s: first cell crossing at delta %.6g, largest |u| / h %.4f before the cut, "
-            "%.4f at the end; stencils changed %ld times, patterns built %ld times\n", q->ul ? "updated" : "total",
-            q->kin_cross, q->kin_umax_cut, q->kin_umax, q->ul_moved, q->ul_renumber);
   void *f[] = {q->pid, q->cnt, q->node, q->N, q->Gx, q->Gy, q->eq, q->held, q->map, q->Un, q->Ut, q->R, q->kfd,
                q->ga, q->x1, q->x2, q->du, q->pdir, q->tst, q->tw, q->tpath};
   for (size_t i = 0; i < sizeof f / sizeof f[0]; i++)
@@ -108,14 +104,6 @@ mpm_status mpm_static_alloc(mpm_sim *s, mpm_static **out, char *err, size_t errl
   if (!q)
     return MPM_ENOMEM;
   q->s = s;
-  const char *kin = getenv("DELAM_STATIC_KIN");
-  q->ul = kin && strcmp(kin, "updated") == 0;
-  q->kin_cross = NAN;
-  if (q->ul && s->sc.model != MPM_DCOH_NONE && s->sc.path == MPM_PATH_IFACE) {
-    snprintf(err, errlen, "DELAM_STATIC_KIN=updated: not with decohesion.path = interface");
-    free(q);
-    return MPM_EINVAL;
-  }
   if ((st = mpm_static_setup(q, err, errlen)) != MPM_OK || (st = mpm_static_number(q, err, errlen)) != MPM_OK) {
     mpm_static_free(q);
     return st;
@@ -336,28 +324,12 @@ static void commit(mpm_static *q)
     s->n_soften += q->tpath[c] == MPM_DPATH_SOFTEN;
     s->n_separate += q->tpath[c] == MPM_DPATH_SEPARATE;
     double ux = 0.0, uy = 0.0;
-    if (q->ul) { /* the increment's displacement at the place the increment started from */
-      for (int a = 0; a < q->cnt[c]; a++) {
-        const size_t nd = (size_t)q->node[c * M + (size_t)a];
-        ux += q->N[c * M + (size_t)a] * (q->Ut[2 * nd] - q->Un[2 * nd]);
-        uy += q->N[c * M + (size_t)a] * (q->Ut[2 * nd + 1] - q->Un[2 * nd + 1]);
-      }
-      p->x[i] += ux;
-      p->y[i] += uy;
-    } else {
-      for (int a = 0; a < q->cnt[c]; a++) {
-        ux += q->N[c * M + (size_t)a] * q->Ut[2 * (size_t)q->node[c * M + (size_t)a]];
-        uy += q->N[c * M + (size_t)a] * q->Ut[2 * (size_t)q->node[c * M + (size_t)a] + 1];
-      }
-      p->x[i] = p->x0[i] + ux;
-      p->y[i] = p->y0[i] + uy;
+    for (int a = 0; a < q->cnt[c]; a++) {
+      ux += q->N[c * M + (size_t)a] * q->Ut[2 * (size_t)q->node[c * M + (size_t)a]];
+      uy += q->N[c * M + (size_t)a] * q->Ut[2 * (size_t)q->node[c * M + (size_t)a] + 1];
     }
-    const double h = s->sc.h, um = hypot(p->x[i] - p->x0[i], p->y[i] - p->y0[i]) / h;
-    q->kin_umax = fmax(q->kin_umax, um);
-    if (!s->cut)
-      q->kin_umax_cut = fmax(q->kin_umax_cut, um);
-    if (isnan(q->kin_cross) && (floor(p->x[i] / h) != floor(p->x0[i] / h) || floor(p->y[i] / h) != floor(p->y0[i] / h)))
-      q->kin_cross = q->dt;
+    p->x[i] = p->x0[i] + ux;
+    p->y[i] = p->y0[i] + uy;
   }
   s->W_ext += 0.5 * (s->P_grip + q->Pg) * (q->dt - q->dn); /* trapezoid: exact on straight pieces */
   q->dlast = q->dt - q->dn;
@@ -409,27 +381,6 @@ static int stalls(mpm_static *q)
   const double old = q->cring[k];
   q->cring[k] = q->Cn;
   return q->st.increments >= MPM_QS_STALL && q->Cn - old < MPM_QS_STALL_C * q->Dref;
-}
-
-/* Updated Lagrangian: the grid is reset (the free and unused components' displacements
- * to 0; the grip keeps -delta, a held component its value, so that the next increment's
- * strain is measured from here) and the stencils are taken at the particles' new places;
- * the pattern again where a particle's nodes changed. */
-static mpm_status ul_reset(mpm_static *q, char *err, size_t errlen)
-{
-  int changed = 0;
-  mpm_static_restencil(q, &changed);
-  changed |= q->s->n_separate != q->ul_nsep; /* the separated particles' nodes drop out */
-  q->ul_nsep = q->s->n_separate;
-  mpm_status st = MPM_OK;
-  if (changed) {
-    q->ul_renumber++;
-    st = mpm_static_number(q, err, errlen);
-  }
-  /* after the numbering: a node the particles reach in the grip starts at -delta */
-  for (size_t i = 0; i < 2 * q->nslot; i++)
-    q->Un[i] = q->Ut[i] = q->eq[i] == MPM_DOF_GRIP ? -q->dn : q->eq[i] == MPM_DOF_HELD ? q->held[i] : 0.0;
-  return st;
 }
 
 static void set_mode(mpm_static *q, int mode)
@@ -496,15 +447,6 @@ mpm_status mpm_static_step(mpm_static *q, char *err, size_t errlen)
       q->have_pred = 0;
       if (predictor(q) != MPM_OK)
         q->have_eval = 0;
-      if (q->ul) {
-        /* the predictor is the converged state's (at the places the increment started
-         * from: the tangent at the new places and no strain would be elastic for the
-         * softening particles); a new pattern asks for it again */
-        const mpm_status st = ul_reset(q, err, errlen);
-        if (st != MPM_OK)
-          return st;
-        q->have_eval = 0;
-      }
       q->st.increments++;
       q->st.mode = q->mode;
       const double grow = iters <= MPM_QS_EASY ? 1.5 : iters >= MPM_QS_HARD ? 0.6 : 1.0;

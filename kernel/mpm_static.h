@@ -91,15 +91,6 @@ struct mpm_static {
   double *pw;             /* trial: the law's work this increment, times pA             */
   size_t *kseg;           /* where each segment's entries start in map                   */
   mpm_material imat;      /* the law as a material of the update: E1 = G = k0, E2 = 0, Le 1 */
-  /* updated Lagrangian (experimental, DELAM_STATIC_KIN=updated): after each increment the
-   * particles move by its displacement, the grid is reset and the stencils are taken at
-   * the new places */
-  int ul;
-  long ul_moved;          /* particles whose stencil changed its nodes, summed over steps */
-  long ul_renumber;       /* patterns built again                                        */
-  long ul_nsep;           /* s->n_separate when the pattern was built                    */
-  double kin_cross;       /* delta when a particle first left its reference cell          */
-  double kin_umax, kin_umax_cut; /* the largest |u| / h, and before the cut               */
 };
 
 /* mpm_static_iface.c */
@@ -116,6 +107,5 @@ void mpm_static_iface_free(mpm_static *q);
 mpm_status mpm_static_setup(mpm_static *q, char *err, size_t errlen);
 mpm_status mpm_static_number(mpm_static *q, char *err, size_t errlen);
 mpm_status mpm_static_eval(mpm_static *q, int tangent);
-void mpm_static_restencil(mpm_static *q, int *changed);
 
 #endif

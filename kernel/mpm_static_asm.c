@@ -103,31 +103,6 @@ mpm_status mpm_static_setup(mpm_static *q, char *err, size_t errlen)
   return q->iface ? mpm_static_iface_setup(q, err, errlen) : MPM_OK;
 }
 
-/* Updated Lagrangian (q->ul): the stencils again at the particles' current places
- * (p->x, p->y); *changed is 1 if any particle's node set changed (the pattern must be
- * built again, mpm_static_number). */
-void mpm_static_restencil(mpm_static *q, int *changed)
-{
-  const mpm_sim *s = q->s;
-  const mpm_particles *p = s->p;
-  const size_t M = MPM_ST_MAX;
-  int nd[MPM_ST_MAX];
-  *changed = 0;
-  for (size_t c = 0; c < q->np; c++) {
-    const size_t k = q->pid[c];
-    const int cn = stencil(s, p->x[k], p->y[k], nd, q->N + c * M, q->Gx + c * M, q->Gy + c * M);
-    int same = cn == q->cnt[c];
-    for (int a = 0; same && a < cn; a++)
-      same = nd[a] == q->node[c * M + (size_t)a];
-    if (!same) {
-      *changed = 1;
-      q->ul_moved++;
-      q->cnt[c] = cn;
-      memcpy(q->node + c * M, nd, sizeof(int) * (size_t)cn);
-    }
-  }
-}
-
 /* Numbers the unknowns (active components that are not held) and builds the tangent's
  * pattern; again after a hold is added (the cut). */
 mpm_status mpm_static_number(mpm_static *q, char *err, size_t errlen)
@@ -136,14 +111,9 @@ mpm_status mpm_static_number(mpm_static *q, char *err, size_t errlen)
   const size_t M = MPM_ST_MAX, nn = q->nn, ns = q->nslot;
   for (size_t i = 0; i < 2 * ns; i++)
     q->eq[i] = MPM_DOF_OFF;
-  for (size_t c = 0; c < q->np; c++) {
-    /* updated Lagrangian: a separated particle carries no stiffness, and once the cut
-     * part has moved away a node may have no other (a singular tangent) */
-    if (q->ul && s->p->sep[q->pid[c]])
-      continue;
+  for (size_t c = 0; c < q->np; c++)
     for (int a = 0; a < q->cnt[c]; a++)
       q->eq[2 * (size_t)q->node[c * M + (size_t)a]] = q->eq[2 * (size_t)q->node[c * M + (size_t)a] + 1] = 0;
-  }
   /* a held node holds both its slots */
   for (size_t o = 0; o < ns; o += nn) {
     for (int i = 0; i < s->ngrip; i++)
