@@ -97,6 +97,11 @@ struct mpm_static {
 mpm_status mpm_static_iface_setup(mpm_static *q, char *err, size_t errlen);
 void mpm_static_iface_eval(mpm_static *q, int tangent, double *Ax, double *D, double *C);
 void mpm_static_iface_commit(mpm_static *q);
+/* One segment's step of the line's law returned along the flow at the step's end, for a
+ * jump increment w (x, y); the tangent S = d t / d w and gl = d lambda / d w; 0 where the
+ * segment is separated or separates in the step (the particle update takes those). */
+int mpm_static_seg_law(const mpm_material *m, const mpm_dstate *in, const double w[2], mpm_dstate *out, double *work,
+                       double S[2][2], double gl[2]);
 /* the segments' entries of the tangent's pattern from map position k; returns the next */
 size_t mpm_static_iface_pattern(mpm_static *q, int *ti, int *tj, size_t k, size_t *m);
 size_t mpm_static_iface_nz(const mpm_static *q); /* how many entries that is            */

@@ -288,6 +288,91 @@ static void jump(const mpm_static *q, int nd, double W[2], double w[2])
   }
 }
 
+
+/* The law's step on a segment, returned to the strength along the flow at the end of the
+ * step (closest point): the particle update freezes the flow direction m* at its elastic
+ * trial (secs. 3-4), which is first order in the trial's excess over the strength; the
+ * tie's stiffness k0 puts a segment's trial k0 |w| thousands of times past it, where the
+ * frozen direction is almost the larger component's alone (fig8's normal opening came out
+ * 1e-4 of eq. 19's).  Model 1 with isotropic k0 (E1 = G): t = t_tr - k0 ubar0 dl m*(t),
+ * m* = (s0 / se)(<sn> / snf^2, st / stf^2) (eqs. 19, 24), so with S = 1 - (lambda + dl)^q
+ * (eq. 23 at the end) each component is its trial over 1 + c dl / S, c = k0 ubar0 s0 /
+ * s_f^2, and eq. 23 is one equation in dl, solved by bisection.  Elastic and softening
+ * steps only: 0 where the segment is separated or separates in the step (no root), which
+ * the particle update takes.  Out: the state, the work, and with S_out the tangent
+ * d t / d w (x-y) and d lambda / d w. */
+int mpm_static_seg_law(const mpm_material *m, const mpm_dstate *in, const double w[2], mpm_dstate *out, double *work,
+                       double Sx[2][2], double glx[2])
+{
+  if (in->sep)
+    return 0;
+  const double nx = m->nx, ny = m->ny, tx = m->tx, ty = m->ty, k0 = m->E1;
+  const double sn0 = in->sxx * nx * nx + 2.0 * in->sxy * nx * ny + in->syy * ny * ny;
+  const double st0 = in->sxx * nx * tx + in->sxy * (nx * ty + ny * tx) + in->syy * ny * ty;
+  const double tt0 = in->sxx * tx * tx + 2.0 * in->sxy * tx * ty + in->syy * ty * ty;
+  const double wn = w[0] * nx + w[1] * ny, wt = w[0] * tx + w[1] * ty;
+  const double an = sn0 + k0 * wn, at = st0 + k0 * wt; /* the elastic trial, eq. 7 */
+  const double S0 = 1.0 - pow(in->lam, m->q);
+  const double un0 = an > 0.0 ? an / m->snf : 0.0, ut0 = at / m->stf;
+  double sn = an, st = at, dl = 0.0, dldn = 0.0, dldt = 0.0, dsn[2] = {1.0, 0.0}, dst[2] = {0.0, 1.0};
+  if (sqrt(un0 * un0 + ut0 * ut0) > S0) {
+    const double K = k0 * m->ubar0 * m->s0, cn = an > 0.0 ? K / (m->snf * m->snf) : 0.0, ct = K / (m->stf * m->stf);
+    const double hi0 = 1.0 - in->lam;
+    /* psi(dl) = |(an / (snf (S + cn dl)), at / (stf (S + ct dl)))| - 1, decreasing */
+#define PSI(x) (hypot(an > 0.0 ? an / (m->snf * (1.0 - pow(in->lam + (x), m->q) + cn * (x))) : 0.0, \
+                      at / (m->stf * (1.0 - pow(in->lam + (x), m->q) + ct * (x)))) - 1.0)
+    if (!(hi0 > 0.0) || PSI(hi0) >= 0.0)
+      return 0; /* the step opens past separation */
+    double lo = 0.0, hi = hi0;
+    for (int it = 0; it < 200 && hi - lo > 1e-15 * hi0; it++) {
+      const double mid = 0.5 * (lo + hi);
+      if (PSI(mid) > 0.0)
+        lo = mid;
+      else
+        hi = mid;
+    }
+#undef PSI
+    dl = 0.5 * (lo + hi);
+    const double lq = in->lam + dl, S = 1.0 - pow(lq, m->q), Sp = -m->q * pow(lq, m->q - 1.0);
+    const double Dn = S + cn * dl, Dt = S + ct * dl;
+    sn = an * S / Dn;
+    st = at * S / Dt;
+    /* the tangent: implicit differentiation of psi(dl; an, at) = 0 */
+    const double un = an > 0.0 ? an / (m->snf * Dn) : 0.0, ut = at / (m->stf * Dt);
+    const double pn = an > 0.0 ? un / (m->snf * Dn) : 0.0, pt = ut / (m->stf * Dt);
+    const double pd = -un * un * (Sp + cn) / Dn - ut * ut * (Sp + ct) / Dt;
+    dldn = -pn / pd;
+    dldt = -pt / pd;
+    const double gn = S / Dn, gnp = cn * (Sp * dl - S) / (Dn * Dn);
+    const double gt = S / Dt, gtp = ct * (Sp * dl - S) / (Dt * Dt);
+    if (an > 0.0) {
+      dsn[0] = gn + an * gnp * dldn;
+      dsn[1] = an * gnp * dldt;
+    }
+    dst[0] = at * gtp * dldn;
+    dst[1] = gt + at * gtp * dldt;
+  }
+  const double dun = (an - sn) / k0, dut = (at - st) / k0; /* t = t_tr - k0 d ud */
+  const double tt = tt0 + m->E2 * (wn - dun); /* the frame's s_tt, unused by the law */
+  *out = *in;
+  out->lam = in->lam + dl;
+  out->upn = in->upn + dun;
+  out->upt = in->upt + dut;
+  out->sxx = sn * nx * nx + tt * tx * tx + 2.0 * st * nx * tx;
+  out->syy = sn * ny * ny + tt * ty * ty + 2.0 * st * ny * ty;
+  out->sxy = sn * nx * ny + tt * tx * ty + st * (nx * ty + ny * tx);
+  *work = 0.5 * ((sn0 + sn) * dun + (st0 + st) * dut);
+  /* x-y: t = sn n + st t, (an, at) = (sn0, st0) + k0 (w . n, w . t) */
+  const double dnw[2] = {k0 * nx, k0 * ny}, dtw[2] = {k0 * tx, k0 * ty};
+  for (int c = 0; c < 2; c++) {
+    const double dsnw = dsn[0] * dnw[c] + dsn[1] * dtw[c], dstw = dst[0] * dnw[c] + dst[1] * dtw[c];
+    Sx[0][c] = dsnw * nx + dstw * tx;
+    Sx[1][c] = dsnw * ny + dstw * ty;
+    glx[c] = dldn * dnw[c] + dldt * dtw[c];
+  }
+  return 1;
+}
+
 /* One segment's law and its nodes' forces; with the tangent, its entries. */
 static void segment_eval(mpm_static *q, int g, int tangent, double *Ax, double J[3][2])
 {
@@ -308,12 +393,16 @@ static void segment_eval(mpm_static *q, int g, int tangent, double *Ax, double J
       ws[c] += q->sA[i] / Ag * w[c];
     }
   }
-  double de[3];
+  double de[3], S[2][2], gl[2], wk = 0.0;
   jump_strain(m, ws[0], ws[1], de);
-  mpm_dinfo info;
-  mpm_dcoh_update(m, &q->pst[g], de, &q->ptr[g], &info, q->dw);
+  const int closest = mpm_static_seg_law(m, &q->pst[g], ws, &q->ptr[g], &wk, S, gl);
+  if (!closest) {
+    mpm_dinfo info;
+    mpm_dcoh_update(m, &q->pst[g], de, &q->ptr[g], &info, q->dw);
+    wk = info.w;
+  }
   const mpm_dstate *o = &q->ptr[g];
-  q->pw[g] = info.w * Ag;
+  q->pw[g] = wk * Ag;
   /* node I: A_I (t + k0 (W_I - W_seg)): the law on the segment's mean, a tie on the rest */
   const double t[2] = {o->sxx * m->nx + o->sxy * m->ny, o->sxy * m->nx + o->syy * m->ny};
   for (int a = a0; a < a1; a++) {
@@ -328,9 +417,10 @@ static void segment_eval(mpm_static *q, int g, int tangent, double *Ax, double J
   }
   if (!tangent)
     return;
-  double Dm[3][3], dl[3], S[2][2], gl[2];
-  mpm_dcoh_tangent(m, &q->pst[g], de, Dm, dl, q->dw);
-  for (int c = 0; c < 2; c++) { /* S = d t / d w, gl = d lambda / d w */
+  double Dm[3][3], dl[3];
+  if (!closest)
+    mpm_dcoh_tangent(m, &q->pst[g], de, Dm, dl, q->dw);
+  for (int c = 0; c < 2 && !closest; c++) { /* S = d t / d w, gl = d lambda / d w */
     double dsg[3];
     for (int i = 0; i < 3; i++)
       dsg[i] = Dm[i][0] * J[0][c] + Dm[i][1] * J[1][c] + Dm[i][2] * J[2][c];

@@ -14,11 +14,13 @@
 #include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include <cmocka.h>
 
 #include "mpm.h"
 #include "mpm_kernel.h"
+#include "mpm_static.h"
 #include "test_util.h"
 
 /* A 48 x 8 bar on h 4 at 4 ppc, g = 0.5 (U0 = 0.5 L snf^2 / E), the paper's flaw.  (On
@@ -226,10 +228,103 @@ static void test_mpm_static_refuses_one_point(void **state)
   refuse_case(MPM_SHAPE_GIMP, MPM_DCOH_MODEL1, "stalls");
 }
 
+
+/* The interface's law (mpm_static_seg_law) on its own: after a softening step the traction
+ * lies on the strength (eq. 23, F = 0), the opening increment is along the flow at the
+ * step's end (eqs. 19, 24: d ud parallel to (<sn> / snf^2, st / stf^2)), and the tangent
+ * d t / d w, d lambda / d w matches central differences.  Angles, strengths, states and
+ * jumps (opening, sliding, closing) spread over the scenes' range; k0 as the solver's. */
+static void test_mpm_static_seg_law(void **state)
+{
+  (void)state;
+  const double angles[] = {30.0, 45.0, 60.0, 90.0}, lams[] = {0.0, 0.3, 0.7};
+  const double dirs[][2] = {{1.0, 0.0}, {0.6, 0.8}, {-0.3, 1.0}, {1.0, -0.5}};
+  const double str[][2] = {{1.0, 10.0}, {10.0, 1.0}};
+  int cases = 0;
+  double worst_F = 0.0, worst_par = 0.0, worst_fd = 0.0;
+  for (size_t ia = 0; ia < sizeof angles / sizeof angles[0]; ia++)
+    for (size_t is = 0; is < 2; is++)
+      for (size_t il = 0; il < sizeof lams / sizeof lams[0]; il++)
+        for (size_t id = 0; id < sizeof dirs / sizeof dirs[0]; id++) {
+          mpm_scene sc;
+          memset(&sc, 0, sizeof sc);
+          sc.le_factor = 1.0;
+          sc.E = 1024.0;
+          sc.nu = 0.25;
+          sc.rho = 1.0;
+          sc.model = MPM_DCOH_MODEL1;
+          sc.alpha_deg = angles[ia];
+          sc.snf = str[is][0];
+          sc.stf = str[is][1];
+          sc.s0 = str[is][0];
+          sc.U0 = 0.375;
+          sc.q = 1.0;
+          sc.sep_threshold = 1.0;
+          mpm_material m;
+          mpm_material_init(&m, &sc, sc.snf, 1.0);
+          m.E1 = m.G = 1e6 * 1024.0 / 192.0; /* the solver's tie */
+          m.E2 = m.E1 - 2.0 * m.G;
+          m.Le = 1.0;
+          mpm_material_derive(&m);
+          /* a state on its strength: traction (sn, st) with se = 1 - lambda, along the flow
+           * direction of this jump's (n, t) components */
+          const double lam = lams[il], dn = dirs[id][0], dt = dirs[id][1];
+          const double an = dn > 0.0 ? dn * sc.snf : dn, at = dt * sc.stf;
+          const double se = hypot(an > 0.0 ? an / sc.snf : 0.0, at / sc.stf), S0 = 1.0 - lam;
+          const double sn0 = an * S0 / se, st0 = at * S0 / se;
+          mpm_dstate in = {0};
+          in.lam = lam;
+          in.sxx = sn0 * m.nx * m.nx + 2.0 * st0 * m.nx * m.tx;
+          in.syy = sn0 * m.ny * m.ny + 2.0 * st0 * m.ny * m.ty;
+          in.sxy = sn0 * m.nx * m.ny + st0 * (m.nx * m.ty + m.ny * m.tx);
+          /* a jump increment that opens it by a tenth of ubar0 along (dn, dt) */
+          const double a = 0.1 * m.ubar0 / hypot(dn, dt);
+          const double w[2] = {a * (dn * m.nx + dt * m.tx), a * (dn * m.ny + dt * m.ty)};
+          mpm_dstate out;
+          double wk, S[2][2], gl[2];
+          if (!mpm_static_seg_law(&m, &in, w, &out, &wk, S, gl))
+            continue; /* past separation: the particle update's */
+          if (!(out.lam > lam))
+            continue; /* elastic (closing) */
+          cases++;
+          worst_F = fmax(worst_F, fabs(mpm_dcoh_F(&m, out.sxx, out.syy, out.sxy, out.lam)));
+          const double sn = out.sxx * m.nx * m.nx + 2.0 * out.sxy * m.nx * m.ny + out.syy * m.ny * m.ny;
+          const double st = out.sxx * m.nx * m.tx + out.sxy * (m.nx * m.ty + m.ny * m.tx) + out.syy * m.ny * m.ty;
+          const double gn = sn > 0.0 ? sn / (sc.snf * sc.snf) : 0.0, gt = st / (sc.stf * sc.stf);
+          const double un = out.upn - in.upn, ut = out.upt - in.upt;
+          worst_par = fmax(worst_par, fabs(un * gt - ut * gn) / (hypot(un, ut) * hypot(gn, gt)));
+          for (int c = 0; c < 2; c++) {
+            const double hstep = 1e-7 * m.ubar0;
+            double wp[2] = {w[0], w[1]}, wm[2] = {w[0], w[1]};
+            wp[c] += hstep;
+            wm[c] -= hstep;
+            mpm_dstate op, om;
+            double S2[2][2], g2[2];
+            assert_true(mpm_static_seg_law(&m, &in, wp, &op, &wk, S2, g2));
+            assert_true(mpm_static_seg_law(&m, &in, wm, &om, &wk, S2, g2));
+            const double tp[2] = {op.sxx * m.nx + op.sxy * m.ny, op.sxy * m.nx + op.syy * m.ny};
+            const double tm[2] = {om.sxx * m.nx + om.sxy * m.ny, om.sxy * m.nx + om.syy * m.ny};
+            for (int r = 0; r < 2; r++) {
+              const double fd = (tp[r] - tm[r]) / (2.0 * hstep);
+              worst_fd = fmax(worst_fd, fabs(fd - S[r][c]) / (fabs(fd) + 1e-3 * m.E1 * 1e-6 + 1.0));
+            }
+            const double fl = (op.lam - om.lam) / (2.0 * hstep);
+            worst_fd = fmax(worst_fd, fabs(fl - gl[c]) / (fabs(fl) + 1.0));
+          }
+        }
+  print_message("# seg_law: %d softening cases, |F| <= %.2g, flow misalignment <= %.2g, tangent vs FD <= %.2g\n",
+                cases, worst_F, worst_par, worst_fd);
+  assert_true(cases >= 40);
+  assert_true(worst_F < 1e-9);
+  assert_true(worst_par < 1e-6);
+  assert_true(worst_fd < 1e-4);
+}
+
 int main(void)
 {
   const struct CMUnitTest tests[] = {
     cmocka_unit_test(test_mpm_static_elastic),
+    cmocka_unit_test(test_mpm_static_seg_law),
     cmocka_unit_test(test_mpm_static_snapback),
     cmocka_unit_test(test_mpm_static_interface_exact),
     cmocka_unit_test(test_mpm_static_refuses_one_point),
