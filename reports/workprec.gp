@@ -35,7 +35,7 @@ do for [i=1:3] {
   # fig8: the static line on its own axis (right), a distance along the path, not a D error
   sax = sc eq "fig8" ? "x1y2" : "x1y1"
   unset y2tics; unset y2label; unset logscale y2
-  if (sc eq "fig8") { set y2tics (0.001, 0.002, 0.003, 0.004, 0.006); set logscale y2; set y2range [0.0015:0.006]; set format y2 "%.3f"; set y2label "static: distance from the analytic path / P_{max}" }
+  if (sc eq "fig8") { set y2tics; set logscale y2; set y2range [*:*]; set format y2 "10^{%T}"; set y2label "static: distance from the analytic path / P_{max}" }
   if (exists_file(fs)) { cmd = cmd.sprintf(", fs u 5:($6 > 0.5 ? $%d : 1/0) axes %s w lp pt 13 ps 1.6 lw 2.5 lc rgb '#e07000' title \"%s\"", scol, sax, stit) }
   eval cmd
 }
