@@ -129,9 +129,8 @@ void mpm_sim_free(mpm_sim *s);
 /* One explicit step (eqs. 2-7) with the scene's scheme.  On failure, err names the step,
  * particle and field. */
 mpm_status mpm_sim_step(mpm_sim *s, char *err, size_t errlen);
-/* The grip's displacement delta; after `ahead` more steps at its current speed. */
+/* The grip's displacement delta. */
 double mpm_sim_delta(const mpm_sim *s);
-double mpm_sim_grip_u(const mpm_sim *s, int ahead);
 /* The scene the sim was made from (its copy). */
 const mpm_scene *mpm_sim_scene(const mpm_sim *s);
 
@@ -167,8 +166,6 @@ typedef struct {
   double L_damp;   /* taken by the local damping (time.damping)                       */
 } mpm_energy;
 void mpm_sim_energy(const mpm_sim *s, mpm_energy *e);
-/* Particle i's kinetic and elastic energy (plane-stress compliance of its material). */
-void mpm_particle_energy(const mpm_sim *s, size_t i, double *ke, double *se);
 
 /* ---- particles, read-only: structure of arrays, valid until the next step or free ----
  * A particle's material: the bar, the imperfection, the rigid head (the loading machine,
@@ -241,9 +238,8 @@ mpm_status mpm_static_step(mpm_static *q, char *err, size_t errlen);
 void mpm_static_stats_get(const mpm_static *q, mpm_static_stats *out);
 
 /* The manufactured solution (mpm_mms.c): a forced axial vibration with its body force,
- * u = A sin(pi X / L) sin(w t), nu = 0, 1 ppc, dt = 0.1 h / 8; the scene at grid h, and
- * the RMS particle displacement error over A at t = 10 (*e; MPM_OK or the step's status). */
-mpm_scene mpm_mms_scene(double h, int scheme, int bc);
+ * u = A sin(pi X / L) sin(w t), nu = 0, 1 ppc, dt = 0.1 h / 8, on grid h: the RMS
+ * particle displacement error over A at t = 10 (*e; MPM_OK or the step's status). */
 mpm_status mpm_mms_error(double h, int scheme, int bc, double *e, char *err, size_t errlen);
 
 #endif

@@ -434,6 +434,13 @@ static inline double mpm_band_le(const mpm_band *b, int j)
   return (k > 1.0 ? k : 1.0) * b->wlen;
 }
 
+/* The grip's displacement after `ahead` more steps at its current speed (0: delta). */
+double mpm_sim_grip_u(const mpm_sim *s, int ahead);
+/* Particle i's kinetic and elastic energy (plane-stress compliance of its material). */
+void mpm_particle_energy(const mpm_sim *s, size_t i, double *ke, double *se);
+/* The manufactured solution's scene at grid h (mpm_mms.c; mpm.h mpm_mms_error). */
+mpm_scene mpm_mms_scene(double h, int scheme, int bc);
+
 /* Sets up t for `requested` threads (<= 0: automatic, up to OpenMP's default). */
 void mpm_threads_init(mpm_threads *t, int requested, size_t particles);
 

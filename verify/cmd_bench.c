@@ -286,6 +286,46 @@ static int bench_static_case(int c, int repeat, int json)
   return 0;
 }
 
+/* One explicit case's row: its fastest run's time, rate, time split and memory. */
+static void print_case(const char *id, int threads, int repeat, const mpm_sim *s, long steps, double wall, double cpu,
+                       int json)
+{
+  mpm_sim_info in;
+  mpm_sim_info_get(s, &in);
+  mpm_particle_view p;
+  mpm_sim_particles(s, &p);
+  const double ups = (double)p.n * (double)steps / wall;
+  double split = 0.0;
+  for (int q = 0; q < MPM_T_N; q++)
+    split += in.time_split[q];
+  const size_t bpp = mpm_sim_bytes_per_particle(s);
+  if (json) {
+    cJSON *o = cJSON_CreateObject();
+    cJSON_AddStringToObject(o, "case", id);
+    cJSON_AddNumberToObject(o, "threads", threads);
+    cJSON_AddNumberToObject(o, "repeat", repeat);
+    cJSON_AddNumberToObject(o, "particles", (double)p.n);
+    cJSON_AddNumberToObject(o, "steps", (double)steps);
+    cJSON_AddNumberToObject(o, "wall_s", wall);
+    cJSON_AddNumberToObject(o, "cpu_s", cpu);
+    cJSON_AddNumberToObject(o, "updates_per_s", ups);
+    const char *names[MPM_T_N] = {"sort_s", "p2g_s", "grid_s", "g2p_s", "constitutive_s"};
+    for (int q = 0; q < MPM_T_N; q++)
+      cJSON_AddNumberToObject(o, names[q], in.time_split[q]);
+    cJSON_AddNumberToObject(o, "decohesion_updates", (double)(in.n_soften + in.n_separate));
+    cJSON_AddNumberToObject(o, "bytes_per_particle", (double)bpp);
+    char *txt = cJSON_PrintUnformatted(o);
+    printf("%s\n", txt);
+    free(txt);
+    cJSON_Delete(o);
+  } else {
+    printf("%-28s %3d %8zu %6ld %7.2f %7.2f %9.1f  %5.1f %5.1f %5.1f %5.1f %5.1f  %4zu\n", id, threads,
+           p.n, steps, wall, cpu, ups / 1e6, 100 * in.time_split[0] / split,
+           100 * in.time_split[1] / split, 100 * in.time_split[2] / split, 100 * in.time_split[3] / split,
+           100 * in.time_split[4] / split, bpp);
+  }
+}
+
 int ver_cmd_bench(int argc, char **argv)
 {
   int threads = 0, json = 0, repeat = 3;
@@ -336,42 +376,9 @@ int ver_cmd_bench(int argc, char **argv)
           mpm_sim_free(t);
         }
       }
-      mpm_sim_info in;
-      mpm_sim_info_get(s, &in);
-      mpm_particle_view p;
-      mpm_sim_particles(s, &p);
-      const double ups = (double)p.n * (double)steps / wall;
-      double split = 0.0;
-      for (int q = 0; q < MPM_T_N; q++)
-        split += in.time_split[q];
       char id[96];
       snprintf(id, sizeof id, "%s-h%g-ppc%d-%s", vs.name, cases[c].h, cases[c].ppc, cases[c].method);
-      const size_t bpp = mpm_sim_bytes_per_particle(s);
-      if (json) {
-        cJSON *o = cJSON_CreateObject();
-        cJSON_AddStringToObject(o, "case", id);
-        cJSON_AddNumberToObject(o, "threads", tlist[ti]);
-        cJSON_AddNumberToObject(o, "repeat", repeat);
-        cJSON_AddNumberToObject(o, "particles", (double)p.n);
-        cJSON_AddNumberToObject(o, "steps", (double)steps);
-        cJSON_AddNumberToObject(o, "wall_s", wall);
-        cJSON_AddNumberToObject(o, "cpu_s", cpu);
-        cJSON_AddNumberToObject(o, "updates_per_s", ups);
-        const char *names[MPM_T_N] = {"sort_s", "p2g_s", "grid_s", "g2p_s", "constitutive_s"};
-        for (int q = 0; q < MPM_T_N; q++)
-          cJSON_AddNumberToObject(o, names[q], in.time_split[q]);
-        cJSON_AddNumberToObject(o, "decohesion_updates", (double)(in.n_soften + in.n_separate));
-        cJSON_AddNumberToObject(o, "bytes_per_particle", (double)bpp);
-        char *txt = cJSON_PrintUnformatted(o);
-        printf("%s\n", txt);
-        free(txt);
-        cJSON_Delete(o);
-      } else {
-        printf("%-28s %3d %8zu %6ld %7.2f %7.2f %9.1f  %5.1f %5.1f %5.1f %5.1f %5.1f  %4zu\n", id, tlist[ti],
-               p.n, steps, wall, cpu, ups / 1e6, 100 * in.time_split[0] / split,
-               100 * in.time_split[1] / split, 100 * in.time_split[2] / split, 100 * in.time_split[3] / split,
-               100 * in.time_split[4] / split, bpp);
-      }
+      print_case(id, tlist[ti], repeat, s, steps, wall, cpu, json);
       fflush(stdout);
       mpm_sim_free(s);
     }
