@@ -14,19 +14,19 @@
 
 /* ---- The method options, as the kernel reads them (the enums: mpm.h; the keys:
  * docs/scene-keys.md) ---- */
-/* Le, the effective length V_e / A_d of eq. 41 (docs/model.md sec. 6): CELL, the paper's
- * h max(|sin a|, |cos a|), exact for a band one cell wide per row; PARTICLE, the same
- * for the particle's square; STAIRCASE, h (|sin a| + |cos a|), the width of the
+/* decohesion.Le, the effective length V_e / A_d of eq. 41 (docs/model.md sec. 6): CELL,
+ * the paper's h max(|sin a|, |cos a|), exact for a band one cell wide per row; PARTICLE,
+ * the same for the particle's square; STAIRCASE, h (|sin a| + |cos a|), the width of the
  * narrowest band of cells that can open along an inclined line (mpm_sim.c). */
 
-/* USL: strain from v^L (the paper, eq. 7).  MUSL: strain from the nodal velocity
- * re-projected from the updated particle velocities, which keeps nearly empty nodes
- * (tiny m_i, finite f_i) from injecting huge strain increments.  USF: the stress is
+/* time.scheme. USL: strain from v^L (the paper, eq. 7). MUSL: strain from the nodal
+ * velocity re-projected from the updated particle velocities, which keeps nearly empty
+ * nodes (tiny m_i, finite f_i) from injecting huge strain increments. USF: the stress is
  * updated first, from the projected nodal velocity v_i, and the nodal forces come from
- * the new stress (Bardenhagen 2002).  USAVG: half the strain increment as USF before
- * the forces, half as USL after them (Nairn 2003).  mpm_step.c has the energy of each. */
+ * the new stress (Bardenhagen 2002). USAVG: half the strain increment as USF before the
+ * forces, half as USL after them (Nairn 2003). mpm_step.c has the energy of each. */
 
-/* How a held node enters the FLIP update (eq. 6), mpm_nodes.c mpm_nodes_update.
+/* grid.bc: how a held node enters the FLIP update (eq. 6), mpm_nodes.c mpm_nodes_update.
  * LAGRANGIAN: the constraint is set on v^L only, so the increment at a held node is
  *   v_bc - v_i, with v_i the projected velocity: it pulls the particles there toward the
  *   held velocity every step (a damper: mpm_ledger.L_bc).
@@ -36,41 +36,42 @@
  *   constant grip speed) and the reaction is what the particles then receive,
  *   R = m dv_bc / dt - f_i: no energy leaves through the constraint but its work. */
 
-/* The grip: RIGID is the paper's rigid head (MPM_MAT_HEAD); NONE grips the node column
- * x = 0 alone (no head particles: the free-vibration scene). */
+/* loading.head: RIGID is the paper's rigid head (MPM_MAT_HEAD); NONE grips the node
+ * column x = 0 alone (no head particles: the free-vibration scene). */
 
-/* What the grip follows (mpm_control.c): GRIP, the paper's constant speed; DISSIPATION,
- * from the first softening until the band has cut the bar, a dissipation that grows at
- * speed x (the peak load so far), the grip moving back where the bar's curve snaps back
- * (as a test machine under crack-opening control follows a snapback). */
+/* loading.control, what the grip follows (mpm_control.c): GRIP, the paper's constant
+ * speed; DISSIPATION, from the first softening until the band has cut the bar, a
+ * dissipation that grows at speed x (the peak load so far), the grip moving back where
+ * the bar's curve snaps back (as a test machine under crack-opening control follows a
+ * snapback). */
 
-/* The background grid is discarded every step (sec. 2), so it may be laid anywhere.
- * STRETCH lays it along the bar's mean stretch, x_i = L + (X_i - L)(1 + delta / L): the
- * gripped and fixed node columns stay on the bar's ends and no particle crosses them
- * while the bar is loaded.  FIXED (default) is the paper's fixed grid, where the first
- * particle column crossing the gripped node line (delta = h / (2 sqrt ppc)) meets MPM's
- * cell-crossing force error and, before separation, fails the gripped end.  Measured
- * cost of STRETCH with one particle per cell: fig6 h 1 energy residual 2.6 % (USL; fixed
- * 0.02 %), D doubled under MUSL; so only fig6.ini, run at 4 and 9 ppc on fine grids,
- * uses it. */
+/* grid.motion. The background grid is discarded every step (sec. 2), so it may be laid
+ * anywhere. STRETCH lays it along the bar's mean stretch, x_i = L + (X_i - L)(1 + delta
+ * / L): the gripped and fixed node columns stay on the bar's ends and no particle
+ * crosses them while the bar is loaded. FIXED (default) is the paper's fixed grid, where
+ * the first particle column crossing the gripped node line (delta = h / (2 sqrt ppc))
+ * meets MPM's cell-crossing force error and, before separation, fails the gripped end.
+ * Measured cost of STRETCH with one particle per cell: fig6 h 1 energy residual 2.6 %
+ * (USL; fixed 0.02 %), D doubled under MUSL; so only fig6.ini, run at 4 and 9 ppc on
+ * fine grids, uses it. */
 
-/* grid.weights: where a particle's shape functions are taken.  CURRENT (default, the
- * paper's) at its position.  LAID (grid.motion = stretch only, until the bar is cut) at
+/* grid.weights: where a particle's shape functions are taken. CURRENT (default, the
+ * paper's) at its position. LAID (grid.motion = stretch only, until the bar is cut) at
  * the place the grid was laid at, carried by the grid's stretch: x = L + (X - L)(1 +
  * delta / L), y = Y, so a particle keeps its place among the nodes while the bar is one
  * body and its motion relative to the grid (the halves unloading in the softening, some
- * 0.04 h) never moves a uGIMP box across a node.  Such a move, under a stress, changes the
- * nodal forces the way no strain energy does, and MUSL, which damps no wave, grows a
- * grid-scale wave from it (analytic/ana_stab.c; docs/findings.md).  The
- * particles still move: the step adds each one's offset from its laid
- * place back when it ends, so output, energies and the next step see where it is. */
+ * 0.04 h) never moves a uGIMP box across a node. Such a move, under a stress, changes
+ * the nodal forces the way no strain energy does, and MUSL, which damps no wave, grows a
+ * grid-scale wave from it (analytic/ana_stab.c; docs/findings.md). The particles still
+ * move: the step adds each one's offset from its laid place back when it ends, so
+ * output, energies and the next step see where it is. */
 
-/* Shape functions: LINEAR, the paper's bilinear hats (2 x 2 nodes a particle); GIMP,
+/* grid.shape: LINEAR, the paper's bilinear hats (2 x 2 nodes a particle); GIMP,
  * uGIMP (Bardenhagen and Kober 2004; 3 x 3 nodes), continuous as a particle crosses a
  * cell edge (mpm_shape.h). */
 
-/* Velocity fields per node: ONE, the paper's; TWO, a second field at the nodes next to
- * a separated band, one per side of it (mpm_fields.c). */
+/* grid.fields, velocity fields per node: ONE, the paper's; TWO, a second field at the
+ * nodes next to a separated band, one per side of it (mpm_fields.c). */
 
 /* grid.node_mass: how a node's v^L takes its acceleration (eq. 4) where the strain is
  * taken from v^L (usl, usavg) on bilinear shapes.  LUMPED (the paper): v^L = v + dt f / m
@@ -99,17 +100,17 @@
  * docs/findings.md). */
 
 /* decohesion.reversed_shear: shear on the failure plane against a particle's accumulated
- * tangential jump (s_nt upt < 0).  EVEN (the paper): eq. 23 is even in s_nt, so it softens
- * the particle as shear the other way does.  CLOSING: it closes the slip elastically and
- * neither starts nor drives decohesion, as <sn> keeps normal compression out of eq. 23
- * (mpm_decohesion.c; docs/findings.md). */
+ * tangential jump (s_nt upt < 0). EVEN (the paper): eq. 23 is even in s_nt, so it
+ * softens the particle as shear the other way does. CLOSING: it closes the slip
+ * elastically and neither starts nor drives decohesion, as <sn> keeps normal compression
+ * out of eq. 23 (mpm_decohesion.c; docs/findings.md). */
 
-/* decohesion.share (path = interface): how a softening segment's traction is shared among
- * its nodes (mpm_iface.c).  STICK: each node's own stick impulse, scaled by the segment's
- * factor.  LINE: the segment's traction times the node's length of line An (the consistent
- * nodal force of a traction on the line), never more than sticks the node; built for a
- * line along a node column that the grid follows (alpha 90, grid.motion = stretch; the
- * crack on a node column, mpm_sim.c), docs/findings.md. */
+/* decohesion.share (path = interface): how a softening segment's traction is shared
+ * among its nodes (mpm_iface.c). STICK: each node's own stick impulse, scaled by the
+ * segment's factor. LINE: the segment's traction times the node's length of line An (the
+ * consistent nodal force of a traction on the line), never more than sticks the node;
+ * built for a line along a node column that the grid follows (alpha 90, grid.motion =
+ * stretch; the crack on a node column, mpm_sim.c), docs/findings.md. */
 
 /* ---- material ---- */
 typedef struct {
