@@ -188,9 +188,10 @@ typedef struct {
 void mpm_sim_particles(const mpm_sim *s, mpm_particle_view *v);
 
 /* Setting up a start other than the scene's (the bench): the bar at the uniform uniaxial
- * stress sigma along x, at the time and step the grip reaches it; particle i separated. */
-void mpm_sim_prestress(mpm_sim *s, double sigma);
-void mpm_sim_separate(mpm_sim *s, size_t i);
+ * stress sigma along x, at the time and step the grip reaches it; particle i separated.
+ * MPM_EINVAL for a sigma not finite or an i past the particles. */
+mpm_status mpm_sim_prestress(mpm_sim *s, double sigma);
+mpm_status mpm_sim_separate(mpm_sim *s, size_t i);
 
 /* decohesion.path = interface, for pictures: the number of places on the line (0
  * without one), and place i's piece of it, (xy[0], xy[1]) to (xy[2], xy[3]) in reference

@@ -32,8 +32,10 @@ void mpm_sim_particles(const mpm_sim *s, mpm_particle_view *v)
 /* Uniform uniaxial stress sigma along x: strains sigma/E and -nu sigma/E, the left end
  * at -delta, the right end fixed, mid-height fixed in y; the head moves with the grip,
  * stress-free.  Time and step are those at which the grip reaches delta. */
-void mpm_sim_prestress(mpm_sim *s, double sigma)
+mpm_status mpm_sim_prestress(mpm_sim *s, double sigma)
 {
+  if (!isfinite(sigma))
+    return MPM_EINVAL;
   const mpm_scene *sc = &s->sc;
   mpm_particles *p = s->p;
   const double exx = sigma / sc->E, eyy = -sc->nu * sigma / sc->E;
@@ -49,12 +51,16 @@ void mpm_sim_prestress(mpm_sim *s, double sigma)
   s->t = sc->L * exx / sc->speed;
   s->step = (long)floor(s->t / sc->dt);
   s->t = s->step * sc->dt;
+  return MPM_OK;
 }
 
-void mpm_sim_separate(mpm_sim *s, size_t i)
+mpm_status mpm_sim_separate(mpm_sim *s, size_t i)
 {
   mpm_particles *p = s->p;
+  if (i >= p->n)
+    return MPM_EINVAL;
   p->sep[i] = 1;
   p->lam[i] = 1.0;
   p->str2[i] = -1.0;
+  return MPM_OK;
 }

@@ -86,7 +86,7 @@ static void cut_band(mpm_sim *s)
           (best == SIZE_MAX || fabs(p->x0[k] - xl) < fabs(p->x0[best] - xl)))
         best = k;
     if (best != SIZE_MAX)
-      mpm_sim_separate(s, best);
+      (void)mpm_sim_separate(s, best); /* best < p->n */
   }
 }
 
@@ -349,13 +349,14 @@ int ver_cmd_bench(int argc, char **argv)
       const long steps = (long)(cases[c].steps * scale);
       double wall = INFINITY, cpu = 0.0;
       for (int r = 0; r < repeat; r++) {
-        mpm_sim *t;
-        if (mpm_sim_alloc(&vs.sc, tlist[ti], &t, err, sizeof err) != MPM_OK) {
-          fprintf(stderr, "delam bench: %s\n", err);
+        mpm_sim *t = NULL;
+        if (mpm_sim_alloc(&vs.sc, tlist[ti], &t, err, sizeof err) != MPM_OK ||
+            mpm_sim_prestress(t, 0.99 * bar.r0) != MPM_OK) {
+          fprintf(stderr, "delam bench: %s\n", t ? "the bar's peak stress is not finite" : err);
+          mpm_sim_free(t);
           mpm_sim_free(s);
           return 1;
         }
-        mpm_sim_prestress(t, 0.99 * bar.r0);
         if (cases[c].cut)
           cut_band(t);
         const double w0 = ver_now_wall(), c0 = ver_now_cpu();
