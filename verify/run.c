@@ -216,7 +216,7 @@ static void take_step(run_state *r, ver_summary *u, double delta)
     mpm_sim_particles(s, &p);
     ver_sep_cut(&r->sep, p.y0, p.sep, p.mat, MPM_MAT_HEAD, p.n, delta);
   }
-  if (in.cut && r->vs->sc.path == MPM_PATH_IFACE)
+  if (in.cut && mpm_sim_scene(s)->path == MPM_PATH_IFACE)
     ver_sep_through(&r->sep, delta);
   if (r->q) { /* equilibrium rows: separated at the first row past the peak below sep_load of it */
     if (r->sep.delta_load < 0 && r->peak > 0.0 && w->Pg < r->peak && w->Pg <= r->vs->sep_load_frac * r->peak) {
