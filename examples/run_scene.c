@@ -51,19 +51,23 @@ int main(int argc, char **argv)
   /* to just past the bar's separation (or the scene's end) */
   const double end = fmin(vs.sc.end_delta, 1.5 * bar.delta_sep);
   double peak = 0.0;
+  mpm_sim_info in; /* where the run is: step, time, loads, counters */
   while (mpm_sim_delta(s) < end) {
     const mpm_status st = mpm_sim_step(s, err, sizeof err);
+    mpm_sim_info_get(s, &in);
     if (st != MPM_OK) {
-      fprintf(stderr, "step %ld: %s: %s\n", s->step, mpm_strerror(st), err);
+      fprintf(stderr, "step %ld: %s: %s\n", in.step, mpm_strerror(st), err);
       mpm_sim_free(s);
       return 1;
     }
-    peak = fmax(peak, s->P_grip);
+    peak = fmax(peak, in.P_grip);
   }
   mpm_energy e;
   mpm_sim_energy(s, &e);
-  printf("libdelam %s: %s, %zu particles, %ld steps to delta %.4g\n", ver_build_version(), vs.name, s->p->n,
-         s->step, mpm_sim_delta(s));
+  mpm_particle_view p; /* the particles' arrays, read-only */
+  mpm_sim_particles(s, &p);
+  printf("libdelam %s: %s, %zu particles, %ld steps to delta %.4g\n", ver_build_version(), vs.name, p.n,
+         in.step, mpm_sim_delta(s));
   printf("peak load %.4g (closed form %.4g), dissipation %.4g (closed form at separation %.4g)\n", peak, bar.Pmax,
          e.D, bar.D_sep);
   mpm_sim_free(s);

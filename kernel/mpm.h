@@ -1,15 +1,15 @@
 /*
  * mpm.h - the public contract of the kernel: an explicit 2-D material point method
  * (Schreyer, Sulsky and Zhou 2002, sec. 2, eqs. 2-7) with the decohesion
- * constitutive update of secs. 3-4 (eqs. 19-26, 39-58).  Plane stress, small
- * strain, unit thickness, dimensionless units.
+ * constitutive update of secs. 3-4 (eqs. 19-26, 39-58), and a quasi-static solver on
+ * the same particles and laws.  Plane stress, small strain, unit thickness,
+ * dimensionless units.
  *
- * Concepts, one struct each: mpm_scene (the plain description of a run),
- * mpm_material (elastic and decohesion constants), mpm_dstate (one particle's
- * constitutive state, for the pure update), mpm_particles (structure of arrays),
- * mpm_grid (nodal arrays; mpm_fields, its second velocity field across a cut band),
- * mpm_sim (all of it plus boundary conditions and energies).  Shape functions: the
- * paper's bilinear hats or uGIMP (mpm_shape.h, mpm_gimp.c).
+ * A program fills an mpm_scene (the plain description of a run; verify/scene.h reads
+ * one from a scene file), makes an opaque mpm_sim from it, steps it, and reads the
+ * loads, energies and particles back through the calls below.  The kernel's own
+ * structs (particles, grid, materials, the pure constitutive update) are private
+ * (kernel/mpm_kernel.h).  The scene keys are documented in docs/scene-keys.md.
  */
 #ifndef DELAM_MPM_H
 #define DELAM_MPM_H
@@ -29,104 +29,26 @@ typedef enum {
 
 const char *mpm_strerror(mpm_status s);
 
-/* Le, the effective length V_e / A_d of eq. 41 (docs/model.md sec. 6): CELL, the paper's
- * h max(|sin a|, |cos a|), exact for a band one cell wide per row; PARTICLE, the same
- * for the particle's square; STAIRCASE, h (|sin a| + |cos a|), the width of the
- * narrowest band of cells that can open along an inclined line (mpm_sim.c). */
+/* The values of the scene's method words (docs/scene-keys.md; what each does in the
+ * kernel: kernel/mpm_kernel.h, "The method options"). The first of each is the paper's. */
 enum { MPM_LE_CELL = 0, MPM_LE_PARTICLE = 1, MPM_LE_STAIRCASE = 2, MPM_LE_ROW = 3, MPM_LE_ZONE = 4 };
-enum { MPM_DCOH_NONE = 0, MPM_DCOH_MODEL1 = 1, MPM_DCOH_MODEL2 = 2 };
-/* USL: strain from v^L (the paper, eq. 7).  MUSL: strain from the nodal velocity
- * re-projected from the updated particle velocities, which keeps nearly empty nodes
- * (tiny m_i, finite f_i) from injecting huge strain increments.  USF: the stress is
- * updated first, from the projected nodal velocity v_i, and the nodal forces come from
- * the new stress (Bardenhagen 2002).  USAVG: half the strain increment as USF before
- * the forces, half as USL after them (Nairn 2003).  mpm_step.c has the energy of each. */
+enum { MPM_DCOH_NONE = 0, MPM_DCOH_MODEL1 = 1, MPM_DCOH_MODEL2 = 2 }; /* decohesion.model */
 enum { MPM_SCHEME_USL = 0, MPM_SCHEME_MUSL = 1, MPM_SCHEME_USF = 2, MPM_SCHEME_USAVG = 3 };
-/* How a held node enters the FLIP update (eq. 6), mpm_nodes.c mpm_nodes_update.
- * LAGRANGIAN: the constraint is set on v^L only, so the increment at a held node is
- *   v_bc - v_i, with v_i the projected velocity: it pulls the particles there toward the
- *   held velocity every step (a damper: mpm_ledger.L_bc).
- * BOTH: set on v_i and v^L, increment 0, but the reaction still the one of the jump
- *   from the projected v_i: the particles do not receive the impulse the load reports.
- * CONSISTENT: the increment at a held node is the change of the held velocity (0 at a
- *   constant grip speed) and the reaction is what the particles then receive,
- *   R = m dv_bc / dt - f_i: no energy leaves through the constraint but its work. */
-enum { MPM_BC_LAGRANGIAN = 0, MPM_BC_BOTH = 1, MPM_BC_CONSISTENT = 2 };
-/* The grip: RIGID is the paper's rigid head (MPM_MAT_HEAD); NONE grips the node column
- * x = 0 alone (no head particles: the free-vibration scene). */
-enum { MPM_HEAD_RIGID = 0, MPM_HEAD_NONE = 1 };
-/* What the grip follows (mpm_control.c): GRIP, the paper's constant speed; DISSIPATION,
- * from the first softening until the band has cut the bar, a dissipation that grows at
- * speed x (the peak load so far), the grip moving back where the bar's curve snaps back
- * (as a test machine under crack-opening control follows a snapback). */
-enum { MPM_CONTROL_GRIP = 0, MPM_CONTROL_DISSIPATION = 1 };
-/* The background grid is discarded every step (sec. 2), so it may be laid anywhere.
- * STRETCH lays it along the bar's mean stretch, x_i = L + (X_i - L)(1 + delta / L): the
- * gripped and fixed node columns stay on the bar's ends and no particle crosses them
- * while the bar is loaded.  FIXED (default) is the paper's fixed grid, where the first
- * particle column crossing the gripped node line (delta = h / (2 sqrt ppc)) meets MPM's
- * cell-crossing force error and, before separation, fails the gripped end.  Measured
- * cost of STRETCH with one particle per cell: fig6 h 1 energy residual 2.6 % (USL; fixed
- * 0.02 %), D doubled under MUSL; so only fig6.ini, run at 4 and 9 ppc on fine grids,
- * uses it. */
-enum { MPM_GRID_FIXED = 0, MPM_GRID_STRETCH = 1 };
-/* grid.weights: where a particle's shape functions are taken.  CURRENT (default, the
- * paper's) at its position.  LAID (grid.motion = stretch only, until the bar is cut) at
- * the place the grid was laid at, carried by the grid's stretch: x = L + (X - L)(1 +
- * delta / L), y = Y, so a particle keeps its place among the nodes while the bar is one
- * body and its motion relative to the grid (the halves unloading in the softening, some
- * 0.04 h) never moves a uGIMP box across a node.  Such a move, under a stress, changes the
- * nodal forces the way no strain energy does, and MUSL, which damps no wave, grows a
- * grid-scale wave from it (analytic/ana_stab.c; docs/findings.md).  The
- * particles still move: the step adds each one's offset from its laid
- * place back when it ends, so output, energies and the next step see where it is. */
-enum { MPM_WEIGHTS_CURRENT = 0, MPM_WEIGHTS_LAID = 1 };
-/* Shape functions: LINEAR, the paper's bilinear hats (2 x 2 nodes a particle); GIMP,
- * uGIMP (Bardenhagen and Kober 2004; 3 x 3 nodes), continuous as a particle crosses a
- * cell edge (mpm_shape.h). */
-enum { MPM_SHAPE_LINEAR = 0, MPM_SHAPE_GIMP = 1 };
-/* Velocity fields per node: ONE, the paper's; TWO, a second field at the nodes next to
- * a separated band, one per side of it (mpm_fields.c). */
-enum { MPM_FIELDS_ONE = 0, MPM_FIELDS_TWO = 1 };
-/* grid.node_mass: how a node's v^L takes its acceleration (eq. 4) where the strain is
- * taken from v^L (usl, usavg) on bilinear shapes.  LUMPED (the paper): v^L = v + dt f / m
- * at every node.  LIMITED: a node whose stiffness-to-mass bound exceeds what the step
- * can integrate takes the acceleration with a mass floor in v^L (mpm_step.c, "Nodal
- * mass limit"); the particles' velocity increment keeps the lumped mass. */
-enum { MPM_NODEMASS_LUMPED = 0, MPM_NODEMASS_LIMITED = 1 };
-/* imperfection.size: PARTICLE, the paper's particle nearest (imp_x, imp_y); CELL, every
- * particle of that particle's cell, so that the flaw is one cell at any ppc (the paper's
- * flaw at its one particle per cell). */
-enum { MPM_IMP_PARTICLE = 0, MPM_IMP_CELL = 1 };
-/* time.damping_from (mpm_damping.c): the damping acts from the first step (START) or once
- * the band has cut the bar (CUT). */
-enum { MPM_DAMP_START = 0, MPM_DAMP_CUT = 1 };
-/* time.damping_about (mpm_damping.c): after the cut the damping takes each velocity about
- * its node's slow drift (DRIFT, a low-pass) or about the motion of the end that holds the
- * part of the bar its particle belongs to (PARTS: the parts the cut made). */
-enum { MPM_DAMP_DRIFT = 0, MPM_DAMP_PARTS = 1 };
-/* decohesion.path: where the bar may soften.  FREE (the paper): every particle.  LINE:
- * only the particles whose reference centre lies within h (|sin a| + |cos a|) / 2 +
- * path_reach h of the failure line through the imperfection (the cells that line
- * crosses, widened by path_reach cells); the others are elastic (MPM_MAT_ELASTIC).  A
- * laminate delaminates along its ply interface: the crack's path is the plane at alpha
- * through where it starts (docs/findings.md).  IFACE: no particle softens; the
- * line is a cohesive interface between two velocity fields (mpm_iface.c,
- * docs/findings.md). */
-enum { MPM_PATH_FREE = 0, MPM_PATH_LINE = 1, MPM_PATH_IFACE = 2 };
-/* decohesion.reversed_shear: shear on the failure plane against a particle's accumulated
- * tangential jump (s_nt upt < 0).  EVEN (the paper): eq. 23 is even in s_nt, so it softens
- * the particle as shear the other way does.  CLOSING: it closes the slip elastically and
- * neither starts nor drives decohesion, as <sn> keeps normal compression out of eq. 23
- * (mpm_decohesion.c; docs/findings.md). */
-enum { MPM_SHEAR_EVEN = 0, MPM_SHEAR_CLOSING = 1 };
-/* decohesion.share (path = interface): how a softening segment's traction is shared among
- * its nodes (mpm_iface.c).  STICK: each node's own stick impulse, scaled by the segment's
- * factor.  LINE: the segment's traction times the node's length of line An (the consistent
- * nodal force of a traction on the line), never more than sticks the node; built for a
- * line along a node column that the grid follows (alpha 90, grid.motion = stretch; the
- * crack on a node column, mpm_sim.c), docs/findings.md. */
-enum { MPM_SHARE_STICK = 0, MPM_SHARE_LINE = 1 };
+enum { MPM_BC_LAGRANGIAN = 0, MPM_BC_BOTH = 1, MPM_BC_CONSISTENT = 2 };  /* grid.bc */
+enum { MPM_HEAD_RIGID = 0, MPM_HEAD_NONE = 1 };                         /* loading.head */
+enum { MPM_CONTROL_GRIP = 0, MPM_CONTROL_DISSIPATION = 1 };              /* loading.control */
+enum { MPM_GRID_FIXED = 0, MPM_GRID_STRETCH = 1 };                      /* grid.motion */
+enum { MPM_WEIGHTS_CURRENT = 0, MPM_WEIGHTS_LAID = 1 };                 /* grid.weights */
+enum { MPM_SHAPE_LINEAR = 0, MPM_SHAPE_GIMP = 1 };                      /* grid.shape */
+enum { MPM_FIELDS_ONE = 0, MPM_FIELDS_TWO = 1 };                        /* grid.fields */
+enum { MPM_NODEMASS_LUMPED = 0, MPM_NODEMASS_LIMITED = 1 };             /* grid.node_mass */
+enum { MPM_IMP_PARTICLE = 0, MPM_IMP_CELL = 1 };                        /* imperfection.size */
+enum { MPM_DAMP_START = 0, MPM_DAMP_CUT = 1 };                          /* time.damping_from */
+enum { MPM_DAMP_DRIFT = 0, MPM_DAMP_PARTS = 1 };                        /* time.damping_about */
+enum { MPM_PATH_FREE = 0, MPM_PATH_LINE = 1, MPM_PATH_IFACE = 2 };      /* decohesion.path */
+enum { MPM_SHEAR_EVEN = 0, MPM_SHEAR_CLOSING = 1 };                     /* decohesion.reversed_shear */
+enum { MPM_SHARE_STICK = 0, MPM_SHARE_LINE = 1 };                       /* decohesion.share */
+enum { MPM_SOLVER_EXPLICIT = 0, MPM_SOLVER_STATIC = 1 };                /* solver.type */
 
 /* ---- scene: everything a run needs, as plain numbers (filled by verify/scene.c) ---- */
 typedef struct {
@@ -137,53 +59,43 @@ typedef struct {
   double snf, stf;       /* failure tractions in opening and in shear                  */
   double U0, s0, q;      /* dissipation per area at separation, reference traction, softening exponent */
   double sep_threshold;  /* lambda above which the separation algorithm is used (paper 0.98) */
-  double eta;            /* decohesion viscosity, a time: F = eta dlambda/dt while softening
-                            (0: the paper's rate-independent law; mpm_decohesion.c)     */
-  int le_mode;           /* MPM_LE_CELL, MPM_LE_PARTICLE or MPM_LE_STAIRCASE           */
-  double le_factor;      /* Le is le_factor times the mode's length (1; the paper's proposal
-                            of sec. 4.4: the fracture zone's measured volume per unit area) */
+  double eta;            /* decohesion viscosity, a time (0: the paper's rate-independent law) */
+  int le_mode;           /* MPM_LE_*: the effective length Le of eq. 41                */
+  double le_factor;      /* Le is le_factor times the mode's length (1)                */
   double imp_factor;     /* snf multiplier at the imperfection particle (paper 0.9); 1 = none */
-  double imp_stf_factor; /* stf multiplier there (1: the paper's imperfection, snf only)   */
+  double imp_stf_factor; /* stf multiplier there (1: the paper's imperfection, snf only) */
   double imp_x, imp_y;   /* the imperfection sits at the particle nearest this point   */
-  int imp_size;          /* MPM_IMP_PARTICLE (the paper) or MPM_IMP_CELL               */
-  int path;              /* MPM_PATH_FREE (the paper) or MPM_PATH_LINE                 */
-  int reversed_shear;    /* MPM_SHEAR_EVEN (the paper) or MPM_SHEAR_CLOSING            */
-  int share;             /* path = interface: MPM_SHARE_STICK (default) or MPM_SHARE_LINE */
+  int imp_size;          /* MPM_IMP_*                                                  */
+  int path;              /* MPM_PATH_*: where the bar may soften                       */
+  int reversed_shear;    /* MPM_SHEAR_*                                                */
+  int share;             /* path = interface: MPM_SHARE_*                              */
   double path_reach;     /* LINE: the band's half-width beyond the crossed cells, in cells */
   double h;              /* grid spacing                                               */
   int ppc;               /* particles per cell, a perfect square (1, 4, 9, ...)        */
-  double margin;         /* empty space around the bar (length; the left side adds the grip's travel) */
-  int scheme;            /* MPM_SCHEME_*: a row of mpm_schemes (mpm_scheme.c)         */
-  int grid_motion;       /* MPM_GRID_FIXED (default, the paper) or MPM_GRID_STRETCH   */
-  int weights;           /* MPM_WEIGHTS_CURRENT (default, the paper) or MPM_WEIGHTS_LAID */
-  int shape;             /* MPM_SHAPE_LINEAR (default, the paper) or MPM_SHAPE_GIMP    */
-  int fields;            /* MPM_FIELDS_ONE (the paper) or MPM_FIELDS_TWO: one velocity field
-                            per side of a separated band (mpm_fields.c)              */
-  int bc;                /* MPM_BC_* (how a held node enters eq. 6)                   */
-  int node_mass;         /* MPM_NODEMASS_LUMPED (default, the paper) or _LIMITED        */
-  int head;              /* MPM_HEAD_RIGID (default) or MPM_HEAD_NONE                 */
+  double margin;         /* empty space around the bar (the left side adds the grip's travel) */
+  int scheme;            /* MPM_SCHEME_*                                               */
+  int grid_motion;       /* MPM_GRID_*                                                 */
+  int weights;           /* MPM_WEIGHTS_*                                              */
+  int shape;             /* MPM_SHAPE_*                                                */
+  int fields;            /* MPM_FIELDS_*                                               */
+  int bc;                /* MPM_BC_* (how a held node enters eq. 6)                    */
+  int node_mass;         /* MPM_NODEMASS_*                                             */
+  int head;              /* MPM_HEAD_*                                                 */
   int vib_mode;          /* > 0: start from axial mode m, vx += vib_amp sin(m pi X / L) */
   double vib_amp;        /* its velocity amplitude                                    */
   double vib_periods;    /* the run's length in periods (the driver sets end_delta from it) */
-  double body_amp;       /* manufactured solutions: a body force per unit mass, in x,   */
-  double body_omega;     /*   b_x = body_amp sin(pi X / L) sin(body_omega t) (0: none;  */
-                         /*   linear shapes, one field; tests/test_mpm_mms.c)           */
+  double body_amp;       /* a body force per unit mass in x, b_x = body_amp sin(pi X / L) */
+  double body_omega;     /*   sin(body_omega t) (0: none; manufactured solutions)     */
   double dt;             /* time step                                                  */
   double speed;          /* grip speed (pulls the left end in -x)                      */
-  int control;           /* MPM_CONTROL_GRIP (the paper) or MPM_CONTROL_DISSIPATION       */
-  double damping;        /* c: each node's velocity relaxes toward its slow drift at the
-                            rate c, 0 <= c dt < 1 (0: the paper's undamped step;
-                            mpm_damping.c)                                             */
+  int control;           /* MPM_CONTROL_*                                              */
+  double damping;        /* c: nodal velocities relax at the rate c, 0 <= c dt < 1 (0: none) */
   double damping_tau;    /* its low-pass time constant (0: 2 L / c)                    */
-  double damping_beta;   /* beta, a time: a viscous stress beta C : grad v on every bar
-                            particle not separated (stiffness-proportional damping, which
-                            takes the fast modes; 0: none), from damping_from on     */
-  int damping_from;      /* MPM_DAMP_START (from the first step) or MPM_DAMP_CUT (from the
-                            band's cut on)                                             */
-  int damping_about;     /* MPM_DAMP_DRIFT (the node's low-pass) or MPM_DAMP_PARTS (after
-                            the cut, each part's held end's motion)                        */
+  double damping_beta;   /* beta, a time: viscous stress beta C : grad v (0: none)     */
+  int damping_from;      /* MPM_DAMP_START or MPM_DAMP_CUT                             */
+  int damping_about;     /* MPM_DAMP_DRIFT or MPM_DAMP_PARTS                           */
   double end_delta;      /* the run never goes past this end displacement              */
-  int solver;            /* MPM_SOLVER_EXPLICIT (the paper's dynamic step) or _STATIC    */
+  int solver;            /* MPM_SOLVER_*                                               */
 } mpm_scene;
 
 /* The loading's steady velocity field, which the particles start with (no wave from the
@@ -192,167 +104,48 @@ static inline double mpm_scene_start_vx(const mpm_scene *sc, double x)
 {
   return x <= 0.0 ? -sc->speed : x >= sc->L ? 0.0 : -sc->speed * (sc->L - x) / sc->L;
 }
-
-/* decohesion.path = line: the half-width w of the strip that may soften, h (|sin a| +
+/* decohesion.path = line: the half-width of the strip that may soften, h (|sin a| +
  * |cos a|) / 2 (the cells the line at alpha crosses) + path_reach h. */
 double mpm_scene_path_halfwidth(const mpm_scene *sc);
-
 /* Checks a scene for physical sense; MPM_EINVAL and a message naming the key. */
 mpm_status mpm_scene_check(const mpm_scene *sc, char *err, size_t errlen);
 /* Critical time step h / (c sqrt 2), c = sqrt(E1 / rho) (measured; see mpm_sim.c). */
 double mpm_scene_dt_crit(const mpm_scene *sc);
 /* The rules between the method options (mpm_rules.c; mpm_scene_check ends with them):
  * MPM_OK, or MPM_EINVAL with the first one broken in err, which starts with the key at
- * fault ("time.damping_beta: ...") and names the allowed values; *key (if key is not
- * NULL) is that key, "section.key". */
+ * fault and names the allowed values; *key (if not NULL) is that key, "section.key". */
 mpm_status mpm_scene_rules(const mpm_scene *sc, const char **key, char *err, size_t errlen);
+/* The time schemes: the index of the one named `name` (-1: none); the name of index i. */
+int mpm_scheme_find(const char *name);
+const char *mpm_scheme_name(int i);
 
-/* ---- material ---- */
+/* ---- the simulation: opaque; made from a scene, stepped, read, freed ---- */
+typedef struct mpm_sim mpm_sim;
+
+/* nthreads > 0: that many threads; <= 0: chosen per step by measurement, up to OpenMP's
+ * default.  Results do not depend on it (fixed summation order). */
+mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char *err, size_t errlen);
+void mpm_sim_free(mpm_sim *s);
+/* One explicit step (eqs. 2-7) with the scene's scheme.  On failure, err names the step,
+ * particle and field. */
+mpm_status mpm_sim_step(mpm_sim *s, char *err, size_t errlen);
+/* The grip's displacement delta. */
+double mpm_sim_delta(const mpm_sim *s);
+/* The scene the sim was made from (its copy). */
+const mpm_scene *mpm_sim_scene(const mpm_sim *s);
+
+/* Where a run is, after a step (mpm_sim_info_get). */
+enum { MPM_T_SORT = 0, MPM_T_P2G, MPM_T_GRID, MPM_T_G2P, MPM_T_CONST, MPM_T_N };
 typedef struct {
-  double E, nu, rho;     /* elastic constants                                          */
-  double E1, E2, G;      /* plane stress: E/(1-nu^2), nu E/(1-nu^2), E/(2(1+nu))       */
-  int model;             /* MPM_DCOH_*                                                 */
-  double nx, ny, tx, ty; /* failure-plane normal n = (sin a, -cos a), tangent t = (cos a, sin a) */
-  double snf, stf;       /* failure tractions (eq. 23)                                 */
-  double U0, s0, q;      /* eq. 19-20                                                  */
-  double ubar0;          /* U0 / s0                                                    */
-  double irho;           /* 1 / rho (the ledger's V = m / rho)                         */
-  double mp;             /* the mass of each of its particles (mpm_sim.c: one lattice),
-                            so that the gather's ledger sums need not read p->m         */
-  double Le;             /* effective length V_e / A_d (eq. 41), fixed for the run     */
-  double sep_threshold;  /* eqs. 56-58 take over when lambda would pass this           */
-  double visc;           /* decohesion.eta / dt: overstress per unit dlambda in a step (0: none) */
-  int shear_closing;     /* decohesion.reversed_shear = closing: shear against the particle's
-                            slip upt leaves eq. 23 (mpm_decohesion.c)                  */
-  /* derived (mpm_material_derive), so that the hot paths multiply instead of divide */
-  double isnf, istf;     /* 1 / snf, 1 / stf                                            */
-  double isnf2, istf2;   /* 1 / snf^2, 1 / stf^2                                        */
-  double kL;             /* ubar0 / Le                                                 */
-  double Lopen;          /* the length eqs. 57-58 turn a separated particle's strain into its
-                            opening with: Le, except under decohesion.Le = row (mpm_band.c),
-                            where the softening's Le is the row's and this the staircase's */
-  double rnn[3], rtt[3], rnt[3]; /* (s_nn, s_tt, s_nt) = r . (sxx, syy, sxy)             */
-  double fn[3], ft[3];   /* s_nn / snf and s_nt / stf as dot products with (sxx, syy, sxy):
-                            the step's elastic test (all 0 when model = NONE)          */
-} mpm_material;
-
-void mpm_material_init(mpm_material *m, const mpm_scene *sc, double snf, double Le);
-/* Recomputes the derived constants after model, snf, stf, ubar0 or Le changed. */
-void mpm_material_derive(mpm_material *m);
-
-/* ---- the pure constitutive update (secs. 4.1-4.3) ---- */
-typedef struct {
-  double sxx, syy, sxy;  /* Cauchy stress                                              */
-  double lam;            /* decohesion parameter lambda (monotone; 1 at separation, may pass 1 after) */
-  double upn, upt;       /* displacement jump across the failure plane, n and t components */
-  int sep;               /* 1 once separated: no traction across the plane             */
-} mpm_dstate;
-
-/* How a step went, for tests and counters. */
-enum { MPM_DPATH_ELASTIC = 0, MPM_DPATH_SOFTEN = 1, MPM_DPATH_SEPARATE = 2, MPM_DPATH_OPEN = 3 };
-
-typedef struct {
-  int path;              /* MPM_DPATH_*                                                */
-  int iters;             /* root-solver iterations (0 on an elastic step)              */
-  int bracketed;         /* 1 if the bracketed (GSL Brent) solve was needed            */
-  double w;              /* traction work per unit failure area in this step, int s . d up */
-} mpm_dinfo;
-
-typedef struct mpm_dwork mpm_dwork;   /* scratch for the bracketed solve (GSL)          */
-mpm_dwork *mpm_dwork_alloc(void);
-void mpm_dwork_free(mpm_dwork *w);
-
-/* Strain increment de = (dexx, deyy, dexy), tensor shear.  Pure: output depends only
- * on the arguments; w is scratch.  MPM_ENOTFINITE if the result is not finite. */
-mpm_status mpm_dcoh_update(const mpm_material *m, const mpm_dstate *in, const double de[3],
-                           mpm_dstate *out, mpm_dinfo *info, mpm_dwork *w);
-
-/* The algorithmic (consistent) tangent of that update: D[i][j] = d sigma_out[i] / d de[j]
- * at the same (in, de), sigma = (sxx, syy, sxy), de = (dexx, deyy, dexy) with tensor shear
- * (elastic: D = [[E1, E2, 0], [E2, E1, 0], [0, 0, 2G]]).  Analytic, on the path the update
- * takes (a one-sided value exactly on a switch between paths); runs the update itself.
- * Pure like it; D is NaN and the update's status returned when that is not MPM_OK.
- * dlam (if not NULL) gets d lambda_out / d de on the same path (0 on an elastic step). */
-mpm_status mpm_dcoh_tangent(const mpm_material *m, const mpm_dstate *in, const double de[3], double D[3][3],
-                            double dlam[3], mpm_dwork *w);
-
-/* Remaining strength squared, (1 - lambda^q)^2 (eq. 23); -1 once separated
- * (mpm_particles.str2). */
-double mpm_dcoh_str2(const mpm_material *m, double lam, int sep);
-
-/* Decohesion function F = se - (1 - lambda^q) (eq. 23) at a stress state. */
-double mpm_dcoh_F(const mpm_material *m, double sxx, double syy, double sxy, double lam);
-
-/* ---- particles: structure of arrays ---- */
-typedef struct {
-  size_t n;                /* number of particles                                      */
-  double *x, *y;           /* position                                                 */
-  double *x0, *y0;         /* reference position (for displacements)                   */
-  double *vx, *vy;         /* velocity                                                 */
-  double *m, *V;           /* mass (constant) and volume (V = m / rho, small strain)   */
-  double *sxx, *syy, *sxy; /* stress                                                   */
-  double *lam;             /* decohesion parameter                                     */
-  double *upn, *upt;       /* displacement jump, n and t components                    */
-  double *wcoh;            /* traction work on the failure plane so far (energy)       */
-  double *dis;             /* dissipation so far, U0 dlambda V / Le summed while lambda <= 1 */
-  double *str2;            /* remaining strength squared, (1 - lambda^q)^2 (eq. 23), and -1
-                              once separated: lets the step test F <= 0 without a pow
-                              or a branch per particle                                 */
-  uint8_t *mat;            /* index into the material table                            */
-  uint8_t *sep;            /* 1 once separated                                         */
-  double *vxx, *vyy, *vxy; /* time.damping_beta > 0: the viscous stress beta C : grad v of
-                              the last strain pass, scattered with sigma (NULL otherwise) */
-  double *wdx, *wdy;       /* grid.weights = laid: during a step, the particle's offset from
-                              its laid place, added back when the step ends (NULL otherwise) */
-} mpm_particles;
-
-mpm_particles *mpm_particles_alloc(size_t n);
-/* The viscous stress arrays of time.damping_beta, zeroed; 0, or -1 out of memory. */
-int mpm_particles_alloc_viscous(mpm_particles *p);
-/* The offsets of grid.weights = laid, zeroed; 0, or -1 out of memory. */
-int mpm_particles_alloc_laid(mpm_particles *p);
-void mpm_particles_free(mpm_particles *p);
-
-/* ---- grid: a regular lattice of (ncx+1) x (ncy+1) nodes, origin (ox, oy), spacing h.
- * Nodes are stored column by column: node (i, j) is at i * nny + j, so the particles,
- * sorted by cell in the same order, walk the nodes forward.  A node is one 64-byte
- * record (a cache line): the scatter adds a particle's share of all five values with
- * one vector operation per node, and a gather reads them back the same way. ---- */
-typedef struct {
-  _Alignas(64) double m;   /* nodal mass                                               */
-  double px, py;           /* momentum, then Lagrangian velocity v^L after the update  */
-  double fx, fy;           /* internal force, then v^L - v after the update (MUSL: then v') */
-  double qx, qy;           /* MUSL: momentum of the updated particle velocities        */
-  double pad;              /* to 64 bytes; 0, except under two fields (mpm_fields.c):
-                              mass times the displacement along the failure normal    */
-} mpm_node;
-
-typedef struct mpm_iface mpm_iface; /* decohesion.path = interface (mpm_iface.h) */
-
-/* The second velocity field across a separated band (grid.fields = two): mpm_fields.h. */
-typedef struct mpm_fields mpm_fields;
-
-typedef struct {
-  int ncx, ncy;            /* cells in x and y                                         */
-  int nnx, nny;            /* nodes in x and y (ncx+1, ncy+1)                          */
-  double ox, oy, h;        /* origin, and the spacing in y (and in x at t = 0)          */
-  double hx;               /* spacing in x now (the grid may follow the bar's stretch) */
-  double ihx, ihy;         /* 1 / hx, 1 / h                                            */
-  mpm_node *nd;            /* the nodes, nnx * nny                                     */
-  mpm_fields *fld;         /* the second velocity field, or NULL (grid.fields = 1)      */
-  double body_now;         /* this step's body_amp sin(body_omega t), 0: no body force  */
-  double body_k;           /* pi / L                                                   */
-} mpm_grid;
-
-mpm_grid *mpm_grid_alloc(int ncx, int ncy, double ox, double oy, double h);
-static inline size_t mpm_grid_node(const mpm_grid *g, int i, int j)
-{
-  return (size_t)i * (size_t)g->nny + (size_t)j;
-}
-void mpm_grid_free(mpm_grid *g);
-
-/* decohesion.Le = row: the rows' measured Le (mpm_kernel.h). */
-typedef struct mpm_band mpm_band;
+  long step;               /* steps taken (static solver: increments)                  */
+  double t;                /* time                                                     */
+  double P_grip, P_fixed;  /* loads of the last step at the grip and the fixed end (tension > 0) */
+  int cut;                 /* 1 once the band has cut the bar (a separated particle in every row) */
+  long n_soften, n_separate, n_bracketed; /* decohesion updates by path; bracketed solves */
+  long n_debris;           /* separated particles that left the grid                  */
+  double time_split[MPM_T_N]; /* seconds in sort, p2g, grid, g2p, constitutive update */
+} mpm_sim_info;
+void mpm_sim_info_get(const mpm_sim *s, mpm_sim_info *out);
 
 /* ---- energies (sec. 3 eq. 25 for the surface terms) ---- */
 typedef struct {
@@ -361,222 +154,93 @@ typedef struct {
   double SE;     /* elastic strain energy                                             */
   double W_coh;  /* work of the traction on the decohesion surfaces, int s . d up dA   */
   double D;      /* dissipation, U0 min(lambda, 1) per unit failure area (eq. 10)      */
-  /* The ledger (mpm_step.c, "Energy"): what the step itself removes, accumulated, so
-   * that W_ext + KE(0) = KE + SE + W_coh + L_bc + L_flip + L_scheme + W_head + L_contact
-   * + L_debris + L_damp up to the constitutive update's own integration error. */
+  /* The ledger: what the step itself removes, so that W_ext + KE(0) = KE + SE + W_coh +
+   * L_bc + L_flip + L_scheme + W_head + L_contact + L_debris + L_damp up to the
+   * constitutive update's own integration error (docs/model.md). */
   double L_bc;     /* removed at held nodes by the constraint's velocity jump          */
   double L_flip;   /* lost interpolating the nodal velocity increments to the particles */
   double L_scheme; /* the time integration's own loss (negative: gain)                */
   double W_head;   /* taken by the rigid head (its KE change and its projection)      */
-  double L_contact; /* taken by the contact between two velocity fields: its impulse's work */
-  double L_debris; /* carried off the grid by separated particles that left it (KE + SE) */
-  double L_damp;   /* taken by the local damping (time.damping; mpm_damping.c)         */
+  double L_contact; /* taken by the contact between two velocity fields               */
+  double L_debris; /* carried off the grid by separated particles that left it        */
+  double L_damp;   /* taken by the local damping (time.damping)                       */
 } mpm_energy;
-
-/* ---- threads: the count a step uses (mpm_threads.c) ---- */
-#define MPM_THREADS_MIN_PARTICLES 16384 /* below: one thread, no measuring            */
-#define MPM_PROBE_SHARE 0.02       /* most time a lost probe may cost                    */
-#define MPM_PROBE_STEPS 16         /* steps timed on each count per probe              */
-#define MPM_PERIOD_MIN 256         /* steps on the chosen count after a changed choice */
-#define MPM_PERIOD_MAX 8192        /* ... doubled while it holds, up to this           */
-enum { MPM_TPH_PROBE1 = 0, MPM_TPH_PROBEN, MPM_TPH_RUN };
-typedef struct {
-  int nmax;                /* threads allocated for (the most a step may use)           */
-  int automatic;           /* 1: measure and choose between 1 and nmax                  */
-  int use;                 /* threads of the next step                                 */
-  int phase, np, last_pick, run_n, losses;
-  long left, period;       /* steps left in the phase; length of the running stretch   */
-  double last, mean1;      /* clock at the last tick; mean step on one thread (probe)  */
-  double run_sum;          /* time of the current window of a stretch on many threads  */
-  double probe_time;       /* time of the probe on many threads so far, and its steps  */
-  long probe_n;
-  double tp[MPM_PROBE_STEPS];
-  long steps_multi;        /* steps run on more than one thread                        */
-  long nprobe;             /* probes done                                              */
-  long nfall;              /* falls back to one thread in a stretch                    */
-  long nbusy;              /* probes skipped: no idle core (load average)              */
-} mpm_threads;
-
-/* The ledger's sums (mpm_step.c), accumulated step by step in a fixed order. */
-typedef struct {
-  double L_bc, L_flip, L_scheme, W_head, L_contact, L_debris, L_damp;
-  double W_iface;          /* the interface's cohesive work so far (mpm_iface.c): in W_coh */
-  double D_static;         /* the static solver's interface dissipation (mpm_static_iface.c): in D */
-  double KE_head0;         /* the head's kinetic energy at the start                   */
-  double head_reset;       /* kinetic energy the head's rigid projection removed so far */
-  /* this step's held-node and serial sums (mpm_nodes.c, mpm_step.c; reset every step) */
-  double s_A, s_K, s_B, s_Bheld, s_Bstart, s_H, s_Wtrue, s_Wbook;
-  double s_C;              /* the contact's loss this step (mpm_fields.c)               */
-  double s_I;              /* the interface's work this step (mpm_iface.c)             */
-  double s_Dmp;            /* the damper's work this step (mpm_damping.c)               */
-} mpm_ledger;
-
-/* Per-strip partial sums of one step (fixed partition: the same sums for any thread
- * count).  Node terms: A = sum m v . d, K = sum m |d|^2, B = -dt sum f . u;
- * particle terms: KP = sum m |dv_p|^2, QS = sum m sigma_new : deps (mpm_step.c,
- * ledger_step); and D, the step's dissipation (sim.D_run, for mpm_control.c). */
-enum { MPM_LED_A = 0, MPM_LED_K, MPM_LED_B, MPM_LED_KP, MPM_LED_QS, MPM_LED_D, MPM_LED_BV, MPM_LED_N };
-
-/* ---- the simulation ---- */
-/* Particles whose elastic trial left the elastic domain, waiting for the full
- * decohesion update (mpm_step.c): one list per thread, of at most MPM_DEFER particles
- * (a chunk of the gather), with each one's strain increment. */
-#define MPM_DEFER 256
-typedef struct {
-  size_t n;
-  size_t k[MPM_DEFER];
-  double de[MPM_DEFER][3];
-} mpm_defer;
-
-typedef struct {
-  mpm_scene sc;            /* copy of the scene                                        */
-  mpm_material mat[5];     /* MPM_MAT_BAR, MPM_MAT_IMP (the imperfection), MPM_MAT_HEAD,
-                              MPM_MAT_DEBRIS, MPM_MAT_ELASTIC */
-  size_t nhead;            /* particles of the rigid head (p->n - nhead are the bar's)  */
-  uint32_t *head;          /* their indices, ascending (rebuilt by each sort)          */
-  double head_dy;          /* the head's vertical displacement (it moves as one body)   */
-  double grid_ox0;         /* the grid's x-origin at t = 0                              */
-  mpm_particles *p;
-  mpm_grid *g;
-  int *grip;   int ngrip;  /* nodes where v^L_x = -speed (left end)                     */
-  int *fixx;   int nfixx;  /* nodes where v^L_x = 0 (right end)                         */
-  int fixy;                /* the one node where v^L_y = 0 as well                      */
-  double t;                /* time                                                     */
-  long step;               /* steps taken                                              */
-  double P_grip, P_fixed;  /* loads (tension positive) of the last step                 */
-  /* the grip (mpm_control.c): its speed this step (pulling, > 0), the change of that speed
-   * from the last step, its displacement so far (delta) */
-  double vgrip, dvgrip, ugrip;
-  double D_run;            /* dissipation so far, summed from the steps' increments       */
-  double P_peak;           /* the largest grip load so far                                */
-  double ctl_D0;           /* dissipation control: the D held to (infinite: not yet)     */
-  double ctl_int;          /* ... its integral term (a speed; 0 until it takes over)      */
-  double W_ext;            /* accumulated external work                                */
-  long n_soften, n_separate, n_bracketed; /* counters of constitutive paths           */
-  long n_debris;           /* separated particles that left the grid (MPM_MAT_DEBRIS)    */
-  /* sorting and threads (mpm_sort.c): particles sorted by cell, column by column;
-   * strips of MPM_STRIP columns of cells are coloured even/odd for the scatter */
-  int nthreads;            /* threads of the current step (set by mpm_threads_tick)     */
-  mpm_threads thr;         /* thr.nmax threads' worth of scratch is allocated           */
-  mpm_dwork **dws;         /* one scratch per thread                                   */
-  mpm_defer *defer;        /* one list per thread                                      */
-  int nstrip;              /* strips of columns                                        */
-  size_t *strip_start;     /* first particle of each strip (nstrip + 1 entries)        */
-  uint32_t *key, *perm;    /* per-particle cell key and sort permutation               */
-  size_t *count;           /* per-cell counters                                        */
-  double *scratch;         /* one particle array's worth, for permuting                 */
-  uint8_t *scratch8;
-  int resort;              /* 1: a particle left its strip's safe range; sort before the next step */
-  int laid;                /* grid.weights = laid: 1 while this step's particles sit at their
-                              laid places (mpm_step.c lay_grid), their offsets in wdx, wdy */
-  int laid_done;           /* 1 once the bar is cut and the laid places are given up     */
-  double time_split[5];    /* seconds in: sort, p2g, grid, g2p, constitutive            */
-  int cut;                 /* 1 once the band has cut the bar: a separated particle in every
-                              particle row of the reference lattice (mpm_sim_cut); latched */
-  long cut_seen;           /* n_separate when the rows were last counted                */
-  int nrow;                /* particle rows of the bar                                  */
-  uint8_t *rowsep;         /* scratch: the rows holding a separated particle            */
-  mpm_ledger led;          /* the energy ledger                                        */
-  mpm_band *band;          /* decohesion.Le = row: the rows' measured Le, or NULL       */
-  double (*led_part)[MPM_LED_N]; /* per-strip partial sums of the step (nstrip rows)  */
-  struct mpm_damping *damp; /* time.damping > 0: its state (mpm_damping.c), else NULL   */
-  const struct mpm_scheme_type *scheme; /* time.scheme's phases (mpm_phase.h)          */
-  struct mpm_phases *ph;   /* the hooks and loops the step walks, chosen at setup       */
-} mpm_sim;
-
-/* Local damping (time.damping): its state (mpm_kernel.h). */
-typedef struct mpm_damping mpm_damping;
-
-enum { MPM_T_SORT = 0, MPM_T_P2G, MPM_T_GRID, MPM_T_G2P, MPM_T_CONST };
-/* Materials.  The head is the loading machine (paper, sec. 4.4: "a rigid head with
- * large mass"): stress-free particles MPM_HEAD_CELLS cells wide beyond the bar's left
- * end, whose nodes are all gripped in x.  It keeps the nodes beyond the bar's end from
- * ever being nearly empty, which under USL tore the gripped end off once a particle
- * crossed the gripped node line (Fig. 6 at h 4 past delta 2, at h 2 with 9 ppc before
- * separation).  Head particles are left out of the energies and the snapshots. */
-/* MPM_MAT_DEBRIS: a separated particle that left the grid (mpm_step.c, "Debris"): no
- * mass, no stiffness, no strength; it keeps its lambda, dis and wcoh. */
-/* MPM_MAT_ELASTIC: the bar off the crack's path (decohesion.path = line): the bar's
- * stiffness and mass, no strength test. */
-enum { MPM_MAT_BAR = 0, MPM_MAT_IMP = 1, MPM_MAT_HEAD = 2, MPM_MAT_DEBRIS = 3, MPM_MAT_ELASTIC = 4 };
-#define MPM_HEAD_CELLS 2
-#define MPM_STRIP 4        /* columns of cells per strip (>= 3: see mpm_sort.c)           */
-#define MPM_SORT_EVERY 64  /* steps between sorts (quasi-static: particles move ~1e-5 h a
-                              step; 16 cost 0.45 ns per particle-step more, measured)  */
-
-
-/* nthreads > 0: that many threads; <= 0: chosen per step by measurement, up to OpenMP's
- * default (mpm_threads.c).  Results do not depend on it (fixed summation order). */
-mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char *err, size_t errlen);
-void mpm_sim_free(mpm_sim *s);
-
-/* The manufactured solution (mpm_mms.c): a forced axial vibration with its body force,
- * u = A sin(pi X / L) sin(w t), nu = 0, 1 ppc, dt = 0.1 h / 8; the scene at grid h, and
- * the RMS particle displacement error over A at t = 10 (*e; MPM_OK or the step's status). */
-mpm_scene mpm_mms_scene(double h, int scheme, int bc);
-mpm_status mpm_mms_error(double h, int scheme, int bc, double *e, char *err, size_t errlen);
-/* The time schemes (mpm_scheme.c): the index of the one named `name` (-1: none), and
- * the name of index i (that of MPM_SCHEME_USL when i is not one). */
-int mpm_scheme_find(const char *name);
-const char *mpm_scheme_name(int i);
-/* One explicit step (eqs. 2-7) with the scene's scheme.  On failure, err names the step, particle and field. */
-mpm_status mpm_sim_step(mpm_sim *s, char *err, size_t errlen);
-double mpm_sim_delta(const mpm_sim *s);
-/* The grip's displacement after `ahead` more steps at its current speed (ahead 0: delta). */
-double mpm_sim_grip_u(const mpm_sim *s, int ahead);
-/* Particle i's kinetic and elastic energy (plane-stress compliance of its material). */
-void mpm_particle_energy(const mpm_sim *s, size_t i, double *ke, double *se);
 void mpm_sim_energy(const mpm_sim *s, mpm_energy *e);
-/* decohesion.path = interface (mpm_iface.c), for pictures: the number of places on the
- * line (0 without an interface), and place i's piece of the line on the bar, from
- * (xy[0], xy[1]) to (xy[2], xy[3]) in reference coordinates, with the lambda and state
- * (0 stuck, 1 softening, 2 open) of the segment that holds it; 0 when place i is off
- * the bar. */
+
+/* ---- particles, read-only: structure of arrays, valid until the next step or free ----
+ * A particle's material: the bar, the imperfection, the rigid head (the loading machine,
+ * left out of energies and snapshots), debris (separated, off the grid), the bar off the
+ * crack's path (elastic). */
+enum { MPM_MAT_BAR = 0, MPM_MAT_IMP = 1, MPM_MAT_HEAD = 2, MPM_MAT_DEBRIS = 3, MPM_MAT_ELASTIC = 4 };
+typedef struct {
+  size_t n;                     /* particles                                           */
+  size_t nhead;                 /* of them the head's (mat MPM_MAT_HEAD)               */
+  const double *x, *y;          /* position                                            */
+  const double *x0, *y0;        /* reference position                                  */
+  const double *vx, *vy;        /* velocity                                            */
+  const double *m, *V;          /* mass, volume                                        */
+  const double *sxx, *syy, *sxy; /* stress                                             */
+  const double *lam;            /* decohesion parameter lambda                         */
+  const double *upn, *upt;      /* displacement jump across the failure plane, n and t */
+  const double *wcoh, *dis;     /* traction work and dissipation so far               */
+  const uint8_t *mat, *sep;     /* MPM_MAT_*; 1 once separated                         */
+} mpm_particle_view;
+void mpm_sim_particles(const mpm_sim *s, mpm_particle_view *v);
+
+/* Setting up a start other than the scene's (the bench): the bar at the uniform uniaxial
+ * stress sigma along x, at the time and step the grip reaches it; particle i separated.
+ * MPM_EINVAL for a sigma not finite or an i past the particles. */
+mpm_status mpm_sim_prestress(mpm_sim *s, double sigma);
+mpm_status mpm_sim_separate(mpm_sim *s, size_t i);
+
+/* decohesion.path = interface, for pictures: the number of places on the line (0
+ * without one), and place i's piece of it, (xy[0], xy[1]) to (xy[2], xy[3]) in reference
+ * coordinates, with its segment's lambda and state (0 stuck, 1 softening, 2 open); 0 when
+ * place i is off the bar. */
 int mpm_iface_pieces(const mpm_sim *s);
 int mpm_iface_piece(const mpm_sim *s, int i, double xy[4], double *lam, int *state);
-/* What a caller reads of the kernel's bookkeeping (verify/: summary.json and the bench). */
+
+/* The kernel's bookkeeping (summary.json and the bench): threads, memory per particle. */
 typedef struct {
   int nmax;                /* threads allocated for                                    */
   long steps_multi;        /* steps run on more than one thread                        */
   long nprobe, nbusy;      /* probes of the thread count done; skipped (no idle core)  */
 } mpm_threads_info;
 void mpm_sim_threads(const mpm_sim *s, mpm_threads_info *out);
-/* The kernel's memory per particle (particles, sorting, grid and fields, the rest),
- * bytes rounded. */
 size_t mpm_sim_bytes_per_particle(const mpm_sim *s);
 
 /* ---- the quasi-static solver (mpm_static.c) ----
  * Load increments on the same grid, particles, shapes and laws, each solved by Newton's
  * method on the nodal force balance; the grip's displacement leads to the first
- * softening, then the dissipation does (the grip may move back: snapback).  The
- * increment is one "step" of the run: it sets s->ugrip (delta), the loads, the
- * particles' state and positions, s->W_ext, s->step and s->t (the increment count). */
-enum { MPM_SOLVER_EXPLICIT = 0, MPM_SOLVER_STATIC = 1 };
+ * softening, then the dissipation does (the grip may move back: snapback).  An
+ * increment is one "step" of the sim: delta, loads, particles, step and t advance. */
 enum { MPM_QS_GRIP = 0, MPM_QS_DISSIPATION = 1 };
 typedef struct {
   long increments;         /* load increments taken                                    */
-  long newton;             /* Newton iterations, all increments                          */
-  long cuts;               /* increments retried with a smaller step                      */
-  long factorizations;     /* LU factorizations of the tangent                            */
+  long newton;             /* Newton iterations, all increments                        */
+  long cuts;               /* increments retried with a smaller step                   */
+  long factorizations;     /* LU factorizations of the tangent                         */
   long switches;           /* changes of control                                       */
-  long turns;              /* increments retried smaller at a corner of the curve          */
-  long backtracks;         /* Newton steps halved by the line search                      */
-  int nres;                /* the last increment's Newton iterations, and each one's      */
-  double res[32];          /*   largest residual force over the largest load (its first 32) */
-  int mode;                /* MPM_QS_* of the last increment                              */
+  long turns;              /* increments retried smaller at a corner of the curve      */
+  long backtracks;         /* Newton steps halved by the line search                   */
+  int nres;                /* the last increment's Newton iterations, and each one's   */
+  double res[32];          /*   largest residual force over the largest load (first 32) */
+  int mode;                /* MPM_QS_* of the last increment                           */
   int unknowns;            /* free degrees of freedom                                  */
   size_t nnz;              /* entries of the tangent                                   */
   double t_eval, t_factor, t_solve; /* seconds: laws and assembly, factorization, solves */
 } mpm_static_stats;
 typedef struct mpm_static mpm_static;
-/* On a sim made by mpm_sim_alloc from a scene with solver = static; s stays owned by
- * the caller and must outlive q.  MPM_EINVAL and a message for what it cannot solve. */
+/* On a sim made from a scene with solver = static; s stays owned by the caller and must
+ * outlive q.  MPM_EINVAL and a message for what it cannot solve. */
 mpm_status mpm_static_alloc(mpm_sim *s, mpm_static **out, char *err, size_t errlen);
 void mpm_static_free(mpm_static *q);
 mpm_status mpm_static_step(mpm_static *q, char *err, size_t errlen);
 void mpm_static_stats_get(const mpm_static *q, mpm_static_stats *out);
 
-/* Total momentum (for conservation tests). */
-void mpm_particles_momentum(const mpm_particles *p, double *px, double *py);
+/* The manufactured solution (mpm_mms.c): a forced axial vibration with its body force,
+ * u = A sin(pi X / L) sin(w t), nu = 0, 1 ppc, dt = 0.1 h / 8, on grid h: the RMS
+ * particle displacement error over A at t = 10 (*e; MPM_OK or the step's status). */
+mpm_status mpm_mms_error(double h, int scheme, int bc, double *e, char *err, size_t errlen);
 
 #endif

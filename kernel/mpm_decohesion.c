@@ -302,6 +302,74 @@ typedef struct {
   phi_ctx ctx;       /* the consistency function the root solved                   */
 } dcoh_trace;
 
+/* An unseparated particle's step from its elastic trial tr: nothing when eq. 23 holds (0);
+ * otherwise (1) the softening step of eqs. 39-50, or the separation of eqs. 56-58 when
+ * lambda would pass the threshold or no root is found: s, the jump increments, out's
+ * lambda or sep, info's path. */
+static inline __attribute__((always_inline)) int dcoh_soften(const mpm_material *m, const mpm_dstate *in,
+                                                             const nt_stress tr, nt_stress *s, double *dun,
+                                                             double *dut, mpm_dstate *out, mpm_dinfo *info,
+                                                             mpm_dwork *w, dcoh_trace *t)
+{
+  /* decohesion.reversed_shear = closing: shear against the slip the particle has
+   * accumulated (s_nt upt < 0) closes that slip elastically and leaves eq. 23, as <sn>
+   * leaves normal compression out of it; only the opening part may soften.  The paper's
+   * eq. 23 is even in s_nt (EVEN): after a release the rebound's reversed shear fails
+   * the band's part-softened neighbours (docs/methods.md secs. 5h, 5j). */
+  const int st_on = !(m->shear_closing && tr.nt * in->upt < 0.0);
+  const double st = st_on ? tr.nt : 0.0;
+  const double se = eff_traction(m, tr.nn, st);
+  const double c = se - (1.0 - powq(in->lam, m->q));            /* eq. 23 */
+  if (c <= 0.0)
+    return 0;
+  /* Flow direction at the trial state (eqs. 24, 26). */
+  const double ise = 1.0 / se, r = m->s0 * ise;
+  const double gn = tr.nn > 0.0 ? tr.nn * m->isnf2 : 0.0;
+  const double gt = st * m->istf2;
+  const double mn = r * gn;
+  const double mt = m->model == MPM_DCOH_MODEL2 ? 0.0 : r * gt;
+  /* Traction (and s_tt) per unit dlambda: C : (ubar0/Le) sym(n (x) m), eqs. 39-41. */
+  const double k = m->kL;
+  phi_ctx ctx = {m, tr.nn, st, m->E1 * k * mn, m->G * k * mt, in->lam};
+  t->st_on = st_on;
+  t->st = st;
+  t->se = se;
+  t->r = r;
+  t->gn = gn;
+  t->gt = gt;
+  t->mn = mn;
+  t->mt = mt;
+  t->ctx = ctx;
+  const double smtt = m->E2 * k * mn;
+  /* 2b of eq. 49, -(m* : s_m) / s0 + q lambda^(q-1) with m* = (s0 / se)(gn, gt),
+   * is dpow - Q / se^2 with Q = s0 (ubar0 / Le)(E1 gn^2 + G gt^2); the first-order
+   * step of eq. 46, -c / 2b, where 2b < 0, is then c se^2 / (Q - dpow se^2): one
+   * division, not two in a row. */
+  const double Q = m->s0 * k * (m->E1 * gn * gn + (m->model == MPM_DCOH_MODEL2 ? 0.0 : m->G * gt * gt));
+  const double se2 = se * se, den = Q + (m->visc - dpowq(in->lam, m->q)) * se2;
+  const double guess = (den > 0.0 && isfinite(den)) ? c * se2 / den : 0.0;
+  const double dlmax = 1.0 - in->lam;
+  double dl = 0.0;
+  const int ok = dlmax > 0.0 ? solve_dl(&ctx, dlmax, guess, w, info, &dl) : -1;
+  if (ok == 0 && in->lam + dl <= m->sep_threshold) {
+    s->nn = tr.nn - dl * ctx.smn;
+    s->nt = tr.nt - dl * ctx.smt;
+    s->tt = tr.tt - dl * smtt;
+    *dun = dl * m->ubar0 * mn;
+    *dut = dl * m->ubar0 * mt;
+    out->lam = in->lam + dl;
+    info->path = MPM_DPATH_SOFTEN;
+    t->dl = dl;
+  } else {
+    /* Separation imminent (lambda past the threshold) or no solution. */
+    t->contact = separate(m, tr, in->upn, s, dun, dut);
+    t->dun = *dun;
+    out->sep = 1;
+    info->path = MPM_DPATH_SEPARATE;
+  }
+  return 1;
+}
+
 /* The update (mpm_dcoh_update), recording in *t what the tangent needs. */
 static inline mpm_status dcoh_step(const mpm_material *m, const mpm_dstate *in, const double de[3],
                                    mpm_dstate *out, mpm_dinfo *info, mpm_dwork *w, dcoh_trace *t)
@@ -335,64 +403,8 @@ static inline mpm_status dcoh_step(const mpm_material *m, const mpm_dstate *in, 
     t->contact = separate(m, tr, in->upn, &s, &dun, &dut);
     t->dun = dun;
     info->path = MPM_DPATH_OPEN;
-  } else {
-    /* decohesion.reversed_shear = closing: shear against the slip the particle has
-     * accumulated (s_nt upt < 0) closes that slip elastically and leaves eq. 23, as <sn>
-     * leaves normal compression out of it; only the opening part may soften.  The paper's
-     * eq. 23 is even in s_nt (EVEN): after a release the rebound's reversed shear fails
-     * the band's part-softened neighbours (docs/methods.md secs. 5h, 5j). */
-    const int st_on = !(m->shear_closing && tr.nt * in->upt < 0.0);
-    const double st = st_on ? tr.nt : 0.0;
-    const double se = eff_traction(m, tr.nn, st);
-    const double c = se - (1.0 - powq(in->lam, m->q));            /* eq. 23 */
-    if (c <= 0.0)
-      goto done;
-    /* Flow direction at the trial state (eqs. 24, 26). */
-    const double ise = 1.0 / se, r = m->s0 * ise;
-    const double gn = tr.nn > 0.0 ? tr.nn * m->isnf2 : 0.0;
-    const double gt = st * m->istf2;
-    const double mn = r * gn;
-    const double mt = m->model == MPM_DCOH_MODEL2 ? 0.0 : r * gt;
-    /* Traction (and s_tt) per unit dlambda: C : (ubar0/Le) sym(n (x) m), eqs. 39-41. */
-    const double k = m->kL;
-    phi_ctx ctx = {m, tr.nn, st, m->E1 * k * mn, m->G * k * mt, in->lam};
-    t->st_on = st_on;
-    t->st = st;
-    t->se = se;
-    t->r = r;
-    t->gn = gn;
-    t->gt = gt;
-    t->mn = mn;
-    t->mt = mt;
-    t->ctx = ctx;
-    const double smtt = m->E2 * k * mn;
-    /* 2b of eq. 49, -(m* : s_m) / s0 + q lambda^(q-1) with m* = (s0 / se)(gn, gt),
-     * is dpow - Q / se^2 with Q = s0 (ubar0 / Le)(E1 gn^2 + G gt^2); the first-order
-     * step of eq. 46, -c / 2b, where 2b < 0, is then c se^2 / (Q - dpow se^2): one
-     * division, not two in a row. */
-    const double Q = m->s0 * k * (m->E1 * gn * gn + (m->model == MPM_DCOH_MODEL2 ? 0.0 : m->G * gt * gt));
-    const double se2 = se * se, den = Q + (m->visc - dpowq(in->lam, m->q)) * se2;
-    const double guess = (den > 0.0 && isfinite(den)) ? c * se2 / den : 0.0;
-    const double dlmax = 1.0 - in->lam;
-    double dl = 0.0;
-    const int ok = dlmax > 0.0 ? solve_dl(&ctx, dlmax, guess, w, info, &dl) : -1;
-    if (ok == 0 && in->lam + dl <= m->sep_threshold) {
-      s.nn = tr.nn - dl * ctx.smn;
-      s.nt = tr.nt - dl * ctx.smt;
-      s.tt = tr.tt - dl * smtt;
-      dun = dl * m->ubar0 * mn;
-      dut = dl * m->ubar0 * mt;
-      out->lam = in->lam + dl;
-      info->path = MPM_DPATH_SOFTEN;
-      t->dl = dl;
-    } else {
-      /* Separation imminent (lambda past the threshold) or no solution. */
-      t->contact = separate(m, tr, in->upn, &s, &dun, &dut);
-      t->dun = dun;
-    t->dun = dun;
-      out->sep = 1;
-      info->path = MPM_DPATH_SEPARATE;
-    }
+  } else if (!dcoh_soften(m, in, tr, &s, &dun, &dut, out, info, w, t)) {
+    goto done;
   }
   if (info->path != MPM_DPATH_SOFTEN)
     out->lam = in->lam + sqrt(dun * dun + dut * dut) / m->ubar0; /* d lambda = |d ud| / ubar0 */

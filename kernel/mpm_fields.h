@@ -6,7 +6,7 @@
 #ifndef DELAM_MPM_FIELDS_H
 #define DELAM_MPM_FIELDS_H
 
-#include "mpm.h"
+#include "mpm_kernel.h"
 #include "mpm_gimp.h"
 #include "mpm_iface.h"
 

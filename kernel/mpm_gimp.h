@@ -6,7 +6,7 @@
 #ifndef DELAM_MPM_GIMP_H
 #define DELAM_MPM_GIMP_H
 
-#include "mpm.h"
+#include "mpm_kernel.h"
 #include "mpm_node.h"
 #include "mpm_shape.h"
 

@@ -7,7 +7,7 @@
 
 #include <stdint.h>
 
-#include "mpm.h"
+#include "mpm_kernel.h"
 
 /* One interface: the line at alpha through the flaw, cut into segments of MPM_IFACE_SEG h
  * along it.  Per node (nnx * nny): its segment and its share of the line.  Per segment:

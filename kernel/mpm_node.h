@@ -8,7 +8,7 @@
 #include <stddef.h>
 #include <string.h>
 
-#include "mpm.h"
+#include "mpm_kernel.h"
 
 /* Nodes with less mass than this fraction of a particle's are treated as empty. */
 #define MPM_MASS_EPS 1e-12

@@ -5,7 +5,7 @@
 #ifndef DELAM_MPM_NODES_H
 #define DELAM_MPM_NODES_H
 
-#include "mpm.h"
+#include "mpm_kernel.h"
 
 /* 1 where grid.node_mass = limited acts (usl, usavg; bilinear shapes): the scatter then
  * sums each node's sum_p V_p (|Gx_ip| + |Gy_ip|) into lane qx. */

@@ -12,7 +12,7 @@
 #ifndef DELAM_MPM_PHASE_H
 #define DELAM_MPM_PHASE_H
 
-#include "mpm.h"
+#include "mpm_kernel.h"
 
 typedef struct mpm_scheme_type {
   const char *name;  /* the scene's time.scheme word                                    */

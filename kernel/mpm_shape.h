@@ -11,7 +11,7 @@
 #include <math.h>
 #include <stddef.h>
 
-#include "mpm.h"
+#include "mpm_kernel.h"
 
 typedef struct {
   size_t n00;                 /* index of node (i, j)                                  */

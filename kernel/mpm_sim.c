@@ -1,7 +1,7 @@
 /*
  * mpm_sim.c - setting up a run from a scene: the grid (only as large as the motion
  * needs), particles on a regular n x n subdivision of each cell, the materials with
- * the imperfection, the boundary-condition node lists; and the energy sums.
+ * the imperfection, the boundary-condition node lists (the sums read back: mpm_view.c).
  *
  * Loading (the paper, sec. 4.4, Fig. 5; docs/model.md sec. 6, "the grip"): the left
  * end x = 0 is gripped in x only by a rigid head moving at -speed, modelled as
@@ -433,112 +433,4 @@ double mpm_scene_path_halfwidth(const mpm_scene *sc)
 {
   const double a = sc->alpha_deg * (3.14159265358979323846 / 180.0);
   return 0.5 * sc->h * (fabs(sin(a)) + fabs(cos(a))) + sc->path_reach * sc->h;
-}
-
-/* The band has cut the bar once every particle row of the reference lattice holds a
- * separated particle: the bar is then in two parts (the scenes' bands run from the
- * bottom face to the top one).  Counted again only after new separations. */
-void mpm_sim_cut(mpm_sim *s)
-{
-  if (s->cut || s->n_separate == s->cut_seen)
-    return;
-  s->cut_seen = s->n_separate;
-  const mpm_particles *p = s->p;
-  const double d = s->sc.h / sqrt((double)s->sc.ppc);
-  memset(s->rowsep, 0, (size_t)s->nrow);
-  int rows = 0;
-  for (size_t k = 0; k < p->n; k++)
-    if (p->sep[k]) {
-      const int j = (int)(p->y0[k] / d);
-      if (j >= 0 && j < s->nrow && !s->rowsep[j]) {
-        s->rowsep[j] = 1;
-        rows++;
-      }
-    }
-  s->cut = rows == s->nrow;
-}
-
-double mpm_sim_grip_u(const mpm_sim *s, int ahead)
-{
-  if (s->sc.control == MPM_CONTROL_GRIP) /* the paper's: delta = speed t exactly */
-    return s->sc.speed * (double)(s->step + ahead) * s->sc.dt;
-  return s->ugrip + ahead * s->vgrip * s->sc.dt;
-}
-
-double mpm_sim_delta(const mpm_sim *s)
-{
-  if (s->sc.solver == MPM_SOLVER_STATIC)
-    return s->ugrip;
-  return s->sc.control == MPM_CONTROL_GRIP ? s->sc.speed * s->t : s->ugrip;
-}
-
-void mpm_particle_energy(const mpm_sim *s, size_t i, double *ke, double *se)
-{
-  const mpm_particles *p = s->p;
-  const mpm_material *m = &s->mat[p->mat[i]];
-  *ke = 0.5 * p->m[i] * (p->vx[i] * p->vx[i] + p->vy[i] * p->vy[i]);
-  /* plane-stress compliance: exx = (sxx - nu syy)/E, eyy = (syy - nu sxx)/E, gxy = sxy/G */
-  const double exx = (p->sxx[i] - m->nu * p->syy[i]) / m->E;
-  const double eyy = (p->syy[i] - m->nu * p->sxx[i]) / m->E;
-  *se = 0.5 * p->V[i] * (p->sxx[i] * exx + p->syy[i] * eyy + p->sxy[i] * p->sxy[i] / m->G);
-}
-
-void mpm_sim_energy(const mpm_sim *s, mpm_energy *e)
-{
-  const mpm_particles *p = s->p;
-  double ke = 0.0, se = 0.0, wc = 0.0, dd = 0.0;
-  for (size_t i = 0; i < p->n; i++) {
-    if (p->mat[i] == MPM_MAT_HEAD)
-      continue; /* the machine, not the specimen */
-    const mpm_material *m = &s->mat[p->mat[i]];
-    if (p->mat[i] != MPM_MAT_DEBRIS) { /* debris: its KE and SE went into L_debris */
-      double k1, s1;
-      mpm_particle_energy(s, i, &k1, &s1);
-      ke += k1;
-      se += s1;
-    }
-    wc += p->wcoh[i];
-    if (s->band) /* Le changes in time: the sum of U0 dlambda V / Le, step by step */
-      dd += p->dis[i];
-    else if (p->lam[i] > 0.0) /* eq. 10: U0 min(lambda, 1) per unit failure area V / Le */
-      dd += m->U0 * fmin(p->lam[i], 1.0) * p->V[i] / m->Le;
-  }
-  e->W_ext = s->W_ext;
-  e->KE = ke;
-  e->SE = se;
-  if (s->g && s->g->fld && s->g->fld->ifc) { /* the interface's (mpm_iface.c) */
-    wc += s->led.W_iface;
-    dd += mpm_iface_D(s) + s->led.D_static;
-  }
-  e->W_coh = wc;
-  e->D = dd;
-  e->L_bc = s->led.L_bc;
-  e->L_flip = s->led.L_flip;
-  e->L_scheme = s->led.L_scheme;
-  e->W_head = s->led.W_head;
-  e->L_contact = s->led.L_contact;
-  e->L_debris = s->led.L_debris;
-  e->L_damp = s->led.L_damp;
-}
-
-void mpm_sim_threads(const mpm_sim *s, mpm_threads_info *out)
-{
-  out->nmax = s->thr.nmax;
-  out->steps_multi = s->thr.steps_multi;
-  out->nprobe = s->thr.nprobe;
-  out->nbusy = s->thr.nbusy;
-}
-
-size_t mpm_sim_bytes_per_particle(const mpm_sim *s)
-{
-  const size_t np = s->p->n, nn = (size_t)s->g->nnx * (size_t)s->g->nny;
-  const size_t ncell = (size_t)s->g->ncx * (size_t)s->g->ncy;
-  const size_t particles = np * (16 * sizeof(double) + 2);         /* mpm_particles  */
-  const size_t sorting = np * (sizeof(double) + 1 + 2 * sizeof(uint32_t)) + (ncell + 1) * sizeof(size_t) +
-                         ((size_t)s->nstrip + 1) * sizeof(size_t);
-  const size_t fields = s->g->fld ? nn * (sizeof(mpm_node) + 1 + 3 * sizeof(double)) : 0;
-  const size_t grid = nn * sizeof(mpm_node) + fields;
-  const size_t other = s->nhead * sizeof(uint32_t) + (size_t)s->thr.nmax * sizeof(mpm_defer) +
-                       (size_t)(s->ngrip + s->nfixx) * sizeof(int);
-  return (particles + sorting + grid + other + np / 2) / np;
 }

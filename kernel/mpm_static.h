@@ -6,7 +6,7 @@
 #ifndef DELAM_MPM_STATIC_H
 #define DELAM_MPM_STATIC_H
 
-#include "mpm.h"
+#include "mpm_kernel.h"
 
 /* ---- the sparse system over the free degrees of freedom (UMFPACK) ---- */
 typedef struct mpm_lin mpm_lin;

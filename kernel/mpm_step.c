@@ -197,6 +197,105 @@ enum {
 #define G2P_MUSL (G2P_X | G2P_STRAIN_F)
 #define G2P_MOVE (G2P_X | G2P_V)
 
+/* The gather's interpolation at a particle at (xk, yk), for g2p_strip_impl: the lanes S
+ * of the node records and their frac dt x and y derivatives GX, GY (dtihx, dtihy).  two:
+ * near a separated band, the particle's side's field (mpm_fields.c).  uGIMP: 3 x 3 nodes. */
+static inline __attribute__((always_inline)) void g2p_gather_gimp(const mpm_grid *g, const mpm_node *restrict nd,
+                                                                   const mpm_particles *p, size_t k, double xk,
+                                                                   double yk, double lcx, double lcy, double dtihx,
+                                                                   double dtihy, const int two, mpm_v4 *S,
+                                                                   mpm_v4 *GX, mpm_v4 *GY)
+{
+  const double ihx = g->ihx, ihy = g->ihy, ox = g->ox;
+  const size_t nny = (size_t)g->nny;
+  mpm_gimp1 sx, sy;
+  mpm_gimp_1d((xk - ox) * ihx, lcx, &sx);
+  mpm_gimp_1d((yk - g->oy) * ihy, lcy, &sy);
+  mpm_v4 DX, DY;
+  const size_t n0 = (size_t)sx.i0 * nny + (size_t)sy.i0;
+  if (two && mpm_fields_any(g->fld, n0, nny))
+    mpm_fields_gather(g->fld, (mpm_node *)nd, nny, &sx, &sy,
+                      mpm_fields_pside(g->fld, n0, nny, &sx, &sy, xk, yk, p->x0[k], p->y0[k], g->h), S,
+                      &DX, &DY);
+  else
+    mpm_gimp_gather(nd, nny, &sx, &sy, S, &DX, &DY);
+  *GX = dtihx * DX;
+  *GY = dtihy * DY;
+}
+
+/* The same with the paper's bilinear shapes: 2 x 2 nodes. */
+static inline __attribute__((always_inline)) void g2p_gather_lin(const mpm_grid *g, const mpm_node *restrict nd,
+                                                                  double xk, double yk, double dtihx, double dtihy,
+                                                                  const int two, mpm_v4 *S, mpm_v4 *GX, mpm_v4 *GY)
+{
+  const size_t nny = (size_t)g->nny;
+  mpm_shape sh;
+  mpm_shape_inside(g, xk, yk, &sh); /* inside: checked by the scatter */
+  const double rx = sh.wx1, ry = sh.wy1;
+  const size_t n00 = sh.n00, n01 = n00 + 1, n10 = n00 + nny, n11 = n10 + 1;
+  const mpm_node *r00 = nd + n00, *r10 = nd + n10, *r01 = nd + n01, *r11 = nd + n11;
+  if (two && mpm_fields_any4(g->fld, n00, nny)) { /* near a separated band */
+    size_t n[4];
+    double w[4];
+    mpm_shape_stencil(&sh, nny, n, w);
+    const int side = mpm_fields_side_w(g->fld, n, w, 4, xk, yk, g->h);
+    r00 = mpm_fields_node(g->fld, (mpm_node *)nd, n00, side);
+    r10 = mpm_fields_node(g->fld, (mpm_node *)nd, n10, side);
+    r01 = mpm_fields_node(g->fld, (mpm_node *)nd, n01, side);
+    r11 = mpm_fields_node(g->fld, (mpm_node *)nd, n11, side);
+  }
+  const mpm_v4 a00 = node_load4(r00), a10 = node_load4(r10);
+  const mpm_v4 a01 = node_load4(r01), a11 = node_load4(r11);
+  /* The bilinear field and its gradient (eq. 7) from the same differences:
+   * b0, b1 interpolate along x on the cell's lower and upper edges. */
+  const mpm_v4 d0 = a10 - a00, d1 = a11 - a01;
+  const mpm_v4 b0 = a00 + rx * d0, b1 = a01 + rx * d1, db = b1 - b0;
+  *S = b0 + ry * db;
+  *GX = dtihx * (d0 + ry * (d1 - d0));
+  *GY = dtihy * db;
+}
+
+/* Particle k's stress from its strain increment (de0, de1, the tensor shear g2 / 2) for
+ * g2p_strip_impl: the viscous stress of time.damping_beta (rate factor bvis; the
+ * ledger's sum in *bv), then the elastic trial, kept (1 if not: the full update decides)
+ * with its ledger term in *qs.
+ * Sec. 4: the trial is kept where F <= 0 (eq. 23), tested as
+ * <s_nn / snf>^2 + (s_nt / stf)^2 < (1 - lambda^q)^2 with the strength cached (str2k < 0
+ * once separated: always the full update).  It rounds differently from the full update,
+ * so anything within MPM_TRIAL_SAFE of the surface goes to the full update.  A
+ * non-finite trial makes b NaN (NaN * 0 is NaN), fails the test, and is reported by the
+ * full update: the finiteness check of the state costs nothing here.  (A non-finite
+ * velocity or position shows up one step later, in the strain or in the scatter.) */
+static inline __attribute__((always_inline)) int g2p_trial(const mpm_particles *p, size_t k, const mpm_material *m,
+                                                            double de0, double de1, double g2, double bvis,
+                                                            double *restrict sxx, double *restrict syy,
+                                                            double *restrict sxy, double str2k, double *qs,
+                                                            double *bv)
+{
+  const double de2 = 0.5 * g2;
+  if (p->vxx) {
+    /* stiffness-proportional damping: sigma_v = beta C : grad v, none on a separated
+     * particle (its failure plane carries no traction) */
+    *bv += m->mp * (p->vxx[k] * de0 + p->vyy[k] * de1 + p->vxy[k] * g2);
+    const double r = p->sep[k] ? 0.0 : bvis;
+    p->vxx[k] = r * (m->E1 * de0 + m->E2 * de1);
+    p->vyy[k] = r * (m->E2 * de0 + m->E1 * de1);
+    p->vxy[k] = r * 2.0 * m->G * de2;
+  }
+  const double txx = sxx[k] + m->E1 * de0 + m->E2 * de1;
+  const double tyy = syy[k] + m->E2 * de0 + m->E1 * de1;
+  const double txy = sxy[k] + 2.0 * m->G * de2;
+  const double sn = m->fn[0] * txx + m->fn[1] * tyy + m->fn[2] * txy, a = sn > 0.0 ? sn : 0.0;
+  const double b = m->ft[0] * txx + m->ft[1] * tyy + m->ft[2] * txy;
+  if (__builtin_expect(!(a * a + b * b < MPM_TRIAL_SAFE * str2k), 0))
+    return 1;
+  *qs += m->mp * (txx * de0 + tyy * de1 + txy * g2);
+  sxx[k] = txx;
+  syy[k] = tyy;
+  sxy[k] = txy;
+  return 0;
+}
+
 /* eqs. 5-7 and the constitutive update for the particles of strip q.  The four node
  * records give, in one weighted sum each, the interpolated values of every lane (S) and
  * their x and y derivatives (GX, GY).  USL: strain from v^L (lanes px, py).  MUSL:
@@ -211,7 +310,6 @@ static inline __attribute__((always_inline)) void g2p_strip_impl(mpm_sim *s, int
   const mpm_grid geo = *s->g, *g = &geo; /* a local copy: no store below can alias it */
   const mpm_particles *p = s->p;
   const double ihx = g->ihx, ihy = g->ihy, dt = s->sc.dt, ox = g->ox;
-  const size_t nny = (size_t)g->nny;
   const int strain = mode & (G2P_STRAIN_P | G2P_STRAIN_F);
   const int ux = (mode & G2P_STRAIN_F) ? GFX : GPX, uy = ux + 1; /* the lanes of the strain velocity */
   const double dtihx = frac * dt * ihx, dtihy = frac * dt * ihy;
@@ -251,46 +349,10 @@ static inline __attribute__((always_inline)) void g2p_strip_impl(mpm_sim *s, int
     size_t nd_ = 0;
     for (size_t k = c0; k < c1; k++) {
       mpm_v4 S, GX, GY; /* field, frac dt d/dx, frac dt d/dy */
-      if (gimp) {
-        mpm_gimp1 sx, sy;
-        mpm_gimp_1d((x[k] - ox) * ihx, lcx, &sx);
-        mpm_gimp_1d((y[k] - g->oy) * ihy, lcy, &sy);
-        mpm_v4 DX, DY;
-        const size_t n0 = (size_t)sx.i0 * nny + (size_t)sy.i0;
-        if ((mode & G2P_TWO) && mpm_fields_any(g->fld, n0, nny))
-          mpm_fields_gather(g->fld, (mpm_node *)nd, nny, &sx, &sy,
-                            mpm_fields_pside(g->fld, n0, nny, &sx, &sy, x[k], y[k], p->x0[k], p->y0[k], g->h), &S,
-                            &DX, &DY);
-        else
-          mpm_gimp_gather(nd, nny, &sx, &sy, &S, &DX, &DY);
-        GX = dtihx * DX;
-        GY = dtihy * DY;
-      } else {
-        mpm_shape sh;
-        mpm_shape_inside(g, x[k], y[k], &sh); /* inside: checked by the scatter */
-        const double rx = sh.wx1, ry = sh.wy1;
-        const size_t n00 = sh.n00, n01 = n00 + 1, n10 = n00 + nny, n11 = n10 + 1;
-        const mpm_node *r00 = nd + n00, *r10 = nd + n10, *r01 = nd + n01, *r11 = nd + n11;
-        if ((mode & G2P_TWO) && mpm_fields_any4(g->fld, n00, nny)) { /* near a separated band */
-          size_t n[4];
-          double w[4];
-          mpm_shape_stencil(&sh, nny, n, w);
-          const int side = mpm_fields_side_w(g->fld, n, w, 4, x[k], y[k], g->h);
-          r00 = mpm_fields_node(g->fld, (mpm_node *)nd, n00, side);
-          r10 = mpm_fields_node(g->fld, (mpm_node *)nd, n10, side);
-          r01 = mpm_fields_node(g->fld, (mpm_node *)nd, n01, side);
-          r11 = mpm_fields_node(g->fld, (mpm_node *)nd, n11, side);
-        }
-        const mpm_v4 a00 = node_load4(r00), a10 = node_load4(r10);
-        const mpm_v4 a01 = node_load4(r01), a11 = node_load4(r11);
-        /* The bilinear field and its gradient (eq. 7) from the same differences:
-         * b0, b1 interpolate along x on the cell's lower and upper edges. */
-        const mpm_v4 d0 = a10 - a00, d1 = a11 - a01;
-        const mpm_v4 b0 = a00 + rx * d0, b1 = a01 + rx * d1, db = b1 - b0;
-        S = b0 + ry * db;
-        GX = dtihx * (d0 + ry * (d1 - d0));
-        GY = dtihy * db;
-      }
+      if (gimp)
+        g2p_gather_gimp(g, nd, p, k, x[k], y[k], lcx, lcy, dtihx, dtihy, mode & G2P_TWO, &S, &GX, &GY);
+      else
+        g2p_gather_lin(g, nd, x[k], y[k], dtihx, dtihy, mode & G2P_TWO, &S, &GX, &GY);
       /* eq. 5 (and eq. 6 for USL) */
       double xn = x[k];
       if (mode & G2P_X) {
@@ -304,41 +366,14 @@ static inline __attribute__((always_inline)) void g2p_strip_impl(mpm_sim *s, int
         kv += mat[pmat[k]].mp * (S * S); /* lanes GFX, GFY: m |dv_p|^2 */
       }
       if (strain) {
-        const double de0 = GX[ux], de1 = GY[uy], g2 = GY[ux] + GX[uy], de2 = 0.5 * g2;
-        /* sec. 4: the elastic trial, kept where F <= 0 (eq. 23), tested as
-         * <s_nn / snf>^2 + (s_nt / stf)^2 < (1 - lambda^q)^2 with the strength cached
-         * (str2 < 0 once separated: always the full update).  It rounds differently from
-         * the full update, so anything within MPM_TRIAL_SAFE of the surface goes on the
-         * list for the full update, which decides.  A non-finite trial makes b NaN
-         * (NaN * 0 is NaN), fails the test, and is reported by the full update: the
-         * finiteness check of the state costs nothing here.  (A non-finite velocity
-         * or position shows up one step later, in the strain or in the scatter.) */
-        const mpm_material *m = &mat[pmat[k]];
-        if (p->vxx) {
-          /* stiffness-proportional damping: sigma_v = beta C : grad v, none on a separated
-           * particle (its failure plane carries no traction) */
-          bv += m->mp * (p->vxx[k] * de0 + p->vyy[k] * de1 + p->vxy[k] * g2);
-          const double r = p->sep[k] ? 0.0 : bvis;
-          p->vxx[k] = r * (m->E1 * de0 + m->E2 * de1);
-          p->vyy[k] = r * (m->E2 * de0 + m->E1 * de1);
-          p->vxy[k] = r * 2.0 * m->G * de2;
-        }
-        const double txx = sxx[k] + m->E1 * de0 + m->E2 * de1;
-        const double tyy = syy[k] + m->E2 * de0 + m->E1 * de1;
-        const double txy = sxy[k] + 2.0 * m->G * de2;
-        const double sn = m->fn[0] * txx + m->fn[1] * tyy + m->fn[2] * txy, a = sn > 0.0 ? sn : 0.0;
-        const double b = m->ft[0] * txx + m->ft[1] * tyy + m->ft[2] * txy;
-        if (__builtin_expect(!(a * a + b * b < MPM_TRIAL_SAFE * str2[k]), 0)) {
+        const double de0 = GX[ux], de1 = GY[uy], g2 = GY[ux] + GX[uy];
+        /* the elastic trial (sec. 4), or the list for the full update */
+        if (g2p_trial(p, k, &mat[pmat[k]], de0, de1, g2, bvis, sxx, syy, sxy, str2[k], &qs, &bv)) {
           dk[nd_] = k;
           dde[nd_][0] = de0;
           dde[nd_][1] = de1;
-          dde[nd_][2] = de2;
+          dde[nd_][2] = 0.5 * g2;
           nd_++;
-        } else {
-          qs += m->mp * (txx * de0 + tyy * de1 + txy * g2);
-          sxx[k] = txx;
-          syy[k] = tyy;
-          sxy[k] = txy;
         }
       }
       if (mode & G2P_X) {

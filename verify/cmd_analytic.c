@@ -252,16 +252,23 @@ out:
   return rc;
 }
 
-int ver_cmd_analytic(int argc, char **argv)
+/* The command's options: the bar's parameters and what to print. */
+typedef struct {
+  ana_params p;
+  int json, points;
+  const char *curve;  /* --curve FILE, or NULL                                  */
+  double delta_end;   /* < 0: the default, set once the bar is known            */
+  double speed, rho;  /* the bar at the grip speed (0: none), its density       */
+} an_opts;
+
+/* Parses argv into o: -1 on to the bar, 0 help printed, 2 a bad option (said on stderr). */
+static int parse_args(int argc, char **argv, an_opts *o)
 {
   ana_params p;
   ana_params_default(&p);
-  double *dst[O_MODEL] = {&p.alpha_deg, &p.snf, &p.stf, &p.U0, &p.s0, &p.q, &p.E, &p.nu, &p.L, &p.H};
-  int json = 0, points = 401;
-  const char *curve = NULL;
-  double delta_end = -1.0; /* < 0: the default, set once the bar is known */
-  double speed = 0.0, rho = 1.0;
-
+  *o = (an_opts){.p = p, .points = 401, .delta_end = -1.0, .rho = 1.0};
+  double *dst[O_MODEL] = {&o->p.alpha_deg, &o->p.snf, &o->p.stf, &o->p.U0, &o->p.s0, &o->p.q, &o->p.E, &o->p.nu,
+                          &o->p.L, &o->p.H};
   for (int i = 1; i < argc; i++) {
     const char *a = argv[i];
     if (strncmp(a, "--", 2) != 0 || !a[2]) {
@@ -270,25 +277,25 @@ int ver_cmd_analytic(int argc, char **argv)
     }
     const char *name = a + 2, *eq = strchr(name, '=');
     const size_t nlen = eq ? (size_t)(eq - name) : strlen(name);
-    int o = -1;
+    int k = -1;
     for (int j = 0; j < O_COUNT; j++)
       if (strlen(specs[j].name) == nlen && !strncmp(specs[j].name, name, nlen))
-        o = j;
-    if (o < 0) {
+        k = j;
+    if (k < 0) {
       fprintf(stderr, PROG ": unknown option '%.*s' (allowed: the options of --help)\n", (int)(nlen + 2), a);
       return 2;
     }
-    const opt_spec *s = &specs[o];
+    const opt_spec *s = &specs[k];
     if (s->kind == OPT_FLAG) {
       if (eq) {
         fprintf(stderr, PROG ": --%s takes no value (allowed: --%s alone)\n", s->name, s->name);
         return 2;
       }
-      if (o == O_HELP) {
+      if (k == O_HELP) {
         print_help(stdout);
         return 0;
       }
-      json = 1;
+      o->json = 1;
       continue;
     }
     /* a following option is a missing value, never the value itself */
@@ -296,67 +303,57 @@ int ver_cmd_analytic(int argc, char **argv)
     if (s->kind == OPT_STR) {
       if (!val || !*val)
         return bad(s, "missing value", NULL);
-      curve = val;
+      o->curve = val;
       continue;
     }
     double v;
     if (parse_value(s, val, &v))
       return 2;
-    if (o < O_MODEL)
-      *dst[o] = v;
-    else if (o == O_MODEL)
-      p.model = (int)v;
-    else if (o == O_POINTS)
-      points = (int)v;
-    else if (o == O_SPEED)
-      speed = v;
-    else if (o == O_RHO)
-      rho = v;
+    if (k < O_MODEL)
+      *dst[k] = v;
+    else if (k == O_MODEL)
+      o->p.model = (int)v;
+    else if (k == O_POINTS)
+      o->points = (int)v;
+    else if (k == O_SPEED)
+      o->speed = v;
+    else if (k == O_RHO)
+      o->rho = v;
     else
-      delta_end = v;
+      o->delta_end = v;
   }
 
-  ana_bar bar;
-  char err[200];
-  if (ana_bar_init(&p, &bar, err, sizeof err) != ANA_OK) {
-    fprintf(stderr, PROG ": %s\n", err);
-    return 2;
-  }
-  if (delta_end < 0.0) {
-    /* past the farthest point of the curve, so that it ends separated: on a
-     * q > 1 snapback that is the turning point, beyond both peak and separation */
-    delta_end = fmax(bar.delta_peak, bar.delta_sep);
-    if (bar.sstar_turn > 0.0 && bar.sstar_turn < 1.0) {
-      double dt, Pt;
-      ana_bar_softening_point(&bar, bar.sstar_turn, &dt, &Pt);
-      delta_end = fmax(delta_end, dt);
-    }
-    delta_end *= 1.5;
-  }
+  return -1;
+}
 
-  /* the bar at the grip speed: the plane at L / 2, as the scene files' flaw */
-  ana_wave wave = {0};
-  double wpeak = -INFINITY, wdpeak = 0.0;
-  if (speed > 0.0) {
-    const ana_wave_params wp = {speed, rho, 0.5 * p.L, 0.98};
-    const int rc = ana_wave_init(&bar, &wp, delta_end, &wave, err, sizeof err);
-    if (rc != ANA_OK) {
-      fprintf(stderr, PROG ": --speed: %s\n", err);
-      return rc == ANA_EINVAL ? 2 : 1;
-    }
-    wpeak = ana_wave_peak(&wave, &wdpeak);
+/* The default end: past the farthest point of the curve, so that it ends separated; on
+ * a q > 1 snapback that is the turning point, beyond both peak and separation. */
+static double default_end(const ana_bar *bar)
+{
+  double end = fmax(bar->delta_peak, bar->delta_sep);
+  if (bar->sstar_turn > 0.0 && bar->sstar_turn < 1.0) {
+    double dt, Pt;
+    ana_bar_softening_point(bar, bar->sstar_turn, &dt, &Pt);
+    end = fmax(end, dt);
   }
-  if (json) {
-    cJSON *o = to_json(&bar);
-    if (o && speed > 0.0) {
-      cJSON_AddNumberToObject(o, "speed", speed);
-      cJSON_AddNumberToObject(o, "rho", rho);
-      cJSON_AddNumberToObject(o, "wave_Pmax", wpeak);
-      cJSON_AddNumberToObject(o, "wave_delta_peak", wdpeak);
-      cJSON_AddNumberToObject(o, "wave_transit", wave.Tg);
+  return 1.5 * end;
+}
+
+/* The bar's numbers (and the wave's peak at the grip speed) as JSON or text; 0, or 1 out
+ * of memory. */
+static int print_bar(const an_opts *o, const ana_bar *bar, const ana_wave *wave, double wpeak, double wdpeak)
+{
+  if (o->json) {
+    cJSON *j = to_json(bar);
+    if (j && o->speed > 0.0) {
+      cJSON_AddNumberToObject(j, "speed", o->speed);
+      cJSON_AddNumberToObject(j, "rho", o->rho);
+      cJSON_AddNumberToObject(j, "wave_Pmax", wpeak);
+      cJSON_AddNumberToObject(j, "wave_delta_peak", wdpeak);
+      cJSON_AddNumberToObject(j, "wave_transit", wave->Tg);
     }
-    char *txt = o ? cJSON_Print(o) : NULL;
-    cJSON_Delete(o);
+    char *txt = j ? cJSON_Print(j) : NULL;
+    cJSON_Delete(j);
     if (!txt) {
       fprintf(stderr, PROG ": out of memory building the JSON\n");
       return 1;
@@ -364,21 +361,51 @@ int ver_cmd_analytic(int argc, char **argv)
     printf("%s\n", txt);
     cJSON_free(txt);
   } else {
-    print_summary(&bar);
-    if (speed > 0.0)
+    print_summary(bar);
+    if (o->speed > 0.0)
       printf("  at speed   %g (rho %g, plane at L / 2, wave transit to the grip %.6g): peak %.6g at delta %.6g,\n"
              "             %+.3g %% of Pmax: the grip's load rises until the plane's unloading reaches it\n",
-             speed, rho, wave.Tg, wpeak, wdpeak, 100.0 * (wpeak / bar.Pmax - 1.0));
+             o->speed, o->rho, wave->Tg, wpeak, wdpeak, 100.0 * (wpeak / bar->Pmax - 1.0));
   }
-  if (curve) {
+  return 0;
+}
+
+int ver_cmd_analytic(int argc, char **argv)
+{
+  an_opts o;
+  const int pa = parse_args(argc, argv, &o);
+  if (pa >= 0)
+    return pa;
+  ana_bar bar;
+  char err[200];
+  if (ana_bar_init(&o.p, &bar, err, sizeof err) != ANA_OK) {
+    fprintf(stderr, PROG ": %s\n", err);
+    return 2;
+  }
+  const double delta_end = o.delta_end < 0.0 ? default_end(&bar) : o.delta_end;
+  /* the bar at the grip speed: the plane at L / 2, as the scene files' flaw */
+  ana_wave wave = {0};
+  double wpeak = -INFINITY, wdpeak = 0.0;
+  if (o.speed > 0.0) {
+    const ana_wave_params wp = {o.speed, o.rho, 0.5 * o.p.L, 0.98};
+    const int rc = ana_wave_init(&bar, &wp, delta_end, &wave, err, sizeof err);
+    if (rc != ANA_OK) {
+      fprintf(stderr, PROG ": --speed: %s\n", err);
+      return rc == ANA_EINVAL ? 2 : 1;
+    }
+    wpeak = ana_wave_peak(&wave, &wdpeak);
+  }
+  if (print_bar(&o, &bar, &wave, wpeak, wdpeak))
+    return 1;
+  if (o.curve) {
     int k = 0;
-    if (write_curve(&bar, speed > 0.0 ? &wave : NULL, curve, points, delta_end, &k)) {
+    if (write_curve(&bar, o.speed > 0.0 ? &wave : NULL, o.curve, o.points, delta_end, &k)) {
       ana_wave_free(&wave);
       return 1;
     }
-    if (!json)
-      printf("  curve      %d points to delta %.6g written to %s%s\n", k, delta_end, curve,
-             speed > 0.0 ? " (the wave solution)" : "");
+    if (!o.json)
+      printf("  curve      %d points to delta %.6g written to %s%s\n", k, delta_end, o.curve,
+             o.speed > 0.0 ? " (the wave solution)" : "");
   }
   ana_wave_free(&wave);
   return 0;

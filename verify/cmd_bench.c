@@ -72,8 +72,10 @@ static const bench_case cases[] = {
  * row the particle nearest the line, so that the two-field path is the one timed. */
 static void cut_band(mpm_sim *s)
 {
-  const mpm_scene *sc = &s->sc;
-  mpm_particles *p = s->p;
+  const mpm_scene *sc = mpm_sim_scene(s);
+  mpm_particle_view v;
+  mpm_sim_particles(s, &v);
+  const mpm_particle_view *p = &v;
   const double a = sc->alpha_deg * (3.14159265358979323846 / 180.0), d = sc->h / sqrt((double)sc->ppc);
   const int nrow = (int)lround(sc->H / d);
   for (int j = 0; j < nrow; j++) {
@@ -83,11 +85,8 @@ static void cut_band(mpm_sim *s)
       if (p->mat[k] != MPM_MAT_HEAD && fabs(p->y0[k] - y) < 0.25 * d &&
           (best == SIZE_MAX || fabs(p->x0[k] - xl) < fabs(p->x0[best] - xl)))
         best = k;
-    if (best == SIZE_MAX)
-      continue;
-    p->sep[best] = 1;
-    p->lam[best] = 1.0;
-    p->str2[best] = -1.0;
+    if (best != SIZE_MAX)
+      (void)mpm_sim_separate(s, best); /* best < p->n */
   }
 }
 
@@ -100,27 +99,6 @@ static int apply_sets(ver_scene *vs, const char *sets, char *err, size_t errlen)
     if (ver_scene_set(vs, tok, err, errlen))
       return 1;
   return 0;
-}
-
-/* Uniform uniaxial stress sigma along x: strains sigma/E and -nu sigma/E, the left end
- * at -delta, the right end fixed, mid-height fixed in y; velocity the loading field. */
-static void prestress(mpm_sim *s, double sigma)
-{
-  const mpm_scene *sc = &s->sc;
-  mpm_particles *p = s->p;
-  const double exx = sigma / sc->E, eyy = -sc->nu * sigma / sc->E;
-  for (size_t k = 0; k < p->n; k++) {
-    if (p->mat[k] == MPM_MAT_HEAD) { /* the head moves with the grip, stress-free */
-      p->x[k] = p->x0[k] - sc->L * exx;
-      continue;
-    }
-    p->x[k] = p->x0[k] - (sc->L - p->x0[k]) * exx;
-    p->y[k] = p->y0[k] + (p->y0[k] - 0.5 * sc->H) * eyy;
-    p->sxx[k] = sigma;
-  }
-  s->t = sc->L * exx / sc->speed;
-  s->step = (long)floor(s->t / sc->dt);
-  s->t = s->step * sc->dt;
 }
 
 static void usage(FILE *f)
@@ -261,14 +239,18 @@ static int bench_static_case(int c, int repeat, int json)
         mpm_sim_free(s);
         return 1;
       }
-      after += s->cut;
+      mpm_sim_info in;
+      mpm_sim_info_get(s, &in);
+      after += in.cut;
     }
     const double w = ver_now_wall() - w0;
     if (w < wall) {
       wall = w;
       cpu = ver_now_cpu() - c0;
       mpm_static_stats_get(q, &best);
-      np = s->p->n;
+      mpm_particle_view p;
+      mpm_sim_particles(s, &p);
+      np = p.n;
     }
     mpm_static_free(q);
     mpm_sim_free(s);
@@ -304,6 +286,46 @@ static int bench_static_case(int c, int repeat, int json)
   return 0;
 }
 
+/* One explicit case's row: its fastest run's time, rate, time split and memory. */
+static void print_case(const char *id, int threads, int repeat, const mpm_sim *s, long steps, double wall, double cpu,
+                       int json)
+{
+  mpm_sim_info in;
+  mpm_sim_info_get(s, &in);
+  mpm_particle_view p;
+  mpm_sim_particles(s, &p);
+  const double ups = (double)p.n * (double)steps / wall;
+  double split = 0.0;
+  for (int q = 0; q < MPM_T_N; q++)
+    split += in.time_split[q];
+  const size_t bpp = mpm_sim_bytes_per_particle(s);
+  if (json) {
+    cJSON *o = cJSON_CreateObject();
+    cJSON_AddStringToObject(o, "case", id);
+    cJSON_AddNumberToObject(o, "threads", threads);
+    cJSON_AddNumberToObject(o, "repeat", repeat);
+    cJSON_AddNumberToObject(o, "particles", (double)p.n);
+    cJSON_AddNumberToObject(o, "steps", (double)steps);
+    cJSON_AddNumberToObject(o, "wall_s", wall);
+    cJSON_AddNumberToObject(o, "cpu_s", cpu);
+    cJSON_AddNumberToObject(o, "updates_per_s", ups);
+    const char *names[MPM_T_N] = {"sort_s", "p2g_s", "grid_s", "g2p_s", "constitutive_s"};
+    for (int q = 0; q < MPM_T_N; q++)
+      cJSON_AddNumberToObject(o, names[q], in.time_split[q]);
+    cJSON_AddNumberToObject(o, "decohesion_updates", (double)(in.n_soften + in.n_separate));
+    cJSON_AddNumberToObject(o, "bytes_per_particle", (double)bpp);
+    char *txt = cJSON_PrintUnformatted(o);
+    printf("%s\n", txt);
+    free(txt);
+    cJSON_Delete(o);
+  } else {
+    printf("%-28s %3d %8zu %6ld %7.2f %7.2f %9.1f  %5.1f %5.1f %5.1f %5.1f %5.1f  %4zu\n", id, threads,
+           p.n, steps, wall, cpu, ups / 1e6, 100 * in.time_split[0] / split,
+           100 * in.time_split[1] / split, 100 * in.time_split[2] / split, 100 * in.time_split[3] / split,
+           100 * in.time_split[4] / split, bpp);
+  }
+}
+
 int ver_cmd_bench(int argc, char **argv)
 {
   int threads = 0, json = 0, repeat = 3;
@@ -327,13 +349,14 @@ int ver_cmd_bench(int argc, char **argv)
       const long steps = (long)(cases[c].steps * scale);
       double wall = INFINITY, cpu = 0.0;
       for (int r = 0; r < repeat; r++) {
-        mpm_sim *t;
-        if (mpm_sim_alloc(&vs.sc, tlist[ti], &t, err, sizeof err) != MPM_OK) {
-          fprintf(stderr, "delam bench: %s\n", err);
+        mpm_sim *t = NULL;
+        if (mpm_sim_alloc(&vs.sc, tlist[ti], &t, err, sizeof err) != MPM_OK ||
+            mpm_sim_prestress(t, 0.99 * bar.r0) != MPM_OK) {
+          fprintf(stderr, "delam bench: %s\n", t ? "the bar's peak stress is not finite" : err);
+          mpm_sim_free(t);
           mpm_sim_free(s);
           return 1;
         }
-        prestress(t, 0.99 * bar.r0);
         if (cases[c].cut)
           cut_band(t);
         const double w0 = ver_now_wall(), c0 = ver_now_cpu();
@@ -354,38 +377,9 @@ int ver_cmd_bench(int argc, char **argv)
           mpm_sim_free(t);
         }
       }
-      const double ups = (double)s->p->n * (double)steps / wall;
-      double split = 0.0;
-      for (int q = 0; q < 5; q++)
-        split += s->time_split[q];
       char id[96];
       snprintf(id, sizeof id, "%s-h%g-ppc%d-%s", vs.name, cases[c].h, cases[c].ppc, cases[c].method);
-      const size_t bpp = mpm_sim_bytes_per_particle(s);
-      if (json) {
-        cJSON *o = cJSON_CreateObject();
-        cJSON_AddStringToObject(o, "case", id);
-        cJSON_AddNumberToObject(o, "threads", tlist[ti]);
-        cJSON_AddNumberToObject(o, "repeat", repeat);
-        cJSON_AddNumberToObject(o, "particles", (double)s->p->n);
-        cJSON_AddNumberToObject(o, "steps", (double)steps);
-        cJSON_AddNumberToObject(o, "wall_s", wall);
-        cJSON_AddNumberToObject(o, "cpu_s", cpu);
-        cJSON_AddNumberToObject(o, "updates_per_s", ups);
-        const char *names[5] = {"sort_s", "p2g_s", "grid_s", "g2p_s", "constitutive_s"};
-        for (int q = 0; q < 5; q++)
-          cJSON_AddNumberToObject(o, names[q], s->time_split[q]);
-        cJSON_AddNumberToObject(o, "decohesion_updates", (double)(s->n_soften + s->n_separate));
-        cJSON_AddNumberToObject(o, "bytes_per_particle", (double)bpp);
-        char *txt = cJSON_PrintUnformatted(o);
-        printf("%s\n", txt);
-        free(txt);
-        cJSON_Delete(o);
-      } else {
-        printf("%-28s %3d %8zu %6ld %7.2f %7.2f %9.1f  %5.1f %5.1f %5.1f %5.1f %5.1f  %4zu\n", id, tlist[ti],
-               s->p->n, steps, wall, cpu, ups / 1e6, 100 * s->time_split[0] / split,
-               100 * s->time_split[1] / split, 100 * s->time_split[2] / split, 100 * s->time_split[3] / split,
-               100 * s->time_split[4] / split, bpp);
-      }
+      print_case(id, tlist[ti], repeat, s, steps, wall, cpu, json);
       fflush(stdout);
       mpm_sim_free(s);
     }

@@ -44,7 +44,9 @@ typedef ver_run_row row;
 /* sum m vx sin(k X) over the bar's particles: the velocity of the axial mode k */
 static double modal_velocity(const mpm_sim *s, double k)
 {
-  const mpm_particles *p = s->p;
+  mpm_particle_view v;
+  mpm_sim_particles(s, &v);
+  const mpm_particle_view *p = &v;
   double a = 0.0;
   for (size_t i = 0; i < p->n; i++)
     if (p->mat[i] != MPM_MAT_HEAD)
@@ -178,13 +180,15 @@ static int run_setup(run_state *r, char *err, size_t errlen)
 static void take_step(run_state *r, ver_summary *u, double delta)
 {
   mpm_sim *s = r->s;
-  r->acc_g += s->P_grip;
-  r->acc_f += s->P_fixed;
+  mpm_sim_info in;
+  mpm_sim_info_get(s, &in);
+  r->acc_g += in.P_grip;
+  r->acc_f += in.P_fixed;
   r->acc_n++;
-  if (!(s->step % r->every == 0 || s->step == r->nmax))
+  if (!(in.step % r->every == 0 || in.step == r->nmax))
     return;
   row *w = &r->rows[r->nrow++];
-  w->t = s->t;
+  w->t = in.t;
   w->delta = delta;
   w->Pg = r->acc_g / r->acc_n;
   w->Pf = r->acc_f / r->acc_n;
@@ -207,9 +211,12 @@ static void take_step(run_state *r, ver_summary *u, double delta)
     r->peak = w->Pg;
     r->dpeak = delta;
   }
-  if (s->n_separate > 0)
-    ver_sep_cut(&r->sep, s->p->y0, s->p->sep, s->p->mat, MPM_MAT_HEAD, s->p->n, delta);
-  if (s->cut && s->sc.path == MPM_PATH_IFACE)
+  if (in.n_separate > 0) {
+    mpm_particle_view p;
+    mpm_sim_particles(s, &p);
+    ver_sep_cut(&r->sep, p.y0, p.sep, p.mat, MPM_MAT_HEAD, p.n, delta);
+  }
+  if (in.cut && mpm_sim_scene(s)->path == MPM_PATH_IFACE)
     ver_sep_through(&r->sep, delta);
   if (r->q) { /* equilibrium rows: separated at the first row past the peak below sep_load of it */
     if (r->sep.delta_load < 0 && r->peak > 0.0 && w->Pg < r->peak && w->Pg <= r->vs->sep_load_frac * r->peak) {
@@ -270,9 +277,13 @@ static double energy_residual(const row *rows, long n, double E0, double *raw)
 static void finish(const run_state *r, ver_summary *u, double w0, double c0)
 {
   const mpm_sim *s = r->s;
+  mpm_sim_info in;
+  mpm_sim_info_get(s, &in);
+  mpm_particle_view p;
+  mpm_sim_particles(s, &p);
   u->wall_s = ver_now_wall() - w0;
   u->cpu_s = ver_now_cpu() - c0;
-  u->steps = s->step;
+  u->steps = in.step;
   u->threads_req = r->o->threads;
   mpm_threads_info ti;
   mpm_sim_threads(s, &ti);
@@ -280,15 +291,15 @@ static void finish(const run_state *r, ver_summary *u, double w0, double c0)
   u->steps_multi = ti.steps_multi;
   u->probes = ti.nprobe;
   u->probes_busy = ti.nbusy;
-  u->particles = s->p->n;
-  u->updates_per_s = u->wall_s > 0 ? (double)s->p->n * (double)s->step / u->wall_s : 0;
+  u->particles = p.n;
+  u->updates_per_s = u->wall_s > 0 ? (double)p.n * (double)in.step / u->wall_s : 0;
   u->peak_P = r->peak;
   u->delta_peak = r->dpeak;
   u->k_elastic = fit_elastic(r->rows, r->nrow, r->peak, r->dpeak);
   u->delta_end = mpm_sim_delta(s);
-  u->n_soften = s->n_soften;
-  u->n_separate = s->n_separate;
-  u->n_bracketed = s->n_bracketed;
+  u->n_soften = in.n_soften;
+  u->n_separate = in.n_separate;
+  u->n_bracketed = in.n_bracketed;
   if (r->q) {
     mpm_static_stats qs;
     mpm_static_stats_get(r->q, &qs);
@@ -333,7 +344,7 @@ static void finish(const run_state *r, ver_summary *u, double w0, double c0)
   u->L_contact_final = e.L_contact;
   u->L_debris_final = e.L_debris;
   u->L_damp_final = e.L_damp;
-  u->n_debris = s->n_debris;
+  u->n_debris = in.n_debris;
   const double E0 = r->e0.KE + r->e0.SE;
   u->energy_residual = energy_residual(r->rows, r->nrow, E0, &u->energy_unbooked);
   u->energy_start = E0;
@@ -346,22 +357,32 @@ static void finish(const run_state *r, ver_summary *u, double w0, double c0)
   u->period_error = u->period / u->period_exact - 1.0;
 }
 
+/* Steps (static: increments) the sim has taken. */
+static long steps_taken(const mpm_sim *s)
+{
+  mpm_sim_info in;
+  mpm_sim_info_get(s, &in);
+  return in.step;
+}
+
 /* The time loop: steps until the end, the stop rule, a failure or a signal. */
 static int run_loop(run_state *r, ver_summary *u, double w0, char *err, size_t errlen)
 {
   mpm_sim *s = r->s;
+  const mpm_scene *sc = mpm_sim_scene(s);
   const ver_run_opts *o = r->o;
   const int show = o->progress && isatty(2);
   double next_show = w0 + 0.5;
   char kerr[512];
   int rc = 0;
-  while (s->step < r->nmax && !rc) {
+  while (steps_taken(s) < r->nmax && !rc) {
     if (o->stop && *o->stop) {
-      snprintf(err, errlen, "%s: stopped by a signal at step %ld (delta = %g)", r->id, s->step, mpm_sim_delta(s));
+      snprintf(err, errlen, "%s: stopped by a signal at step %ld (delta = %g)", r->id, steps_taken(s),
+               mpm_sim_delta(s));
       rc = 130;
       break;
     }
-    if (o->max_steps > 0 && s->step >= o->max_steps)
+    if (o->max_steps > 0 && steps_taken(s) >= o->max_steps)
       break;
     const mpm_status st = r->q ? mpm_static_step(r->q, kerr, sizeof kerr) : mpm_sim_step(s, kerr, sizeof kerr);
     if (st != MPM_OK) {
@@ -377,12 +398,14 @@ static int run_loop(run_state *r, ver_summary *u, double w0, char *err, size_t e
     if (!rc && u->delta_sep >= 0 && r->vs->stop_margin > 0 && delta >= u->delta_sep + r->vs->stop_margin &&
         delta >= r->last_snap)
       break;
-    if ((r->q || s->sc.control == MPM_CONTROL_DISSIPATION) && delta >= s->sc.end_delta - 0.5 * r->vdt)
+    if ((r->q || sc->control == MPM_CONTROL_DISSIPATION) && delta >= sc->end_delta - 0.5 * r->vdt)
       break;
-    if (show && (r->q || (s->step & 255) == 0) && ver_now_wall() > next_show) {
+    mpm_sim_info in;
+    mpm_sim_info_get(s, &in);
+    if (show && (r->q || (in.step & 255) == 0) && ver_now_wall() > next_show) {
       next_show = ver_now_wall() + 0.5;
       fprintf(stderr, "\r%s: delta %.4f / %.4f  step %ld  P %.3f  [%.1f s]   ", r->id, delta, r->vs->sc.end_delta,
-              s->step, s->P_grip, ver_now_wall() - w0);
+              in.step, in.P_grip, ver_now_wall() - w0);
     }
   }
   if (show)

@@ -77,8 +77,10 @@ static int write_line(const mpm_sim *s, const char *dir, const char *stem, char 
     free(xy);
     return -1;
   }
+  mpm_sim_info in;
+  mpm_sim_info_get(s, &in);
   fprintf(f, "# vtk DataFile Version 3.0\ndelam line.vtk schema %d %s t=%g\nASCII\nDATASET POLYDATA\nPOINTS %d double\n",
-          VER_SCHEMA_LINE, stem, s->t, 2 * m);
+          VER_SCHEMA_LINE, stem, in.t, 2 * m);
   for (int i = 0; i < m; i++)
     fprintf(f, "%.9g %.9g 0\n%.9g %.9g 0\n", xy[6 * i], xy[6 * i + 1], xy[6 * i + 2], xy[6 * i + 3]);
   fprintf(f, "LINES %d %d\n", m, 3 * m);
@@ -96,7 +98,11 @@ static int write_line(const mpm_sim *s, const char *dir, const char *stem, char 
 
 int ver_run_write_snapshot(const mpm_sim *s, const char *dir, const char *stem, char *bad)
 {
-  const mpm_particles *p = s->p;
+  mpm_particle_view v;
+  mpm_sim_particles(s, &v);
+  const mpm_particle_view *p = &v;
+  mpm_sim_info in;
+  mpm_sim_info_get(s, &in);
   char tmp[1100], name[128];
   snprintf(name, sizeof name, "%s.csv", stem);
   FILE *f = ver_run_open_tmp(dir, name, tmp, sizeof tmp, bad);
@@ -115,9 +121,9 @@ int ver_run_write_snapshot(const mpm_sim *s, const char *dir, const char *stem, 
   snprintf(name, sizeof name, "%s.vtk", stem);
   if (!(f = ver_run_open_tmp(dir, name, tmp, sizeof tmp, bad)))
     return -1;
-  const size_t nb = p->n - s->nhead; /* the bar's particles; the head is the machine */
+  const size_t nb = p->n - p->nhead; /* the bar's particles; the head is the machine */
   fprintf(f, "# vtk DataFile Version 3.0\ndelam particles.vtk schema %d %s t=%g\nASCII\nDATASET POLYDATA\nPOINTS %zu double\n",
-          VER_SCHEMA_PARTICLES, stem, s->t, nb);
+          VER_SCHEMA_PARTICLES, stem, in.t, nb);
   for (size_t k = 0; k < p->n; k++)
     if (p->mat[k] != MPM_MAT_HEAD)
       fprintf(f, "%.9g %.9g 0\n", p->x[k], p->y[k]);

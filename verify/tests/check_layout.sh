@@ -1,0 +1,71 @@
+#!/usr/bin/env bash
+# check_layout.sh SRC - the bounds of the code's layout:
+#   public-header    kernel/mpm.h, the installed contract, is at most 250 lines;
+#   private-headers  verify/, analytic/, examples/ and fuzz/ include no kernel header but mpm.h
+#                    (struct mpm_sim is theirs to read only through its calls);
+#   include-circle   no header of kernel/, analytic/ or verify/ includes itself through others;
+#   function-length  no function of kernel/, analytic/ or verify/ is over 100 lines (from
+#                    the line naming it to its closing brace at column 0);
+#   verify-files     no file of verify/ is over 600 lines.
+# Prints TAP; exits 1 if a check failed.
+set -u
+src=${1:?usage: check_layout.sh SRC}
+cd "$src" || exit 1
+n=0 fail=0
+result() { # result ID WHY (empty WHY: pass)
+  n=$((n + 1))
+  if [ -z "$2" ]; then echo "ok $n - $1"; else fail=$((fail + 1)); echo "not ok $n - $1: $2"; fi
+}
+
+lines=$(wc -l <kernel/mpm.h)
+result public-header "$([ "$lines" -le 250 ] || echo "kernel/mpm.h has $lines lines")"
+
+private=$(ls kernel/*.h | xargs -n1 basename | grep -vx 'mpm.h' | sed 's/\./\\./g' | paste -sd'|')
+bad=$(grep -lE "#include [\"<](delam/)?($private)[\">]" verify/*.[ch] verify/tests/*.c analytic/*.[ch] \
+  analytic/tests/*.c examples/*.c fuzz/*.c 2>/dev/null | paste -sd' ')
+result private-headers "$([ -z "$bad" ] || echo "a private kernel header included by $bad")"
+
+python3 - <<'PY' >"${TMPDIR:-/tmp}/delam-layout.$$" 2>&1
+import glob, os, re
+heads = {os.path.basename(f): re.findall(r'#include "([^"]+)"', open(f).read())
+         for d in ("kernel", "analytic", "verify") for f in glob.glob(d + "/*.h")}
+state, circles = {}, []
+def walk(h, path):
+    state[h] = 1
+    for i in heads.get(h, []):
+        if i in heads and state.get(i) == 1:
+            circles.append(" -> ".join(path[path.index(i):] + [i]))
+        elif i in heads and not state.get(i):
+            walk(i, path + [i])
+    state[h] = 2
+for h in sorted(heads):
+    if not state.get(h):
+        walk(h, [h])
+print("CIRCLES", "; ".join(circles))
+long = []
+for f in sorted(glob.glob("kernel/*.[ch]") + glob.glob("analytic/*.[ch]") + glob.glob("verify/*.[ch]")):
+    L, start = open(f).read().split("\n"), None
+    for i, l in enumerate(L):
+        if start is None and l.startswith("{") and i > 0:
+            j = i - 1
+            while j >= 0 and not re.match(r"^[A-Za-z_].*\(", L[j]):
+                j -= 1
+            start = j
+        elif start is not None and l.startswith("}"):
+            if i - start + 1 > 100:
+                names = [w for w in re.findall(r"(\w+)\s*\(", L[start]) if not w.startswith("__")]
+                long.append("%s %s %d" % (f, names[0] if names else "?", i - start + 1))
+            start = None
+print("LONG", ", ".join(long))
+PY
+out=$(cat "${TMPDIR:-/tmp}/delam-layout.$$"); rm -f "${TMPDIR:-/tmp}/delam-layout.$$"
+circ=$(sed -n 's/^CIRCLES //p' <<<"$out")
+result include-circle "$([ -z "$circ" ] && grep -q '^CIRCLES' <<<"$out" || echo "${circ:-$out}")"
+long=$(sed -n 's/^LONG //p' <<<"$out")
+result function-length "$([ -z "$long" ] && grep -q '^LONG' <<<"$out" || echo "over 100 lines: ${long:-$out}")"
+
+big=$(wc -l verify/*.[ch] | awk '$2 != "total" && $1 > 600 {printf "%s %s ", $2, $1}')
+result verify-files "$([ -z "$big" ] || echo "over 600 lines: $big")"
+
+echo "1..$n"
+[ "$fail" -eq 0 ]
