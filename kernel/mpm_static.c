@@ -10,7 +10,8 @@
  *    equal ones meet it exactly;
  *  - from then on the dissipation leads: C = sum U0 lambda V / Le, the dissipation of
  *    eq. 10 without its cap at lambda = 1 (a separated particle's lambda grows on with its
- *    opening, eq. 58, so C has no flat end where delta would be undetermined).  Each
+ *    opening, eq. 58, so C has no flat end where delta would be undetermined; the
+ *    cohesive interface's segments count min(lambda, 1), mpm_static_iface.c).  Each
  *    increment adds tau to it, with delta an unknown (the constraint C(u, delta) = C_n +
  *    tau borders the system; two solves with one factorization).  C never decreases, so
  *    the control passes the peak and any snapback, where delta moves back as a test

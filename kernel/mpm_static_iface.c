@@ -37,7 +37,7 @@
 #include "mpm_static.h"
 
 #define MPM_QS_TIE 1e6    /* the tie's stiffness, k0 L / E per unit area                  */
-#define MPM_QS_SEG 1.0    /* a segment's length along the line, in cells                  */
+#define MPM_QS_SEG 3.0    /* a segment's length along the line, in cells (docs/static.md)  */
 
 void mpm_static_iface_free(mpm_static *q)
 {
@@ -146,8 +146,11 @@ static int segments(mpm_static *q, const mpm_iface *f, const double *An)
     smin = lo;
     smax = hi;
   }
-  const double len = MPM_QS_SEG * s->sc.h;
-  q->nseg = n ? (int)floor((smax - smin) / len) + 1 : 0;
+  /* equal segments of about MPM_QS_SEG cells: a short remainder at the line's end would
+   * carry a few facets' share and initiate first */
+  const int nfit = (int)lround((smax - smin) / (MPM_QS_SEG * s->sc.h));
+  q->nseg = n ? (nfit > 1 ? nfit : 1) : 0;
+  const double len = q->nseg > 0 && smax > smin ? (smax - smin) / q->nseg : 1.0;
   q->segstart = calloc((size_t)q->nseg + 1, sizeof *q->segstart);
   q->pA = calloc((size_t)(q->nseg ? q->nseg : 1), sizeof(double));
   q->pst = calloc((size_t)(q->nseg ? q->nseg : 1), sizeof *q->pst);
@@ -353,7 +356,11 @@ static void segment_eval(mpm_static *q, int g, int tangent, double *Ax, double J
             q->kfd[ea] -= kab;
         }
     }
-  for (int b = a0; b < a1; b++) { /* the control's gradient: d C / d W_J = U0 A_J gl */
+  /* the control's gradient, d C / d W_J = U0 A_J gl; none once the segment has spent U0
+   * (C counts min(lambda, 1): after separation lambda grows with |d ud| whichever way the
+   * jump goes, closing included, so an uncapped C could grow along spurious directions) */
+  const int capped = o->sep || o->lam >= 1.0;
+  for (int b = a0; b < a1 && !capped; b++) {
     const int ib = q->sorder[b];
     for (int cb = 0; cb < 4; cb++) {
       const double gd = m->U0 * q->sA[ib] * (cb < 2 ? -1.0 : 1.0) * gl[cb % 2];
@@ -381,7 +388,7 @@ void mpm_static_iface_eval(mpm_static *q, int tangent, double *Ax, double *D, do
   for (int g = 0; g < q->nseg; g++) {
     segment_eval(q, g, tangent, Ax, J);
     Dl += m->U0 * fmin(q->ptr[g].lam, 1.0) * q->pA[g];
-    Cl += m->U0 * q->ptr[g].lam * q->pA[g];
+    Cl += m->U0 * fmin(q->ptr[g].lam, 1.0) * q->pA[g];
   }
   *D = Dl;
   *C = Cl;

@@ -17,4 +17,6 @@ if (strlen(iface_fig8) > 0) { ids = ids.' '.iface_fig8; labs = labs.' "h = 2, in
 meth = pic_fig8_method; cut = strstrt(meth, ", h ="); if (cut > 1) { meth = meth[1:cut-1] }
 set title sprintf("Fig. 8(c): fig8.ini, Mode II, {/Symbol a} = 60, 1 ppc (analytic g = %.3g: snapback)\nscene file: %s", g_fig8, meth)
 sc = 'fig8'; xmax = 2.1
+# the quasi-static solver's run, traced through the snapback (report_qs.c)
+qs_id = qs_fig8; qs_lab = sprintf('static, h = %g, %d ppc, interface, path %.2g%s', qs_fig8_h, qs_fig8_ppc, qs_fig8_path, qs_fig8_note)
 load gpdir.'/loadcurves.gp'

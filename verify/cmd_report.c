@@ -201,6 +201,7 @@ int ver_cmd_report(int argc, char **argv)
       snprintf(R.verify_dir, sizeof R.verify_dir, "%s", r->from);
   }
   ver_report_build_cases(&R);
+  ver_report_static_cases(&R);
   const int missing = ver_pool_caught() ? 0 : ver_report_run_cases(r);
   if (ver_pool_caught())
     return stopped(&R);

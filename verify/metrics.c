@@ -404,6 +404,39 @@ double ver_curve_path(const ana_bar *b, const double *delta, const double *P, si
   return m ? sqrt(s / (double)m) : NAN;
 }
 
+typedef struct {
+  const double *d, *P;
+  size_t n;
+} ref_rows;
+
+/* The reference rows' load at delta: linear between rows, from (0, 0) to the first. */
+static double rows_load(const void *ctx, double delta)
+{
+  const ref_rows *q = ctx;
+  double d0 = 0.0, P0 = 0.0;
+  for (size_t i = 0; i < q->n; i++) {
+    if (delta <= q->d[i]) {
+      const double w = q->d[i] > d0 ? (delta - d0) / (q->d[i] - d0) : 1.0;
+      return P0 + w * (q->P[i] - P0);
+    }
+    d0 = q->d[i];
+    P0 = q->P[i];
+  }
+  return P0;
+}
+
+double ver_curve_err_curve(const double *rd, const double *rP, size_t rn, const double *delta, const double *P,
+                           size_t n, double delta_end, double scale)
+{
+  if (rn == 0)
+    return NAN;
+  size_t m = 1;
+  while (m < rn && rd[m] >= rd[m - 1])
+    m++;
+  const ref_rows q = {rd, rP, m};
+  return ver_curve_l2(delta, P, n, fmin(delta_end, rd[m - 1]), scale, rows_load, &q, NULL, 0);
+}
+
 static double wave_load(const void *ctx, double delta)
 {
   return ana_wave_load_at(ctx, delta);

@@ -142,6 +142,16 @@ double ver_curve_err_bar(const ana_bar *b, const double *delta, const double *P,
  * its peak, less the analytic branch's delta there, over delta_peak (NaN if it never
  * does).  NaN without rows. */
 double ver_curve_path(const ana_bar *b, const double *delta, const double *P, size_t n, double *d5);
+/* The distance of a run's curve from another run's (the rate's error of an explicit run:
+ * its distance from the static run at the same h and ppc): ver_curve_l2 of (delta, P)
+ * against the reference rows (rd, rP) up to the first where rd moves back (a snapback),
+ * linearly interpolated and from (0, 0) to their first row, to the smaller of delta_end
+ * and the last of those rows' delta.  NaN without reference rows or rows to compare. */
+double ver_curve_err_curve(const double *rd, const double *rP, size_t rn, const double *delta, const double *P,
+                           size_t n, double delta_end, double scale);
+/* ver_curve_path's bound in verify's check (policy.c), at alpha 90 and inclined. */
+#define VER_PATH_TOL_90 0.005
+#define VER_PATH_TOL_INCLINED 0.01
 
 /* The same against the bar at the run's own grip speed (ana_wave: the 1-D wave solution
  * with the plane as a cohesive line xg from the grip; docs/verification.md "The exact

@@ -332,7 +332,7 @@ static void check_band(ver_case *c, const case_class *q)
     /* the static solver's curve is a sequence of equilibrium states: judged as a path in
      * (delta / delta_peak, P / Pmax), which a snapback's reversal does not break */
     k = add_check(c, "curve_path", c->curve_path, 0.0, 0);
-    k->tol = a90 ? 0.005 : 0.01;
+    k->tol = a90 ? VER_PATH_TOL_90 : VER_PATH_TOL_INCLINED;
     snprintf(k->note, sizeof k->note, "RMS distance of the curve from the analytic path in (delta / delta_peak, "
              "P / Pmax), to the load's fall below 1 %% of Pmax");
     k = add_check(c, "delta_5", c->delta5, 0.0, 0);

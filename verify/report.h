@@ -12,6 +12,7 @@
 #define REP_NSET 13 /* at least VER_PAPER_NSETS (checked in report_run.c) */
 
 #include <stddef.h>
+#include <stdio.h>
 
 #include "ana.h"
 #include "report_doc.h"
@@ -31,6 +32,9 @@ enum {
   REP_IFACE = 128,  /* an inclined paper scene with decohesion.path = interface (docs/methods.md) */
   REP_BAND = 256,   /* an inclined paper scene whose file runs the interface, with the band method */
   REP_WAVE = 512,   /* iface90.ini: Fig. 6's bar on the interface, against the exact solution at the grip speed */
+  REP_STATIC = 1024, /* the sweep scenes with the quasi-static solver (report_static.c)          */
+  REP_QS = 4096,    /* a snapback scene on the quasi-static solver (report_qs.c)                  */
+  REP_QS3 = 8192,   /* one of Fig. 3's nine bars on the quasi-static solver (report_qs.c; tag 3 i + j) */
 };
 
 /* Outcome of a time-step sweep point. */
@@ -89,6 +93,9 @@ typedef struct {
   double drop_width;    /* delta interval in which P fell from 0.9 to 0.1 of its peak; NaN    */
   double max_absP;      /* largest |P| in load.csv (blow-up test)                             */
   int rows;             /* rows of load.csv read                                              */
+  /* the quasi-static solver (solver.type = static: rows are equilibrium states) */
+  int static_run;       /* 1 if summary.json says the run was static                          */
+  double curve_path;    /* static: RMS distance from the analytic path (ver_curve_path); NaN  */
 } rep_case;
 
 typedef struct {
@@ -136,6 +143,8 @@ typedef struct {
   int verify_rc;           /* exit status of the report's own delam verify; -1 none */
   int sweep_from;          /* sweep points taken from the verify folder         */
   rep_fit fits[REP_NSWEEP];
+  rep_fit sfits[REP_NSWEEP]; /* the static sweep (REP_STATIC, 4 ppc): p_curve of curve_path */
+  char sverdict[REP_NSWEEP][48]; /* its verdict per scene (report_static.c)           */
   rep_fig fig[REP_MAX_FIGS];
   int nfig;
   double t_runs, t0;
@@ -185,6 +194,19 @@ void ver_report_verdicts(report *R);
 /* Adds the table of the paper's numbers beside the measured ones. */
 void ver_report_paper_table(report *R);
 
+/* report_static.c: the sweep scenes with the quasi-static solver at REP_STATIC_PPC,
+ * h = 8, 4, 2 (and 1 for fig6), beside the explicit sweep */
+#define REP_STATIC_PPC 4
+void ver_report_static_cases(report *R);
+/* OUT/data/sweep-<scene>-static.dat (h, curve_path, RMS load error, |D error|, CPU s,
+ * complete, particles, and the explicit run's distance from the static one at the same h
+ * and ppc); fits R->sfits and verdicts R->sverdict; their vars in vars.gp. */
+void ver_report_write_static(report *R, FILE *vars);
+/* The template placeholders static:<scene>:p, :verdict, :n and rate:<scene>:h<h>. */
+void ver_report_static_vars(report *R);
+/* Their table in the document (the convergence figure's section). */
+void ver_report_static_table(report *R);
+
 /* report_text.c */
 /* The figures, in the report's order (sets R->fig). */
 void ver_report_plan_figs(report *R);
@@ -214,6 +236,14 @@ int ver_report_run_cases(rep_ctx *r);
  * progress line says so instead of "failed". */
 void ver_report_spawn_all(char ***argvs, const char *cwd, char **logs, char **names, int n, int jobs,
                           int *status, const char *what, const int *meant_to_fail);
+
+/* report_qs.c: the quasi-static solver's runs, the snapback scenes (REP_QS) and Fig. 3's
+ * nine bars (REP_QS3, q = rep_fig3_q[i], g = rep_fig3_g[j]). */
+void ver_report_qs_cases(rep_ctx *r);
+/* Their vars (qs_<scene>, f3k_*) and OUT/data/fig3-kernel-q<q>-g<g>.csv. */
+void ver_report_qs_write(const rep_ctx *r, FILE *vars);
+/* Their placeholders (qs_<scene>:para, fig3k:*). */
+void ver_report_qs_vars(report *R);
 
 /* report_data.c */
 /* Reads summary.json of c->dir into *c; 0 if read. */

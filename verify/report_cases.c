@@ -107,7 +107,8 @@ static int scan_from(report *R)
     ver_summary_doc sd;
     if (ver_summary_read(tmp.dir, &sd) != 0)
       continue;
-    int ok = sd.scene[0] && isfinite(sd.h) && sd.ppc > 0 && isfinite(sd.dt) && same_method(r, &sd);
+    /* the quasi-static solver's runs are no points of the explicit sweep */
+    int ok = !sd.u.static_run && sd.scene[0] && isfinite(sd.h) && sd.ppc > 0 && isfinite(sd.dt) && same_method(r, &sd);
     /* the paper's time step only: dt / h as in the scene file */
     if (ok) {
       const double crit = ver_report_dt_crit(r, sd.scene, sd.h);
@@ -293,6 +294,8 @@ void ver_report_build_cases(report *R)
       ver_report_add_sets(r, sc, 4, 1, 0, 1.0, musl, 1 + nb, REP_SCHEME, 1);
     }
   }
+  /* the quasi-static solver: the snapback scenes and Fig. 3's bars (report_qs.c) */
+  ver_report_qs_cases(r);
 }
 
 const rep_case *ver_report_first(const rep_ctx *r, int role, const char *scene)

@@ -123,9 +123,11 @@ static void fig_table(report *R, const char *name)
 {
   if (!strcmp(name, "fig6b"))
     table_sweep(R, "fig6");
-  else if (!strcmp(name, "conv"))
+  else if (!strcmp(name, "conv")) {
     for (int s = 0; s < REP_NSWEEP; s++)
       table_sweep(R, rep_sweep_scene[s]);
+    ver_report_static_table(R);
+  }
   else if (!strcmp(name, "stab"))
     table_stab(R);
   else if (!strcmp(name, "rate"))

@@ -47,6 +47,7 @@ int ver_report_read_summary(rep_case *c)
   snprintf(c->path, sizeof c->path, "%s", d.path);
   snprintf(c->reversed_shear, sizeof c->reversed_shear, "%s", d.reversed_shear);
   c->path_reach = d.path_reach;
+  c->static_run = u->static_run;
   snprintf(c->le, sizeof c->le, "%s", d.le);
   snprintf(c->error, sizeof c->error, "%.255s", d.error);
   return 0;
@@ -64,15 +65,19 @@ int ver_report_load(const rep_case *c, double **delta, double **P)
   return n > 0 ? (int)n : 0;
 }
 
-/* The analytic bar of a scene file (overrides do not change it), with the density and
- * the flaw's x (where the plane of the exact solution at the grip speed lies). */
-static int scene_bar(const rep_ctx *r, const char *scene, ana_bar *bar, double *rho, double *imp_x)
+/* The analytic bar of case c: its scene file with its overrides (Fig. 3's bars set q and
+ * U0; the method's keys leave the bar as it is), with the density and the flaw's x (where
+ * the plane of the exact solution at the grip speed lies). */
+static int scene_bar(const rep_ctx *r, const rep_case *c, ana_bar *bar, double *rho, double *imp_x)
 {
   char path[REP_PATH + 64], err[256];
   ver_scene vs;
-  snprintf(path, sizeof path, "%s/%s.ini", r->scenes, scene);
+  snprintf(path, sizeof path, "%s/%s.ini", r->scenes, c->scene);
   if (ver_scene_load(path, &vs, err, sizeof err) != 0)
     return -1;
+  for (int j = 0; j < c->nset; j++)
+    if (ver_scene_set(&vs, c->set[j], err, sizeof err) != 0)
+      return -1;
   *rho = vs.sc.rho;
   *imp_x = vs.sc.imp_x;
   return ver_scene_bar(&vs.sc, bar, err, sizeof err) == 0 ? 0 : -1;
@@ -87,8 +92,8 @@ ana_wave_params ver_report_wave_params(const rep_case *c)
 void ver_report_measure(const rep_ctx *r, rep_case *c)
 {
   c->rho = c->imp_x = NAN;
-  c->bar_ok = scene_bar(r, c->scene, &c->bar, &c->rho, &c->imp_x) == 0;
-  c->curve_wave = c->wave_peak = NAN;
+  c->bar_ok = scene_bar(r, c, &c->bar, &c->rho, &c->imp_x) == 0;
+  c->curve_wave = c->wave_peak = c->curve_path = NAN;
   if (!c->have || !c->bar_ok)
     return;
   const ana_bar *b = &c->bar;
@@ -103,7 +108,12 @@ void ver_report_measure(const rep_ctx *r, rep_case *c)
     mabs = isfinite(P[i]) ? fmax(mabs, fabs(P[i])) : INFINITY;
   c->max_absP = mabs;
   if (n > 0) {
-    c->curve_err = ver_curve_err_bar(b, d, P, (size_t)n, c->cmp_end, &c->max_dev, 0);
+    /* a static run's rows are states, compared at their own delta (ver_curve_l2) */
+    c->curve_err = ver_curve_err_bar(b, d, P, (size_t)n, c->cmp_end, &c->max_dev, c->static_run);
+    if (c->static_run)
+      c->curve_path = ver_curve_path(b, d, P, (size_t)n, NULL);
+    if (c->static_run && b->snapback) /* P(delta) has two values: curve_path judges the path */
+      c->curve_err = c->max_dev = NAN;
     const ana_wave_params wp = ver_report_wave_params(c);
     c->curve_wave = ver_curve_err_wave(b, wp.speed, wp.rho, wp.xg, wp.thr, d, P, (size_t)n, c->cmp_end, NULL,
                                        &c->wave_peak);

@@ -380,7 +380,9 @@ void ver_report_write_data(report *R)
             scenes[s], c->bar.p.alpha_deg);
   }
   write_fig3(r, vars);
+  ver_report_qs_write(r, vars);
   write_sweeps(r, R->fits, vars);
+  ver_report_write_static(R, vars);
   write_stab(r, vars);
   write_rate(r, vars);
   write_vars_case(vars, "pic_fig6", ver_report_first(r, REP_PIC, "fig6"));

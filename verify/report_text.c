@@ -298,7 +298,7 @@ static void sweep_vars(report *R)
   double ups = 0;
   int nu = 0;
   for (int i = 0; i < r->n; i++)
-    if (r->c[i].have && r->c[i].cpu_s > 0.5 && r->c[i].steps > 0) {
+    if (r->c[i].have && !r->c[i].static_run && r->c[i].cpu_s > 0.5 && r->c[i].steps > 0) {
       ups += r->c[i].particles * (double)r->c[i].steps / r->c[i].cpu_s;
       nu++;
     }
@@ -385,4 +385,6 @@ void ver_report_set_vars(report *R)
   sweep_vars(R);
   stab_vars(R);
   rate_vars(R);
+  ver_report_static_vars(R);
+  ver_report_qs_vars(R);
 }

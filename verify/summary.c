@@ -231,6 +231,9 @@ int ver_summary_read(const char *dir, ver_summary_doc *d)
       memcpy(p, &z, sizeof z);
     }
   }
+  char solver[16]; /* "static" or "explicit" ("" before the key: explicit) */
+  jstr(o, "solver", solver, sizeof solver);
+  u->static_run = !strcmp(solver, "static");
   cJSON_Delete(o);
   return 0;
 }

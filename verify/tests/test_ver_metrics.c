@@ -223,6 +223,21 @@ static void test_ver_metrics_curve_l2(void **state)
   assert_true(isnan(ver_curve_l2(d, P, N, 0.0, 10.0, line_ref, &k, NULL, 0)));
 }
 
+/* A run against a reference run's rows, by hand: the triangle (0,0)-(1,1)-(2,0); the
+ * run's rows at 0.5, 1, 1.5 are interval averages, compared at 0.25, 0.75, 1.25 where the
+ * triangle is 0.25, 0.75, 0.75: P 0.35, 0.75, 0.55 miss by 0.1, 0, -0.2, RMS sqrt(0.05 / 3).
+ * With the reference moving back after delta 1 (a snapback), only delta <= 1 counts. */
+static void test_ver_metrics_curve_err_curve(void **state)
+{
+  (void)state;
+  const double rd[2] = {1, 2}, rP[2] = {1, 0}, d[3] = {0.5, 1.0, 1.5}, P[3] = {0.35, 0.75, 0.55};
+  assert_rel(ver_curve_err_curve(rd, rP, 2, d, P, 3, 5.0, 1.0), sqrt(0.05 / 3), 1e-12, "triangle");
+  assert_rel(ver_curve_err_curve(rd, rP, 2, d, P, 3, 5.0, 2.0), 0.5 * sqrt(0.05 / 3), 1e-12, "scale");
+  const double sd[3] = {0.5, 1.0, 0.8}, sP[3] = {0.5, 1.0, 0.5};
+  assert_rel(ver_curve_err_curve(sd, sP, 3, d, P, 3, 5.0, 1.0), sqrt(0.01 / 2), 1e-12, "snapback prefix");
+  assert_true(isnan(ver_curve_err_curve(rd, rP, 0, d, P, 3, 5.0, 1.0)));
+}
+
 static void test_ver_metrics_judge(void **state)
 {
   (void)state;
@@ -509,6 +524,7 @@ int main(void)
     cmocka_unit_test(test_ver_metrics_conv_order),
     cmocka_unit_test(test_ver_metrics_spread),
     cmocka_unit_test(test_ver_metrics_curve_l2),
+    cmocka_unit_test(test_ver_metrics_curve_err_curve),
     cmocka_unit_test(test_ver_metrics_judge),
     cmocka_unit_test(test_ver_metrics_fit_line_by_hand),
     cmocka_unit_test(test_ver_metrics_elastic_slope_by_hand),
