@@ -47,6 +47,9 @@ typedef struct {
   ana_bar ana;
   double end_delta;
   double cost;                 /* particles x steps to the end, for scheduling       */
+  char refused[240];           /* non-empty: the static solver refuses this case (its
+                                  reason, as the solver gives it); the case is listed
+                                  and judged as refused, never run                  */
   /* how the run went */
   int exit_code;               /* child's exit status; -1 not run (merge)            */
   int term_sig;                /* signal that killed the child, 0 if none            */

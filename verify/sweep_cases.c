@@ -43,6 +43,26 @@ static const ver_variant V_ANGLES[2 * V_NANGLE] = {
   {"a60-swap", "decohesion.alpha=60", 0, 0, 1}, {"a75-swap", "decohesion.alpha=75", 0, 0, 1},
 };
 
+/* --full's static cases: every crack scene at h 8, 4, 2, 1 and 1, 4, 9 ppc, down to the
+ * finest h its cost allows (docs/sweeps.md: CPU s of one run, --threads 1): fig8 at h 1,
+ * 9 ppc would cost more than its 4 ppc run's minutes, and a30 stops on the way back at
+ * h 2 at every ppc, so its h 1 runs would cost minutes to stop.  ppc 0: every ppc. */
+static double static_floor(const char *scene, int ppc)
+{
+  static const struct {
+    const char *scene;
+    int ppc;
+    double h;
+  } f[] = {
+    {"fig8", 9, 2},
+    {"a30", 0, 2},
+  };
+  for (size_t i = 0; i < sizeof f / sizeof f[0]; i++)
+    if (!strcmp(scene, f[i].scene) && (f[i].ppc == 0 || f[i].ppc == ppc))
+      return f[i].h;
+  return 1;
+}
+
 /* The scene file with the same overrides `delam run --h H --ppc N --set ...` applies
  * (cmd_run.c: dt scaled with h to keep the file's Courant number). */
 static int build_scene(const char *path, double h, int ppc, char sets[][128], int nset, ver_scene *vs,
@@ -69,6 +89,24 @@ static int build_scene(const char *path, double h, int ppc, char sets[][128], in
     if (ver_scene_set(vs, sets[i], err, len))
       return 2;
   return ver_scene_validate(vs, err, len);
+}
+
+/* The static solver's refusal of a scene it cannot solve (kernel/mpm_static.c, refuse(),
+ * exit 2 before anything is built), restated here so that the sweep lists such a case as
+ * refused instead of running it into a failure: one particle a cell with softening
+ * particles, or with bilinear shapes.  0, or 1 with the reason in buf. */
+static int static_refusal(const mpm_scene *sc, char *buf, size_t len)
+{
+  if (sc->solver != MPM_SOLVER_STATIC || sc->ppc != 1)
+    return 0;
+  if (sc->model != MPM_DCOH_NONE && sc->path != MPM_PATH_IFACE)
+    snprintf(buf, len, "static solver: 1 ppc with softening particles (path %s) cannot open its band in "
+             "equilibrium (docs/static.md)", sc->path == MPM_PATH_LINE ? "line" : "free");
+  else if (sc->shape == MPM_SHAPE_LINEAR)
+    snprintf(buf, len, "static solver: 1 ppc on bilinear shapes leaves hourglass modes (docs/static.md)");
+  else
+    return 0;
+  return 1;
 }
 
 int ver_case_a90(const ver_case *c)
@@ -151,6 +189,7 @@ int ver_case_init(ver_case *c, const char *path, const char *scene, const char *
   snprintf(c->id, sizeof c->id, "%s%s%s%s%s", base, method ? "-method=" : "", method ? method : "",
            v.suffix[0] ? "-" : "", v.suffix);
   const mpm_scene *sc = &c->vs.sc;
+  static_refusal(sc, c->refused, sizeof c->refused);
   c->cost = (sc->L / sc->h) * (sc->H / sc->h) * sc->ppc * (c->end_delta / (sc->speed * sc->dt));
   return 0;
 }
@@ -232,7 +271,7 @@ int ver_sweep_cases(const ver_verify_opts *o, ver_case **out, int *nout)
     static const int ps[] = {1, 4, 9}, ps_angles[] = {1, 4};
     const double *hv = o->angles ? hs_angles : hs;
     const int *pv = o->angles ? ps_angles : ps;
-    const int nh = o->angles ? 2 : 4, np = o->angles ? 2 : 3, na = o->angles ? 2 * V_NANGLE : 1;
+    const int nh = o->angles ? 2 : 4, np = o->angles ? 2 : 3, na = o->angles ? 2 * V_NANGLE : 2;
     cs = calloc((size_t)(nn * nh * np * na + 1), sizeof *cs);
     int rc = cs ? 0 : 2;
     for (int i = 0; i < nn && !rc; i++) {
@@ -247,11 +286,13 @@ int ver_sweep_cases(const ver_verify_opts *o, ver_case **out, int *nout)
           (sf.sc.vib_mode > 0 || (o->angles && (sf.sc.model == 0 || fabs(sf.sc.alpha_deg - 90.0) < 1e-9))))
         continue;
       for (int k = 0; k < na && !rc; k++) {
-        const ver_variant *v = o->angles ? &V_ANGLES[k] : &V_BASE;
+        const ver_variant *v = o->angles ? &V_ANGLES[k] : k ? &V_STATIC : &V_BASE;
         if (o->angles && !v->swap && fabs(sf.sc.alpha_deg - V_ANGLE_DEG[k % V_NANGLE]) < 1e-9)
           continue; /* the file's own angle and mode: --full's case */
         for (int a = 0; a < nh && !rc; a++)
           for (int b = 0; b < np && !rc; b++) {
+            if (v == &V_STATIC && hv[a] < static_floor(scene, pv[b]))
+              continue;
             if (ver_case_init(&cs[n], path, scene, o->method, hv[a], pv[b], *v, err, sizeof err)) {
               fprintf(stderr, "delam verify: %s\n", err);
               rc = 2;
@@ -294,6 +335,10 @@ void ver_case_read(const ver_verify_opts *o, ver_case *c)
   c->W_scheme = NAN;
   c->curve_path = c->delta5 = NAN;
   c->k_soft = c->curve_l2 = c->curve_wave = c->wave_peak = c->band_width = c->band_extent = c->angle = c->D_diffuse = c->P_after = c->P_after_t = c->P_after_c = NAN;
+  if (c->refused[0]) { /* never run: nothing to read */
+    snprintf(c->error, sizeof c->error, "refused: %s", c->refused);
+    return;
+  }
   ver_summary_doc sd;
   if (ver_summary_read(dir, &sd) == 0) {
     const ver_summary *u = &sd.u;

@@ -92,8 +92,11 @@ static int run_cases(const ver_verify_opts *o, ver_case *cs, int n, char *starte
   int *order = malloc(sizeof(int) * (size_t)(n + 1));
   if (!order)
     return 2;
+  int m = 0;
   for (int i = 0; i < n; i++)
-    order[i] = i;
+    if (!cs[i].refused[0]) /* refused: never run, judged as such */
+      order[m++] = i;
+  n = m;
   /* insertion sort by cost, descending (n is small) */
   for (int i = 1; i < n; i++)
     for (int j = i; j > 0 && cs[order[j]].cost > cs[order[j - 1]].cost; j--) {
@@ -115,6 +118,10 @@ static void list_cases(const ver_verify_opts *o, const ver_case *cs, int n)
 {
   for (int i = 0; i < n; i++) {
     const ver_case *c = &cs[i];
+    if (c->refused[0]) { /* a shell comment: a runner skips it, the merge judges it */
+      printf("# %s: %s\n", c->id, c->refused);
+      continue;
+    }
     printf("%s run %s --h %g --ppc %d", o->self, c->path, c->h, c->ppc);
     for (int s = 0; s < c->nset; s++)
       printf(" --set %s", c->sets[s]);

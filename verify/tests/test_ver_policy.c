@@ -126,6 +126,23 @@ static void test_ver_policy_fig6_pass_and_fail(void **state)
   assert_int_equal(chk(&c, "run")->verdict, VER_FAIL);
 }
 
+/* A case the static solver refuses (1 ppc on a band scene) is judged refused, known-limit,
+ * with its reason and no other check; not a failure. */
+static void test_ver_policy_static_refused(void **state)
+{
+  (void)state;
+  ver_case c;
+  fig6_case(&c, 1);
+  c.vs.sc.solver = MPM_SOLVER_STATIC;
+  c.complete = 0;
+  snprintf(c.refused, sizeof c.refused, "static solver: 1 ppc with softening particles");
+  ver_policy_case(&c);
+  assert_int_equal(c.nchk, 1);
+  assert_int_equal(chk(&c, "static_refused")->verdict, VER_KNOWN);
+  assert_int_equal(c.verdict, VER_KNOWN);
+  assert_non_null(strstr(c.chk[0].note, "1 ppc"));
+}
+
 static void test_ver_policy_inclined_known_limit(void **state)
 {
   (void)state;
@@ -386,6 +403,7 @@ int main(void)
     cmocka_unit_test(test_ver_policy_fig6_pass_and_fail),
     cmocka_unit_test(test_ver_policy_inclined_known_limit),
     cmocka_unit_test(test_ver_policy_load_after_sep),
+    cmocka_unit_test(test_ver_policy_static_refused),
     cmocka_unit_test(test_ver_policy_band_method),
     cmocka_unit_test(test_ver_policy_snapback_softening),
     cmocka_unit_test(test_ver_policy_cross),
