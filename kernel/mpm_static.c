@@ -399,7 +399,12 @@ mpm_status mpm_static_step(mpm_static *q, char *err, size_t errlen)
   mpm_sim *s = q->s;
   for (int cut = 0; cut <= MPM_QS_MAXCUT; cut++) {
     int iters = 0;
-    const int r = increment(q, &iters);
+    int r = increment(q, &iters);
+    /* a kick starts the softening; one whose equilibrium lost half the load crossed a
+     * snap (at a snapback's peak the only states past delta are the separated ones):
+     * it is retried smaller */
+    if (r == 1 && q->kick && q->Pg < 0.5 * s->P_grip)
+      r = 0;
     if (r == -2) {
       /* C does not answer delta: nothing softens at the committed state (the initiation,
        * or a particle that stopped): a small grip increment starts it again; if that
