@@ -41,7 +41,8 @@
 
 void mpm_static_iface_free(mpm_static *q)
 {
-  void *f[] = {q->split, q->snode, q->sA, q->sseg, q->segstart, q->sorder, q->pA, q->pst, q->ptr, q->pw, q->kseg};
+  void *f[] = {q->split, q->snode, q->sA, q->sseg, q->segstart, q->sorder, q->pA, q->pst, q->ptr, q->pw, q->kseg,
+               q->spath, q->cpath, q->sforce};
   for (size_t i = 0; i < sizeof f / sizeof f[0]; i++)
     free(f[i]);
 }
@@ -157,7 +158,10 @@ static int segments(mpm_static *q, const mpm_iface *f, const double *An)
   q->ptr = calloc((size_t)(q->nseg ? q->nseg : 1), sizeof *q->ptr);
   q->pw = calloc((size_t)(q->nseg ? q->nseg : 1), sizeof(double));
   q->kseg = calloc((size_t)(q->nseg ? q->nseg : 1), sizeof *q->kseg);
-  if (!q->segstart || !q->pA || !q->pst || !q->ptr || !q->pw || !q->kseg) {
+  q->spath = calloc((size_t)(q->nseg ? q->nseg : 1), 1);
+  q->cpath = calloc((size_t)(q->nseg ? q->nseg : 1), 1);
+  q->sforce = calloc((size_t)(q->nseg ? q->nseg : 1), 1);
+  if (!q->segstart || !q->pA || !q->pst || !q->ptr || !q->pw || !q->kseg || !q->spath || !q->cpath || !q->sforce) {
     free(sp);
     return -1;
   }
@@ -395,7 +399,18 @@ static void segment_eval(mpm_static *q, int g, int tangent, double *Ax, double J
   }
   double de[3], S[2][2], gl[2], wk = 0.0;
   jump_strain(m, ws[0], ws[1], de);
-  const int closest = mpm_static_seg_law(m, &q->pst[g], ws, &q->ptr[g], &wk, S, gl);
+  int closest = 1;
+  if (q->sforce[g]) { /* held elastic for this increment (mpm_static.c, unload_one): eq. 7 */
+    q->ptr[g] = q->pst[g];
+    q->ptr[g].sxx += m->E1 * de[0] + m->E2 * de[1];
+    q->ptr[g].syy += m->E2 * de[0] + m->E1 * de[1];
+    q->ptr[g].sxy += 2.0 * m->G * de[2];
+    S[0][0] = S[1][1] = m->E1; /* isotropic: d t / d w = k0 I */
+    S[0][1] = S[1][0] = 0.0;
+    gl[0] = gl[1] = 0.0;
+  } else
+    closest = mpm_static_seg_law(m, &q->pst[g], ws, &q->ptr[g], &wk, S, gl);
+  q->spath[g] = q->ptr[g].lam > q->pst[g].lam; /* it softened in the trial */
   if (!closest) {
     mpm_dinfo info;
     mpm_dcoh_update(m, &q->pst[g], de, &q->ptr[g], &info, q->dw);
@@ -491,6 +506,7 @@ void mpm_static_iface_commit(mpm_static *q)
   double w = 0.0, d = 0.0;
   for (int g = 0; g < q->nseg; g++) {
     q->pst[g] = q->ptr[g];
+    q->cpath[g] = q->spath[g];
     w += q->pw[g];
     d += q->imat.U0 * fmin(q->pst[g].lam, 1.0) * q->pA[g];
     on += q->pA[g] > 0.0;
@@ -500,4 +516,15 @@ void mpm_static_iface_commit(mpm_static *q)
   s->led.D_static = d;
   if (on > 0 && open == on) /* every segment of the line has separated: the bar is cut */
     s->cut = 1;
+}
+
+/* 1 if every segment held elastic is within its strength at the trial state (eq. 23). */
+int mpm_static_iface_admissible(const mpm_static *q)
+{
+  for (int g = 0; g < q->nseg; g++) {
+    const mpm_dstate *o = &q->ptr[g];
+    if (q->sforce[g] && mpm_dcoh_F(&q->imat, o->sxx, o->syy, o->sxy, o->lam) > 1e-9)
+      return 0;
+  }
+  return 1;
 }
