@@ -148,29 +148,6 @@ double mpm_dcoh_str2(const mpm_material *m, double lam, int sep)
   return sep ? -1.0 : str * str;
 }
 
-/* Stress in the n-t frame: (s_nn, s_tt, s_nt). */
-typedef struct {
-  double nn, tt, nt;
-} nt_stress;
-
-static nt_stress to_nt(const mpm_material *m, double sxx, double syy, double sxy)
-{
-  nt_stress s;
-  s.nn = m->rnn[0] * sxx + m->rnn[1] * syy + m->rnn[2] * sxy;
-  s.tt = m->rtt[0] * sxx + m->rtt[1] * syy + m->rtt[2] * sxy;
-  s.nt = m->rnt[0] * sxx + m->rnt[1] * syy + m->rnt[2] * sxy;
-  return s;
-}
-
-/* The inverse rotation, with the same coefficients: sxx = nx^2 s_nn + tx^2 s_tt +
- * 2 nx tx s_nt, ... (the factors 2 and 1/2 are exact). */
-static void from_nt(const mpm_material *m, nt_stress s, mpm_dstate *out)
-{
-  out->sxx = m->rnn[0] * s.nn + m->rtt[0] * s.tt + (2.0 * m->rnt[0]) * s.nt;
-  out->syy = m->rnn[1] * s.nn + m->rtt[1] * s.tt + (2.0 * m->rnt[1]) * s.nt;
-  out->sxy = (0.5 * m->rnn[2]) * s.nn + (0.5 * m->rtt[2]) * s.tt + m->rnt[2] * s.nt;
-}
-
 /* Effective traction, eq. 23, with the Macaulay bracket on sn. */
 static double eff_traction(const mpm_material *m, double sn, double st)
 {
@@ -181,7 +158,7 @@ static double eff_traction(const mpm_material *m, double sn, double st)
 
 double mpm_dcoh_F(const mpm_material *m, double sxx, double syy, double sxy, double lam)
 {
-  const nt_stress s = to_nt(m, sxx, syy, sxy);
+  const nt_stress s = mpm_to_nt(m, sxx, syy, sxy);
   return eff_traction(m, s.nn, s.nt) - (1.0 - powq(lam, m->q));
 }
 
@@ -393,8 +370,8 @@ static inline mpm_status dcoh_step(const mpm_material *m, const mpm_dstate *in, 
       !isfinite(in->upn) || !isfinite(in->upt))
     return MPM_ENOTFINITE;
 
-  const nt_stress s_in = to_nt(m, in->sxx, in->syy, in->sxy);
-  const nt_stress tr = to_nt(m, out->sxx, out->syy, out->sxy);
+  const nt_stress s_in = mpm_to_nt(m, in->sxx, in->syy, in->sxy);
+  const nt_stress tr = mpm_to_nt(m, out->sxx, out->syy, out->sxy);
   double dun = 0.0, dut = 0.0;
   nt_stress s = tr;
 
@@ -412,7 +389,7 @@ static inline mpm_status dcoh_step(const mpm_material *m, const mpm_dstate *in, 
   out->upt = in->upt + dut;
   /* Traction work, trapezoidal in the step: int s . d ud. */
   info->w = 0.5 * ((s_in.nn + s.nn) * dun + (s_in.nt + s.nt) * dut);
-  from_nt(m, s, out);
+  mpm_from_nt(m, s, out);
   t->path = info->path;
 
 done:

@@ -468,4 +468,28 @@ void mpm_control_step(mpm_sim *s);
 /* Updates s->cut after new separations (cheap when there are none). */
 void mpm_sim_cut(mpm_sim *s);
 
+/* Stress in a material's n-t frame, (s_nn, s_tt, s_nt), and back, with its rotation
+ * coefficients (the decohesion update's frame, and the static interface's). */
+typedef struct {
+  double nn, tt, nt;
+} nt_stress;
+
+static inline nt_stress mpm_to_nt(const mpm_material *m, double sxx, double syy, double sxy)
+{
+  nt_stress s;
+  s.nn = m->rnn[0] * sxx + m->rnn[1] * syy + m->rnn[2] * sxy;
+  s.tt = m->rtt[0] * sxx + m->rtt[1] * syy + m->rtt[2] * sxy;
+  s.nt = m->rnt[0] * sxx + m->rnt[1] * syy + m->rnt[2] * sxy;
+  return s;
+}
+
+/* The inverse rotation, with the same coefficients: sxx = nx^2 s_nn + tx^2 s_tt +
+ * 2 nx tx s_nt, ... (the factors 2 and 1/2 are exact). */
+static inline void mpm_from_nt(const mpm_material *m, nt_stress s, mpm_dstate *out)
+{
+  out->sxx = m->rnn[0] * s.nn + m->rtt[0] * s.tt + (2.0 * m->rnt[0]) * s.nt;
+  out->syy = m->rnn[1] * s.nn + m->rtt[1] * s.tt + (2.0 * m->rnt[1]) * s.nt;
+  out->sxy = (0.5 * m->rnn[2]) * s.nn + (0.5 * m->rtt[2]) * s.tt + m->rnt[2] * s.nt;
+}
+
 #endif

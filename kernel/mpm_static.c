@@ -394,25 +394,6 @@ static void set_mode(mpm_static *q, int mode)
     q->step_d = 0.02 * fabs(q->dn) + 1e-6 * q->s->sc.L * fmin(q->s->sc.snf, q->s->sc.stf) / q->s->sc.E;
 }
 
-/* The failed increment again with one segment that softened at the committed state held
- * elastic, each in turn: where two segments soften in series and the equilibrium needs
- * one of them to unload, Newton's step from the committed tangent keeps both softening
- * and cycles.  A solution counts if the held segment stays within its strength; 1 if one
- * did (a30 with U0 0.6 at h 4 ends so; a30 at h 2 still stops). */
-static int unload_one(mpm_static *q, int *iters)
-{
-  for (int g = 0; g < q->nseg; g++) {
-    if (!q->cpath[g])
-      continue;
-    q->sforce[g] = 1;
-    const int ok = increment(q, iters) == 1 && mpm_static_iface_admissible(q);
-    q->sforce[g] = 0;
-    if (ok)
-      return 1;
-  }
-  return 0;
-}
-
 mpm_status mpm_static_step(mpm_static *q, char *err, size_t errlen)
 {
   mpm_sim *s = q->s;
@@ -424,8 +405,6 @@ mpm_status mpm_static_step(mpm_static *q, char *err, size_t errlen)
      * it is retried smaller */
     if (r == 1 && q->kick && q->Pg < 0.5 * s->P_grip)
       r = 0;
-    if (r == 0 && q->iface && q->mode == MPM_QS_DISSIPATION && !q->kick)
-      r = unload_one(q, &iters);
     if (r == -2) {
       /* C does not answer delta: nothing softens at the committed state (the initiation,
        * or a particle that stopped): a small grip increment starts it again; if that

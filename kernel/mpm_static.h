@@ -89,9 +89,6 @@ struct mpm_static {
   double *pA;             /* per segment: sum of its nodes' A                           */
   mpm_dstate *pst, *ptr;  /* the law's committed and trial state per segment            */
   double *pw;             /* trial: the law's work this increment, times pA             */
-  uint8_t *spath;         /* per segment: 1 if it softened at the last evaluation        */
-  uint8_t *cpath;         /* ... at the committed state                                  */
-  uint8_t *sforce;        /* 1: held elastic in this increment (unloading)               */
   size_t *kseg;           /* where each segment's entries start in map                   */
   mpm_material imat;      /* the law as a material of the update: E1 = G = k0, E2 = 0, Le 1 */
 };
@@ -100,8 +97,6 @@ struct mpm_static {
 mpm_status mpm_static_iface_setup(mpm_static *q, char *err, size_t errlen);
 void mpm_static_iface_eval(mpm_static *q, int tangent, double *Ax, double *D, double *C);
 void mpm_static_iface_commit(mpm_static *q);
-/* 1 if every segment held elastic is within its strength at the trial state (eq. 23) */
-int mpm_static_iface_admissible(const mpm_static *q);
 /* One segment's step of the line's law returned along the flow at the step's end, for a
  * jump increment w (x, y); the tangent S = d t / d w and gl = d lambda / d w; 0 where the
  * segment is separated or separates in the step (the particle update takes those). */

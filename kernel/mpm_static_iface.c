@@ -41,8 +41,7 @@
 
 void mpm_static_iface_free(mpm_static *q)
 {
-  void *f[] = {q->split, q->snode, q->sA, q->sseg, q->segstart, q->sorder, q->pA, q->pst, q->ptr, q->pw, q->kseg,
-               q->spath, q->cpath, q->sforce};
+  void *f[] = {q->split, q->snode, q->sA, q->sseg, q->segstart, q->sorder, q->pA, q->pst, q->ptr, q->pw, q->kseg};
   for (size_t i = 0; i < sizeof f / sizeof f[0]; i++)
     free(f[i]);
 }
@@ -158,10 +157,7 @@ static int segments(mpm_static *q, const mpm_iface *f, const double *An)
   q->ptr = calloc((size_t)(q->nseg ? q->nseg : 1), sizeof *q->ptr);
   q->pw = calloc((size_t)(q->nseg ? q->nseg : 1), sizeof(double));
   q->kseg = calloc((size_t)(q->nseg ? q->nseg : 1), sizeof *q->kseg);
-  q->spath = calloc((size_t)(q->nseg ? q->nseg : 1), 1);
-  q->cpath = calloc((size_t)(q->nseg ? q->nseg : 1), 1);
-  q->sforce = calloc((size_t)(q->nseg ? q->nseg : 1), 1);
-  if (!q->segstart || !q->pA || !q->pst || !q->ptr || !q->pw || !q->kseg || !q->spath || !q->cpath || !q->sforce) {
+  if (!q->segstart || !q->pA || !q->pst || !q->ptr || !q->pw || !q->kseg) {
     free(sp);
     return -1;
   }
@@ -293,6 +289,14 @@ static void jump(const mpm_static *q, int nd, double W[2], double w[2])
 }
 
 
+/* psi(dl) = |(an / (snf (S + cn dl)), at / (stf (S + ct dl)))| - 1 with S = 1 - (lambda +
+ * dl)^q: eq. 23 at the step's end over S, decreasing in dl (mpm_static_seg_law). */
+static double seg_psi(const mpm_material *m, double lam, double an, double at, double cn, double ct, double dl)
+{
+  const double S = 1.0 - pow(lam + dl, m->q);
+  return hypot(an > 0.0 ? an / (m->snf * (S + cn * dl)) : 0.0, at / (m->stf * (S + ct * dl))) - 1.0;
+}
+
 /* The law's step on a segment, returned to the strength along the flow at the end of the
  * step (closest point): the particle update freezes the flow direction m* at its elastic
  * trial (secs. 3-4), which is first order in the trial's excess over the strength; the
@@ -311,31 +315,28 @@ int mpm_static_seg_law(const mpm_material *m, const mpm_dstate *in, const double
   if (in->sep)
     return 0;
   const double nx = m->nx, ny = m->ny, tx = m->tx, ty = m->ty, k0 = m->E1;
-  const double sn0 = in->sxx * nx * nx + 2.0 * in->sxy * nx * ny + in->syy * ny * ny;
-  const double st0 = in->sxx * nx * tx + in->sxy * (nx * ty + ny * tx) + in->syy * ny * ty;
-  const double tt0 = in->sxx * tx * tx + 2.0 * in->sxy * tx * ty + in->syy * ty * ty;
+  nt_stress s0;
+  s0.nn = in->sxx * nx * nx + 2.0 * in->sxy * nx * ny + in->syy * ny * ny;
+  s0.nt = in->sxx * nx * tx + in->sxy * (nx * ty + ny * tx) + in->syy * ny * ty;
+  s0.tt = in->sxx * tx * tx + 2.0 * in->sxy * tx * ty + in->syy * ty * ty;
   const double wn = w[0] * nx + w[1] * ny, wt = w[0] * tx + w[1] * ty;
-  const double an = sn0 + k0 * wn, at = st0 + k0 * wt; /* the elastic trial, eq. 7 */
+  const double an = s0.nn + k0 * wn, at = s0.nt + k0 * wt; /* the elastic trial, eq. 7 */
   const double S0 = 1.0 - pow(in->lam, m->q);
   const double un0 = an > 0.0 ? an / m->snf : 0.0, ut0 = at / m->stf;
   double sn = an, st = at, dl = 0.0, dldn = 0.0, dldt = 0.0, dsn[2] = {1.0, 0.0}, dst[2] = {0.0, 1.0};
   if (sqrt(un0 * un0 + ut0 * ut0) > S0) {
     const double K = k0 * m->ubar0 * m->s0, cn = an > 0.0 ? K / (m->snf * m->snf) : 0.0, ct = K / (m->stf * m->stf);
     const double hi0 = 1.0 - in->lam;
-    /* psi(dl) = |(an / (snf (S + cn dl)), at / (stf (S + ct dl)))| - 1, decreasing */
-#define PSI(x) (hypot(an > 0.0 ? an / (m->snf * (1.0 - pow(in->lam + (x), m->q) + cn * (x))) : 0.0, \
-                      at / (m->stf * (1.0 - pow(in->lam + (x), m->q) + ct * (x)))) - 1.0)
-    if (!(hi0 > 0.0) || PSI(hi0) >= 0.0)
+    if (!(hi0 > 0.0) || seg_psi(m, in->lam, an, at, cn, ct, hi0) >= 0.0)
       return 0; /* the step opens past separation */
     double lo = 0.0, hi = hi0;
     for (int it = 0; it < 200 && hi - lo > 1e-15 * hi0; it++) {
       const double mid = 0.5 * (lo + hi);
-      if (PSI(mid) > 0.0)
+      if (seg_psi(m, in->lam, an, at, cn, ct, mid) > 0.0)
         lo = mid;
       else
         hi = mid;
     }
-#undef PSI
     dl = 0.5 * (lo + hi);
     const double lq = in->lam + dl, S = 1.0 - pow(lq, m->q), Sp = -m->q * pow(lq, m->q - 1.0);
     const double Dn = S + cn * dl, Dt = S + ct * dl;
@@ -357,16 +358,16 @@ int mpm_static_seg_law(const mpm_material *m, const mpm_dstate *in, const double
     dst[1] = gt + at * gtp * dldt;
   }
   const double dun = (an - sn) / k0, dut = (at - st) / k0; /* t = t_tr - k0 d ud */
-  const double tt = tt0 + m->E2 * (wn - dun); /* the frame's s_tt, unused by the law */
+  const nt_stress s1 = {sn, s0.tt + m->E2 * (wn - dun), st}; /* s_tt: the frame's, unused by the law */
   *out = *in;
   out->lam = in->lam + dl;
   out->upn = in->upn + dun;
   out->upt = in->upt + dut;
-  out->sxx = sn * nx * nx + tt * tx * tx + 2.0 * st * nx * tx;
-  out->syy = sn * ny * ny + tt * ty * ty + 2.0 * st * ny * ty;
-  out->sxy = sn * nx * ny + tt * tx * ty + st * (nx * ty + ny * tx);
-  *work = 0.5 * ((sn0 + sn) * dun + (st0 + st) * dut);
-  /* x-y: t = sn n + st t, (an, at) = (sn0, st0) + k0 (w . n, w . t) */
+  out->sxx = s1.nn * nx * nx + s1.tt * tx * tx + 2.0 * s1.nt * nx * tx;
+  out->syy = s1.nn * ny * ny + s1.tt * ty * ty + 2.0 * s1.nt * ny * ty;
+  out->sxy = s1.nn * nx * ny + s1.tt * tx * ty + s1.nt * (nx * ty + ny * tx);
+  *work = 0.5 * ((s0.nn + sn) * dun + (s0.nt + st) * dut);
+  /* x-y: t = sn n + st t, (an, at) = (s0.nn, s0.nt) + k0 (w . n, w . t) */
   const double dnw[2] = {k0 * nx, k0 * ny}, dtw[2] = {k0 * tx, k0 * ty};
   for (int c = 0; c < 2; c++) {
     const double dsnw = dsn[0] * dnw[c] + dsn[1] * dtw[c], dstw = dst[0] * dnw[c] + dst[1] * dtw[c];
@@ -399,18 +400,7 @@ static void segment_eval(mpm_static *q, int g, int tangent, double *Ax, double J
   }
   double de[3], S[2][2], gl[2], wk = 0.0;
   jump_strain(m, ws[0], ws[1], de);
-  int closest = 1;
-  if (q->sforce[g]) { /* held elastic for this increment (mpm_static.c, unload_one): eq. 7 */
-    q->ptr[g] = q->pst[g];
-    q->ptr[g].sxx += m->E1 * de[0] + m->E2 * de[1];
-    q->ptr[g].syy += m->E2 * de[0] + m->E1 * de[1];
-    q->ptr[g].sxy += 2.0 * m->G * de[2];
-    S[0][0] = S[1][1] = m->E1; /* isotropic: d t / d w = k0 I */
-    S[0][1] = S[1][0] = 0.0;
-    gl[0] = gl[1] = 0.0;
-  } else
-    closest = mpm_static_seg_law(m, &q->pst[g], ws, &q->ptr[g], &wk, S, gl);
-  q->spath[g] = q->ptr[g].lam > q->pst[g].lam; /* it softened in the trial */
+  const int closest = mpm_static_seg_law(m, &q->pst[g], ws, &q->ptr[g], &wk, S, gl);
   if (!closest) {
     mpm_dinfo info;
     mpm_dcoh_update(m, &q->pst[g], de, &q->ptr[g], &info, q->dw);
@@ -506,7 +496,6 @@ void mpm_static_iface_commit(mpm_static *q)
   double w = 0.0, d = 0.0;
   for (int g = 0; g < q->nseg; g++) {
     q->pst[g] = q->ptr[g];
-    q->cpath[g] = q->spath[g];
     w += q->pw[g];
     d += q->imat.U0 * fmin(q->pst[g].lam, 1.0) * q->pA[g];
     on += q->pA[g] > 0.0;
@@ -518,13 +507,3 @@ void mpm_static_iface_commit(mpm_static *q)
     s->cut = 1;
 }
 
-/* 1 if every segment held elastic is within its strength at the trial state (eq. 23). */
-int mpm_static_iface_admissible(const mpm_static *q)
-{
-  for (int g = 0; g < q->nseg; g++) {
-    const mpm_dstate *o = &q->ptr[g];
-    if (q->sforce[g] && mpm_dcoh_F(&q->imat, o->sxx, o->syy, o->sxy, o->lam) > 1e-9)
-      return 0;
-  }
-  return 1;
-}

@@ -37,28 +37,9 @@
 #define PI 3.14159265358979323846
 #define LE 8.0
 
-static mpm_scene base_scene(int model, double alpha, double snf, double stf, double s0, double q)
-{
-  mpm_scene sc;
-  memset(&sc, 0, sizeof sc);
-  sc.le_factor = 1.0;
-  sc.E = 1024.0;
-  sc.nu = 0.25;
-  sc.rho = 1.0;
-  sc.model = model;
-  sc.alpha_deg = alpha;
-  sc.snf = snf;
-  sc.stf = stf;
-  sc.U0 = 0.375;
-  sc.s0 = s0;
-  sc.q = q;
-  sc.sep_threshold = 0.98;
-  return sc;
-}
-
 static mpm_material make_mat(int model, double alpha, double snf, double stf, double s0, double q)
 {
-  const mpm_scene sc = base_scene(model, alpha, snf, stf, s0, q);
+  const mpm_scene sc = tu_scene(model, alpha, snf, stf, s0, q);
   mpm_material m;
   mpm_material_init(&m, &sc, snf, LE);
   return m;
@@ -369,7 +350,7 @@ static void test_mpm_decohesion_reversed_shear(void **state)
   const double E = 1024.0, nu = 0.25, G = E / (2.0 * (1.0 + nu)), stf = 1.0, s0 = 10.0;
   mpm_dwork *w = mpm_dwork_alloc();
   for (int rule = MPM_SHEAR_EVEN; rule <= MPM_SHEAR_CLOSING; rule++) {
-    mpm_scene sc = base_scene(MPM_DCOH_MODEL1, 90.0, 10.0, stf, s0, 1.0);
+    mpm_scene sc = tu_scene(MPM_DCOH_MODEL1, 90.0, 10.0, stf, s0, 1.0);
     sc.reversed_shear = rule;
     mpm_material m;
     mpm_material_init(&m, &sc, 10.0, LE);
@@ -1015,7 +996,7 @@ static void test_mpm_decohesion_tangent_closing(void **state)
   const int models[] = {MPM_DCOH_MODEL1, MPM_DCOH_MODEL2};
   for (int im = 0; im < 2; im++)
     for (int rule = MPM_SHEAR_EVEN; rule <= MPM_SHEAR_CLOSING; rule++) {
-      mpm_scene sc = base_scene(models[im], 60.0, 1.0, 2.0, 1.0, 1.0);
+      mpm_scene sc = tu_scene(models[im], 60.0, 1.0, 2.0, 1.0, 1.0);
       sc.reversed_shear = rule;
       mpm_material m;
       mpm_material_init(&m, &sc, 1.0, LE);

@@ -246,19 +246,7 @@ static void test_mpm_static_seg_law(void **state)
     for (size_t is = 0; is < 2; is++)
       for (size_t il = 0; il < sizeof lams / sizeof lams[0]; il++)
         for (size_t id = 0; id < sizeof dirs / sizeof dirs[0]; id++) {
-          mpm_scene sc;
-          memset(&sc, 0, sizeof sc);
-          sc.le_factor = 1.0;
-          sc.E = 1024.0;
-          sc.nu = 0.25;
-          sc.rho = 1.0;
-          sc.model = MPM_DCOH_MODEL1;
-          sc.alpha_deg = angles[ia];
-          sc.snf = str[is][0];
-          sc.stf = str[is][1];
-          sc.s0 = str[is][0];
-          sc.U0 = 0.375;
-          sc.q = 1.0;
+          mpm_scene sc = tu_scene(MPM_DCOH_MODEL1, angles[ia], str[is][0], str[is][1], str[is][0], 1.0);
           sc.sep_threshold = 1.0;
           mpm_material m;
           mpm_material_init(&m, &sc, sc.snf, 1.0);

@@ -35,6 +35,27 @@ static inline double urand(uint64_t *s)
 }
 
 #ifdef DELAM_MPM_H
+/* The bar's material with a decohesion law: E 1024, nu 0.25, rho 1, U0 0.375, the
+ * explicit default separation 0.98; the rest of the scene zero. */
+static inline mpm_scene tu_scene(int model, double alpha, double snf, double stf, double s0, double q)
+{
+  mpm_scene sc;
+  memset(&sc, 0, sizeof sc);
+  sc.le_factor = 1.0;
+  sc.E = 1024.0;
+  sc.nu = 0.25;
+  sc.rho = 1.0;
+  sc.model = model;
+  sc.alpha_deg = alpha;
+  sc.snf = snf;
+  sc.stf = stf;
+  sc.U0 = 0.375;
+  sc.s0 = s0;
+  sc.q = q;
+  sc.sep_threshold = 0.98;
+  return sc;
+}
+
 /* Fails unless runs a and b (one thread and two) hold the same bits: particle positions,
  * velocities, stresses and lambda, and every energy and ledger term. */
 static inline void tu_assert_same_bits(const mpm_sim *a, const mpm_sim *b, const char *what)
