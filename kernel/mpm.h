@@ -234,6 +234,8 @@ typedef struct mpm_static mpm_static;
 /* On a sim made from a scene with solver = static; s stays owned by the caller and must
  * outlive q.  MPM_EINVAL and a message for what it cannot solve. */
 mpm_status mpm_static_alloc(mpm_sim *s, mpm_static **out, char *err, size_t errlen);
+/* MPM_EINVAL and the reason if the static solver refuses the scene (before any sim). */
+mpm_status mpm_static_refusal(const mpm_scene *sc, char *err, size_t errlen);
 void mpm_static_free(mpm_static *q);
 mpm_status mpm_static_step(mpm_static *q, char *err, size_t errlen);
 void mpm_static_stats_get(const mpm_static *q, mpm_static_stats *out);

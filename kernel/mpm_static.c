@@ -71,7 +71,7 @@ void mpm_static_stats_get(const mpm_static *q, mpm_static_stats *out)
 }
 
 /* What the static solver cannot solve, refused before anything is built. */
-static mpm_status refuse(const mpm_scene *sc, char *err, size_t errlen)
+mpm_status mpm_static_refusal(const mpm_scene *sc, char *err, size_t errlen)
 {
   if (sc->le_mode == MPM_LE_ROW || sc->le_mode == MPM_LE_ZONE) {
     snprintf(err, errlen, "solver.type = static: decohesion.Le = %s is measured as an explicit run goes; use cell, "
@@ -98,7 +98,7 @@ static mpm_status refuse(const mpm_scene *sc, char *err, size_t errlen)
 mpm_status mpm_static_alloc(mpm_sim *s, mpm_static **out, char *err, size_t errlen)
 {
   *out = NULL;
-  mpm_status st = refuse(&s->sc, err, errlen);
+  mpm_status st = mpm_static_refusal(&s->sc, err, errlen);
   if (st != MPM_OK)
     return st;
   mpm_static *q = calloc(1, sizeof *q);

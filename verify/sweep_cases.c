@@ -91,22 +91,11 @@ static int build_scene(const char *path, double h, int ppc, char sets[][128], in
   return ver_scene_validate(vs, err, len);
 }
 
-/* The static solver's refusal of a scene it cannot solve (kernel/mpm_static.c, refuse(),
- * exit 2 before anything is built), restated here so that the sweep lists such a case as
- * refused instead of running it into a failure: one particle a cell with softening
- * particles, or with bilinear shapes.  0, or 1 with the reason in buf. */
+/* The static solver's refusal (the kernel's own rule), so that the sweep lists such a case
+ * as refused instead of running it into a failure.  0, or 1 with the reason in buf. */
 static int static_refusal(const mpm_scene *sc, char *buf, size_t len)
 {
-  if (sc->solver != MPM_SOLVER_STATIC || sc->ppc != 1)
-    return 0;
-  if (sc->model != MPM_DCOH_NONE && sc->path != MPM_PATH_IFACE)
-    snprintf(buf, len, "static solver: 1 ppc with softening particles (path %s) cannot open its band in "
-             "equilibrium (docs/static.md)", sc->path == MPM_PATH_LINE ? "line" : "free");
-  else if (sc->shape == MPM_SHAPE_LINEAR)
-    snprintf(buf, len, "static solver: 1 ppc on bilinear shapes leaves hourglass modes (docs/static.md)");
-  else
-    return 0;
-  return 1;
+  return sc->solver == MPM_SOLVER_STATIC && mpm_static_refusal(sc, buf, len) != MPM_OK;
 }
 
 int ver_case_a90(const ver_case *c)
