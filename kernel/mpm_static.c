@@ -37,7 +37,7 @@
 #define MPM_QS_FTOL 1e-9
 #define MPM_QS_DTOL 1e-10
 #define MPM_QS_MAXIT 25   /* Newton iterations an increment may take                */
-#define MPM_QS_LS 4       /* halvings of a Newton step that raises the residual      */
+#define MPM_QS_LS 8       /* halvings of a Newton step that raises the residual      */
 #define MPM_QS_MAXCUT 40  /* halvings of one increment before the run gives up       */
 #define MPM_QS_EASY 4     /* iterations at or below which the next increment grows   */
 #define MPM_QS_HARD 10    /* ... at or above which it shrinks                        */
@@ -49,6 +49,10 @@
 #define MPM_QS_STALL_C 1e-3 /* ... of U0 H / sin a, or the run stops with an error: it stalls */
 #define MPM_QS_SEP 0.02   /* a load below this share of the peak, after it, is separation   */
 #define MPM_QS_MAXINC 5000 /* increments a run may take (Fig. 6 at h 2 takes under 100)      */
+#define MPM_QS_RESUME 1e-6 /* of U0 H / sin a: a grip increment after the peak that dissipates
+                              more hands the lead back to the dissipation                    */
+#define MPM_QS_GRIPMIN 1e-6 /* of delta: a grip step cut below this has met a limit point      */
+#define MPM_QS_MAXSW 60   /* changes of control a run may make (each resumed softening takes two) */
 #define MPM_QS_NEL 8      /* equal increments of the linear branch up to the first initiation */
 
 void mpm_static_free(mpm_static *q)
@@ -394,6 +398,46 @@ static void set_mode(mpm_static *q, int mode)
     q->step_d = 0.02 * fabs(q->dn) + 1e-6 * q->s->sc.L * fmin(q->s->sc.snf, q->s->sc.stf) / q->s->sc.E;
 }
 
+/* After the peak and before the cut the grip leads only along an elastic stretch (a
+ * segment of the line separated and the rest unloaded: the load climbs back to their
+ * strength).  When the grip cannot pass a limit point, or an increment of it dissipated,
+ * the dissipation leads again; 1 if it does. */
+static int resume(mpm_static *q)
+{
+  if (q->mode != MPM_QS_GRIP || q->nel > 0 || !(q->Cn > 0.0) || q->s->cut || q->st.switches >= MPM_QS_MAXSW)
+    return 0;
+  set_mode(q, MPM_QS_DISSIPATION);
+  q->step_D = fmax(q->step_D, MPM_QS_RESUME * q->Dref);
+  return 1;
+}
+
+/* The bar is cut: the cut part's vertical rigid motion is held and the grip leads. */
+static mpm_status pin(mpm_static *q, char *err, size_t errlen)
+{
+  q->pinned = 1;
+  set_mode(q, MPM_QS_GRIP);
+  q->step_d = fmax(q->step_d, 0.02 * fabs(q->dn));
+  return mpm_static_number(q, err, errlen);
+}
+
+/* The next increment's size after one that took iters Newton iterations. */
+static void next_step(mpm_static *q, int iters, int first)
+{
+  const mpm_sim *s = q->s;
+  const double grow = iters <= MPM_QS_EASY ? 1.5 : iters >= MPM_QS_HARD ? 0.6 : 1.0;
+  if (q->mode == MPM_QS_DISSIPATION)
+    q->step_D = fmin(q->step_D * grow, 0.1 * q->Dref);
+  else if (q->nel > 0 && !first) {
+    /* the linear branch: equal steps to the initiation, then the dissipation leads */
+    if (--q->nel == 0 && s->sc.model != MPM_DCOH_NONE)
+      set_mode(q, MPM_QS_DISSIPATION);
+  } else if (!first)
+    q->step_d *= grow;
+  /* the grip never passes the run's end */
+  if (q->mode == MPM_QS_GRIP && q->dn + q->step_d > s->sc.end_delta)
+    q->step_d = fmax(s->sc.end_delta - q->dn, 1e-12 * s->sc.end_delta);
+}
+
 mpm_status mpm_static_step(mpm_static *q, char *err, size_t errlen)
 {
   mpm_sim *s = q->s;
@@ -430,11 +474,14 @@ mpm_status mpm_static_step(mpm_static *q, char *err, size_t errlen)
       const int first = s->step == 0;
       if (first && q->mode == MPM_QS_GRIP)
         scale_to_initiation(q);
+      const double Cprev = q->Cn;
       commit(q);
       const int grip_stalls = (q->mode == MPM_QS_GRIP && q->nel == 0 && q->step_d < 1e-9 * fmax(q->dn, 1e-300)) ||
                               q->st.increments >= MPM_QS_MAXINC;
       const int diss_stalls = q->mode == MPM_QS_DISSIPATION && stalls(q);
-      if (diss_stalls && s->P_grip < MPM_QS_SEP * s->P_peak && !grip_stalls) {
+      if (grip_stalls && q->st.increments < MPM_QS_MAXINC && resume(q)) {
+        /* the grip could not pass a limit point */
+      } else if (diss_stalls && s->P_grip < MPM_QS_SEP * s->P_peak && !grip_stalls) {
         /* the control creeps with the load almost gone (the line's last points opening one
          * by one): the bar has separated; the grip pulls the rest open */
         s->cut = 1;
@@ -445,6 +492,12 @@ mpm_status mpm_static_step(mpm_static *q, char *err, size_t errlen)
                  grip_stalls ? 1e-9 : MPM_QS_STALL_C, grip_stalls ? 1 : MPM_QS_STALL);
         return MPM_ENOTFINITE;
       }
+      /* a grip increment that dissipated, before the cut: softening resumed after an
+       * elastic stretch (a segment of the line separated and the rest unloaded; the load
+       * climbs back to their strength): the dissipation leads again through the next
+       * snapback, which the grip cannot pass */
+      if (!first && !q->kick && q->Cn - Cprev > MPM_QS_RESUME * q->Dref)
+        resume(q);
       q->nkick = q->kick ? q->nkick + 1 : 0;
       q->kick = 0;
       /* the next increment's predictor from this state's tangent (the trial's last
@@ -455,26 +508,8 @@ mpm_status mpm_static_step(mpm_static *q, char *err, size_t errlen)
         q->have_eval = 0;
       q->st.increments++;
       q->st.mode = q->mode;
-      const double grow = iters <= MPM_QS_EASY ? 1.5 : iters >= MPM_QS_HARD ? 0.6 : 1.0;
-      if (q->mode == MPM_QS_DISSIPATION)
-        q->step_D = fmin(q->step_D * grow, 0.1 * q->Dref);
-      else if (q->nel > 0 && !first) {
-        /* the linear branch: equal steps to the initiation, then the dissipation leads */
-        if (--q->nel == 0 && s->sc.model != MPM_DCOH_NONE)
-          set_mode(q, MPM_QS_DISSIPATION);
-      } else if (!first)
-        q->step_d *= grow;
-      /* the grip never passes the run's end */
-      if (q->mode == MPM_QS_GRIP && q->dn + q->step_d > s->sc.end_delta)
-        q->step_d = fmax(s->sc.end_delta - q->dn, 1e-12 * s->sc.end_delta);
-      if (s->cut && !q->pinned) {
-        q->pinned = 1;
-        set_mode(q, MPM_QS_GRIP);
-        const mpm_status st = mpm_static_number(q, err, errlen);
-        if (st != MPM_OK)
-          return st;
-      }
-      return MPM_OK;
+      next_step(q, iters, first);
+      return s->cut && !q->pinned ? pin(q, err, errlen) : MPM_OK;
     }
     q->st.cuts++;
     if (q->kick) {
@@ -485,6 +520,8 @@ mpm_status mpm_static_step(mpm_static *q, char *err, size_t errlen)
         set_mode(q, MPM_QS_GRIP);
     } else {
       q->step_d *= 0.5;
+      if (q->step_d < MPM_QS_GRIPMIN * fabs(q->dn)) /* the grip cannot pass a limit point */
+        resume(q);
     }
   }
   snprintf(err, errlen, "static solver: no equilibrium found after %d smaller increments at delta = %.9g (increment "

@@ -11,9 +11,10 @@
  * along n node by node, only summed along the line.  So the law acts on segments of
  * MPM_QS_SEG cells along the line, on their nodes' mean jump weighted by the staircase's
  * projected share A_I (facet_areas), and node I carries A_I t(W_seg) + T_I k0 (W_I - W_seg)
- * (T_I = A_I, at least half a particle's side): the segment's traction, and a stiff tie on
- * its node's departure from the segment's mean, which takes
- * up the staircase's node-to-node differences (the explicit interface shares a segment's
+ * (T_I = A_I, at least half a particle's side; W_seg the A-weighted mean for the law, the
+ * T-weighted one for the ties): the segment's traction, and a stiff tie on its node's
+ * departure from the segment's mean, self-equilibrated over the segment, which takes up
+ * the staircase's node-to-node differences (the explicit interface shares a segment's
  * traction among its nodes' stick impulses the same way).
  *
  * The law is the particle update itself (mpm_dcoh_update, with its algorithmic tangent),
@@ -388,14 +389,22 @@ static void segment_eval(mpm_static *q, int g, int tangent, double *Ax, double J
   const int a0 = q->segstart[g], a1 = q->segstart[g + 1];
   if (!(Ag > 0.0))
     return;
-  double Ws[2] = {0.0, 0.0}, ws[2] = {0.0, 0.0}; /* the segment's jump: A-weighted mean */
+  /* the segment's jump: the A-weighted mean the law takes, and the T-weighted mean the
+   * ties pull toward, so that the ties' forces sum to zero over the segment (tied to the
+   * A-weighted mean, the nodes off the staircase, T_I > A_I, put a net force on it that
+   * the law did not carry: fig8's curve 0.0011 of Pmax off at h 8, now 4e-7) */
+  double Ws[2] = {0.0, 0.0}, ws[2] = {0.0, 0.0}, Wt[2] = {0.0, 0.0}, Tg = 0.0;
+  for (int a = a0; a < a1; a++)
+    Tg += fmax(q->sA[q->sorder[a]], tfloor);
   for (int a = a0; a < a1; a++) {
     const int i = q->sorder[a];
+    const double Ti = fmax(q->sA[i], tfloor);
     double W[2], w[2];
     jump(q, q->snode[i], W, w);
     for (int c = 0; c < 2; c++) {
       Ws[c] += q->sA[i] / Ag * W[c];
       ws[c] += q->sA[i] / Ag * w[c];
+      Wt[c] += Ti / Tg * W[c];
     }
   }
   double de[3], S[2][2], gl[2], wk = 0.0;
@@ -417,7 +426,7 @@ static void segment_eval(mpm_static *q, int g, int tangent, double *Ax, double J
     for (int c = 0; c < 4; c++) {
       const int e = comp_eq(q, nd, c);
       if (e >= 0)
-        q->R[e] += (c < 2 ? -1.0 : 1.0) * (q->sA[i] * t[c % 2] + fmax(q->sA[i], tfloor) * k0 * (W[c % 2] - Ws[c % 2]));
+        q->R[e] += (c < 2 ? -1.0 : 1.0) * (q->sA[i] * t[c % 2] + fmax(q->sA[i], tfloor) * k0 * (W[c % 2] - Wt[c % 2]));
     }
   }
   if (!tangent)
@@ -437,11 +446,11 @@ static void segment_eval(mpm_static *q, int g, int tangent, double *Ax, double J
   for (int a = a0; a < a1; a++)
     for (int b = a0; b < a1; b++) {
       const int ia = q->sorder[a], ib = q->sorder[b];
-      const double Ai = q->sA[ia], Ti = fmax(Ai, tfloor), r = q->sA[ib] / Ag;
+      const double Ai = q->sA[ia], Ti = fmax(Ai, tfloor), r = q->sA[ib] / Ag, rt = fmax(q->sA[ib], tfloor) / Tg;
       for (int ca = 0; ca < 4; ca++)
         for (int cb = 0; cb < 4; cb++, k++) {
-          /* d f_I / d W_J = A_I S A_J / A_g + T_I k0 (delta_IJ - A_J / A_g) */
-          const double bij = Ai * S[ca % 2][cb % 2] * r + ((ca % 2) == (cb % 2) ? Ti * k0 * ((a == b) - r) : 0.0);
+          /* d f_I / d W_J = A_I S A_J / A_g + T_I k0 (delta_IJ - T_J / T_g) */
+          const double bij = Ai * S[ca % 2][cb % 2] * r + ((ca % 2) == (cb % 2) ? Ti * k0 * ((a == b) - rt) : 0.0);
           const double kab = (ca < 2 ? -1.0 : 1.0) * (cb < 2 ? -1.0 : 1.0) * bij;
           const int at = q->map[k];
           const int ea = comp_eq(q, q->snode[ia], ca), eb = comp_eq(q, q->snode[ib], cb);
