@@ -223,6 +223,7 @@ typedef struct {
   long switches;           /* changes of control                                       */
   long turns;              /* increments retried smaller at a corner of the curve      */
   long backtracks;         /* Newton steps halved by the line search                   */
+  long severed;            /* interface segments let go below 2 % of the peak load     */
   int nres;                /* the last increment's Newton iterations, and each one's   */
   double res[32];          /*   largest residual force over the largest load (first 32) */
   int mode;                /* MPM_QS_* of the last increment                           */

@@ -420,6 +420,23 @@ static mpm_status pin(mpm_static *q, char *err, size_t errlen)
   return mpm_static_number(q, err, errlen);
 }
 
+/* A failed increment: the current control's step halved. */
+static void shrink(mpm_static *q)
+{
+  q->st.cuts++;
+  if (q->kick) {
+    q->kick_d *= 0.5;
+  } else if (q->mode == MPM_QS_DISSIPATION) {
+    q->step_D *= 0.5;
+    if (q->step_D < 1e-9 * q->Dref)
+      set_mode(q, MPM_QS_GRIP);
+  } else {
+    q->step_d *= 0.5;
+    if (q->step_d < MPM_QS_GRIPMIN * fabs(q->dn)) /* the grip cannot pass a limit point */
+      resume(q);
+  }
+}
+
 /* The next increment's size after one that took iters Newton iterations. */
 static void next_step(mpm_static *q, int iters, int first)
 {
@@ -511,18 +528,18 @@ mpm_status mpm_static_step(mpm_static *q, char *err, size_t errlen)
       next_step(q, iters, first);
       return s->cut && !q->pinned ? pin(q, err, errlen) : MPM_OK;
     }
-    q->st.cuts++;
-    if (q->kick) {
-      q->kick_d *= 0.5;
-    } else if (q->mode == MPM_QS_DISSIPATION) {
-      q->step_D *= 0.5;
-      if (q->step_D < 1e-9 * q->Dref)
-        set_mode(q, MPM_QS_GRIP);
-    } else {
-      q->step_d *= 0.5;
-      if (q->step_d < MPM_QS_GRIPMIN * fabs(q->dn)) /* the grip cannot pass a limit point */
-        resume(q);
-    }
+    shrink(q);
+  }
+  /* the load gone below MPM_QS_SEP of the peak and no increment found: the interface's
+   * last segments let go in place (as the explicit run's separation at 0.98 drops the
+   * last 2 % of a traction at once) and the grip pulls the parts apart */
+  int sev = 0;
+  if (q->iface && !s->cut && q->Cn > 0.0 && fabs(s->P_grip) < MPM_QS_SEP * s->P_peak &&
+      (sev = mpm_static_iface_sever(q)) > 0) {
+    q->st.severed += sev;
+    q->have_eval = q->have_pred = 0;
+    const mpm_status st = pin(q, err, errlen);
+    return st != MPM_OK ? st : mpm_static_step(q, err, errlen);
   }
   snprintf(err, errlen, "static solver: no equilibrium found after %d smaller increments at delta = %.9g (increment "
            "%ld, %s control)", MPM_QS_MAXCUT, q->dn, s->step + 1, q->mode == MPM_QS_GRIP ? "grip" : "dissipation");

@@ -97,6 +97,7 @@ struct mpm_static {
 mpm_status mpm_static_iface_setup(mpm_static *q, char *err, size_t errlen);
 void mpm_static_iface_eval(mpm_static *q, int tangent, double *Ax, double *D, double *C);
 void mpm_static_iface_commit(mpm_static *q);
+int mpm_static_iface_sever(mpm_static *q); /* the unseparated segments let go in place */
 /* One segment's step of the line's law returned along the flow at the step's end, for a
  * jump increment w (x, y); the tangent S = d t / d w and gl = d lambda / d w; 0 where the
  * segment is separated or separates in the step (the particle update takes those). */

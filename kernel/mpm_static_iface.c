@@ -516,3 +516,34 @@ void mpm_static_iface_commit(mpm_static *q)
     s->cut = 1;
 }
 
+/* Below MPM_QS_SEP of the peak, where no increment is found: each segment not yet
+ * separated lets go in place, its traction turned into opening (eq. 58 with no jump
+ * increment: ud += t / k0) and its lambda set to 1, so that D is U0 times the crack's
+ * area; the work its remaining traction would have done (at most that share of U0 for
+ * the segment) is not booked.  The bar is cut; the number of segments that let go. */
+int mpm_static_iface_sever(mpm_static *q)
+{
+  const mpm_material *m = &q->imat;
+  int n = 0;
+  for (int g = 0; g < q->nseg; g++) {
+    mpm_dstate *o = &q->pst[g];
+    if (o->sep || !(q->pA[g] > 0.0))
+      continue;
+    nt_stress t = mpm_to_nt(m, o->sxx, o->syy, o->sxy);
+    o->upn += t.nn / m->E1;
+    o->upt += t.nt / m->G;
+    t.nn = t.nt = 0.0;
+    mpm_from_nt(m, t, o);
+    o->lam = fmax(o->lam, 1.0);
+    o->sep = 1;
+    n++;
+  }
+  double d = 0.0;
+  for (int g = 0; g < q->nseg; g++) {
+    q->ptr[g] = q->pst[g]; /* the trial from the committed state, not the failed increment's */
+    d += m->U0 * fmin(q->pst[g].lam, 1.0) * q->pA[g];
+  }
+  q->s->led.D_static = d;
+  q->s->cut = 1;
+  return n;
+}

@@ -308,6 +308,7 @@ static void finish(const run_state *r, ver_summary *u, double w0, double c0)
     u->newton = qs.newton;
     u->factorizations = qs.factorizations;
     u->cuts = qs.cuts;
+    u->severed = qs.severed;
     u->unknowns = qs.unknowns;
     u->t_eval = qs.t_eval;
     u->t_factor = qs.t_factor;

@@ -61,6 +61,7 @@ static const struct {
   {"newton", offsetof(ver_summary, newton), F_LONG},
   {"factorizations", offsetof(ver_summary, factorizations), F_LONG},
   {"cuts", offsetof(ver_summary, cuts), F_LONG},
+  {"severed", offsetof(ver_summary, severed), F_LONG},
   {"t_eval", offsetof(ver_summary, t_eval), F_DBL},
   {"t_factor", offsetof(ver_summary, t_factor), F_DBL},
   {"t_solve", offsetof(ver_summary, t_solve), F_DBL},

@@ -45,8 +45,9 @@ static const ver_variant V_ANGLES[2 * V_NANGLE] = {
 
 /* --full's static cases: every crack scene at h 8, 4, 2, 1 and 1, 4, 9 ppc, down to the
  * finest h its cost allows (docs/sweeps.md: CPU s of one run, --threads 1): fig8 at h 1,
- * 9 ppc would cost more than its 4 ppc run's minutes, and a30 stops on the way back at
- * h 2 at every ppc, so its h 1 runs would cost minutes to stop.  ppc 0: every ppc. */
+ * 9 ppc would cost more than its 4 ppc run's minutes, and a30 opens its line segment by
+ * segment from h 2 (a minute at 4 ppc, each segment's separation a snapback of its own),
+ * so its h 1 runs would cost ten minutes or more.  ppc 0: every ppc. */
 static double static_floor(const char *scene, int ppc)
 {
   static const struct {
