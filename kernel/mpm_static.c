@@ -411,6 +411,22 @@ static int resume(mpm_static *q)
   return 1;
 }
 
+/* The load gone below MPM_QS_SEP of the peak and no increment found: the interface's
+ * last segments let go in place (as the explicit run's separation at 0.98 drops the last
+ * 2 % of a traction at once; the bar is then cut) and the grip pulls the parts apart.
+ * How many let go; 0 where none was left or the rule does not apply. */
+static int let_go(mpm_static *q)
+{
+  const mpm_sim *s = q->s;
+  if (!q->iface || !(q->Cn > 0.0) || !(fabs(s->P_grip) < MPM_QS_SEP * s->P_peak))
+    return 0;
+  const int n = mpm_static_iface_sever(q);
+  q->st.severed += n;
+  if (n > 0)
+    q->have_eval = q->have_pred = 0;
+  return n;
+}
+
 /* The bar is cut: the cut part's vertical rigid motion is held and the grip leads. */
 static mpm_status pin(mpm_static *q, char *err, size_t errlen)
 {
@@ -496,8 +512,11 @@ mpm_status mpm_static_step(mpm_static *q, char *err, size_t errlen)
       const int grip_stalls = (q->mode == MPM_QS_GRIP && q->nel == 0 && q->step_d < 1e-9 * fmax(q->dn, 1e-300)) ||
                               q->st.increments >= MPM_QS_MAXINC;
       const int diss_stalls = q->mode == MPM_QS_DISSIPATION && stalls(q);
+      int gone = 0;
       if (grip_stalls && q->st.increments < MPM_QS_MAXINC && resume(q)) {
         /* the grip could not pass a limit point */
+      } else if ((diss_stalls || grip_stalls) && q->st.increments < MPM_QS_MAXINC && (gone = let_go(q)) > 0) {
+        /* the line's last segments let go */
       } else if (diss_stalls && s->P_grip < MPM_QS_SEP * s->P_peak && !grip_stalls) {
         /* the control creeps with the load almost gone (the line's last points opening one
          * by one): the bar has separated; the grip pulls the rest open */
@@ -519,7 +538,7 @@ mpm_status mpm_static_step(mpm_static *q, char *err, size_t errlen)
       q->kick = 0;
       /* the next increment's predictor from this state's tangent (the trial's last
        * evaluation is at the committed state) */
-      q->have_eval = 1;
+      q->have_eval = !gone; /* letting go changed the state since that evaluation */
       q->have_pred = 0;
       if (predictor(q) != MPM_OK)
         q->have_eval = 0;
@@ -530,15 +549,8 @@ mpm_status mpm_static_step(mpm_static *q, char *err, size_t errlen)
     }
     shrink(q);
   }
-  /* the load gone below MPM_QS_SEP of the peak and no increment found: the interface's
-   * last segments let go in place (as the explicit run's separation at 0.98 drops the
-   * last 2 % of a traction at once) and the grip pulls the parts apart */
-  int sev = 0;
-  if (q->iface && !s->cut && q->Cn > 0.0 && fabs(s->P_grip) < MPM_QS_SEP * s->P_peak &&
-      (sev = mpm_static_iface_sever(q)) > 0) {
-    q->st.severed += sev;
-    q->have_eval = q->have_pred = 0;
-    const mpm_status st = pin(q, err, errlen);
+  if (let_go(q)) {
+    const mpm_status st = q->pinned ? MPM_OK : pin(q, err, errlen);
     return st != MPM_OK ? st : mpm_static_step(q, err, errlen);
   }
   snprintf(err, errlen, "static solver: no equilibrium found after %d smaller increments at delta = %.9g (increment "

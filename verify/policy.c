@@ -120,14 +120,6 @@ static void check_peak_elastic(ver_case *c, const case_class *q)
   else
     snprintf(k->note, sizeof k->note, "peak grip load vs Pmax = r0 H (eq. 30); tol %g %% (ppc %d)", 100 * k->tol,
              sc->ppc);
-  /* the static solver's inclined interface: the sides' particles meet in a staircase,
-   * whose end segments at the faces initiate first (a30, 4 ppc: -3.1, -3.0, -2.4 % at
-   * h 8, 4, 2; 9 and 16 ppc -0.7 to -1.5 %; docs/static.md): known-limit to 3.5 % low */
-  if (sc->solver == MPM_SOLVER_STATIC && sc->path == MPM_PATH_IFACE && !q->a90) {
-    known(k, -0.035, k->tol);
-    snprintf(k->note + strlen(k->note), sizeof k->note - strlen(k->note),
-             "; static, inclined interface: the staircase's end segments initiate first, known-limit to -3.5 %%");
-  }
 
   k = add_check(c, "k_elastic", c->k_elastic, a->k_elastic, 1);
   k->tol = 0.01;

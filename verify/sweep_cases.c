@@ -43,27 +43,6 @@ static const ver_variant V_ANGLES[2 * V_NANGLE] = {
   {"a60-swap", "decohesion.alpha=60", 0, 0, 1}, {"a75-swap", "decohesion.alpha=75", 0, 0, 1},
 };
 
-/* --full's static cases: every crack scene at h 8, 4, 2, 1 and 1, 4, 9 ppc, down to the
- * finest h its cost allows (docs/sweeps.md: CPU s of one run, --threads 1): fig8 at h 1,
- * 9 ppc would cost more than its 4 ppc run's minutes, and a30 opens its line segment by
- * segment from h 2 (a minute at 4 ppc, each segment's separation a snapback of its own),
- * so its h 1 runs would cost ten minutes or more.  ppc 0: every ppc. */
-static double static_floor(const char *scene, int ppc)
-{
-  static const struct {
-    const char *scene;
-    int ppc;
-    double h;
-  } f[] = {
-    {"fig8", 9, 2},
-    {"a30", 0, 2},
-  };
-  for (size_t i = 0; i < sizeof f / sizeof f[0]; i++)
-    if (!strcmp(scene, f[i].scene) && (f[i].ppc == 0 || f[i].ppc == ppc))
-      return f[i].h;
-  return 1;
-}
-
 /* The scene file with the same overrides `delam run --h H --ppc N --set ...` applies
  * (cmd_run.c: dt scaled with h to keep the file's Courant number). */
 static int build_scene(const char *path, double h, int ppc, char sets[][128], int nset, ver_scene *vs,
@@ -281,8 +260,6 @@ int ver_sweep_cases(const ver_verify_opts *o, ver_case **out, int *nout)
           continue; /* the file's own angle and mode: --full's case */
         for (int a = 0; a < nh && !rc; a++)
           for (int b = 0; b < np && !rc; b++) {
-            if (v == &V_STATIC && hv[a] < static_floor(scene, pv[b]))
-              continue;
             if (ver_case_init(&cs[n], path, scene, o->method, hv[a], pv[b], *v, err, sizeof err)) {
               fprintf(stderr, "delam verify: %s\n", err);
               rc = 2;
