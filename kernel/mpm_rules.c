@@ -26,9 +26,10 @@ static const char *const PATH[] = {"free", "line", "interface"};
 static const char *iface_rules(const mpm_scene *sc, char *err, size_t len)
 {
   if (sc->fields != MPM_FIELDS_TWO || sc->shape != MPM_SHAPE_GIMP || sc->scheme != MPM_SCHEME_MUSL ||
-      sc->model != MPM_DCOH_MODEL1 || sc->q != 1.0 || sc->s0 != sc->snf || sc->eta != 0.0) {
+      sc->model != MPM_DCOH_MODEL1 || (sc->q != 1.0 && sc->solver != MPM_SOLVER_STATIC) || sc->s0 != sc->snf ||
+      sc->eta != 0.0) {
     snprintf(err, len, "decohesion.path: interface needs grid.fields = two, grid.shape = gimp, time.scheme = musl and "
-             "Model 1 with q = 1, s0 = snf, eta = 0 (here: fields %s, shape %s, scheme %s, model %d, q %g, s0 %g, "
+             "Model 1 with q = 1 (any q with solver.type = static), s0 = snf, eta = 0 (here: fields %s, shape %s, scheme %s, model %d, q %g, s0 %g, "
              "snf %g, eta %g; allowed otherwise: path = free or line)", W(sc->fields, FIELDS), W(sc->shape, SHAPE),
              mpm_scheme_name(sc->scheme), sc->model, sc->q, sc->s0, sc->snf, sc->eta);
     return "decohesion.path";

@@ -4,7 +4,7 @@ W = 1400; Hgt = 600
 load gpdir.'/common.gp'
 qs = "0.8 1 1.2"
 gs = "0.75 1.25 2"
-set multiplot layout 1,3 title sprintf("Fig. 3: {/Symbol s}* = {/Symbol s}/r_0 against E e_{ave}/r_0; lines: closed form (eq. 34), points: the kernel (fig6.ini, static solver, h = %g, %d ppc)", f3k_h, f3k_ppc)
+set multiplot layout 1,3 title sprintf("Fig. 3: {/Symbol s}* = {/Symbol s}/r_0 against E e_{ave}/r_0; lines: closed form (eq. 34), points: the kernel (iface90.ini, static solver, h = %g, %d ppc)", f3k_h, f3k_ppc)
 set xrange [0:2.2]
 set yrange [0:1.45]
 set ytics 0, 0.2, 1

@@ -2,7 +2,7 @@
  * report_qs.c - the quasi-static solver in `delam report` (report.h; docs/static.md):
  * its runs of the snapback scenes (REP_QS: fig8, a45, a30), drawn beside the explicit
  * runs and the analytic branch in Fig. 8(c) and the snapback figure, and Fig. 3's nine
- * bars computed by the kernel (REP_QS3: fig6.ini with q set and U0 chosen for g by
+ * bars computed by the kernel (REP_QS3: iface90.ini with q set and U0 chosen for g by
  * eq. 35), drawn over the closed form of eq. 34.  Each run is measured by its distance
  * from the analytic path (ver_curve_path, snapback included).
  */
@@ -19,13 +19,15 @@
 static const char *const qs_scene[3] = {"fig8", "a45", "a30"};
 #define QS_H 4.0
 #define QS_PPC 4
-/* Fig. 3's bars: fig6.ini's band at its coarsest grid; the curves lie within a line's
- * width of the closed form there (curve_path 0.0016-0.0039, docs/static.md). */
-#define QS3_SCENE "fig6"
+/* Fig. 3's bars: iface90.ini's interface at its coarsest grid, whose uniform opening is a
+ * discrete solution: every row on eq. 34 (curve_path 2e-7 to 4e-4, the chords of the
+ * curved branches, docs/static.md).  fig6.ini's band is 0.0016-0.0039 off, and at q 0.8
+ * each of its particles' onset is a snapback of its own: two of the nine bars stopped. */
+#define QS3_SCENE "iface90"
 #define QS3_H 8.0
 #define QS3_PPC 4
 
-/* U0 giving fig6.ini's bar the ratio g at alpha 90: eq. 35, g = E U0 / (L r0^2), with
+/* U0 giving the file's bar the ratio g at alpha 90: eq. 35, g = E U0 / (L r0^2), with
  * the file's E, L and r0 (r0 does not depend on U0).  NaN if the file does not load. */
 static double qs3_U0(const rep_ctx *r, double g)
 {
