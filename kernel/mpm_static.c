@@ -53,6 +53,7 @@
                               more hands the lead back to the dissipation                    */
 #define MPM_QS_GRIPMIN 1e-6 /* of delta: a grip step cut below this has met a limit point      */
 #define MPM_QS_MAXSW 60   /* changes of control a run may make (each resumed softening takes two) */
+#define MPM_QS_CMIN 1e-12 /* of U0 H / sin a: less dissipated is nothing (rounding)     */
 #define MPM_QS_NEL 8      /* equal increments of the linear branch up to the first initiation */
 
 void mpm_static_free(mpm_static *q)
@@ -207,6 +208,14 @@ static int increment(mpm_static *q, int *iters)
   const int grip = q->mode == MPM_QS_GRIP || q->kick;
   double dd = q->kick ? q->kick_d : q->step_d;
   if (!grip) {
+    /* q < 1 and nothing dissipated beyond rounding (a line at its strength everywhere
+     * can have one segment at lambda 4e-16 after the linear branch's last increment): a
+     * grip increment starts the softening, not a predictor from that one segment's
+     * tangent, which has the law's infinite slope and sent Newton after it alone (a45,
+     * a30 at q 0.8 stopped at the peak); for q >= 1 that tangent is finite and the
+     * predictor is cheaper (a grip increment here triples Newton's work on a30) */
+    if (q->s->sc.q < 1.0 && !(q->Cn > MPM_QS_CMIN * q->Dref) && q->nkick < 3)
+      return -2;
     /* pden < 0: C grows as delta falls, the snapback branch */
     if (fabs(q->pden) * fmax(q->dn, 1e-300) > 1e-9 * q->Dref)
       dd = q->step_D / q->pden;

@@ -138,7 +138,7 @@ static void check_softening(ver_case *c, const case_class *q)
   /* eq. 36 is the slope of q = 1's straight branch; for q other than 1 the branch is
    * curved and a straight fit over 0.8-0.2 of the peak has no closed-form partner (the
    * curve itself is judged by curve_path) */
-  if (c->vs.sc.q != 1.0)
+  if (a->p.q != 1.0)
     return;
   k = add_check(c, "k_soft", c->k_soft, a->k_soft_peak, 1);
   k->tol = ppc1 ? 0.10 : 0.05;
