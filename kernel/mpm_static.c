@@ -16,6 +16,11 @@
  *    tau borders the system; two solves with one factorization).  C never decreases, so
  *    the control passes the peak and any snapback, where delta moves back as a test
  *    machine under crack-opening control does;
+ *  - where C cannot grow (a segment of the interface's line separated and the rest
+ *    unload: the load climbs back elastically) the grip leads, and hands back to the
+ *    dissipation when an increment of it dissipates or it meets a limit point (resume);
+ *  - below MPM_QS_SEP of the peak, where no increment is found, the interface's last
+ *    segments let go in place (let_go);
  *  - once the bar is cut (or C stops answering delta) the grip leads again, and the cut
  *    part's vertical rigid motion is held.
  * Increments adapt to Newton's work: larger after an easy one, smaller after a hard one,
