@@ -86,7 +86,9 @@ struct mpm_static {
   int *sseg;              /* their segment                                             */
   int nseg, npair;        /* segments of the line (npair: the same, for the law's loops) */
   int *segstart, *sorder; /* split nodes of segment g: sorder[segstart[g] .. segstart[g+1]) */
+  double *sT;             /* the split nodes' tie weights T = max(A, half a particle's side) */
   double *pA;             /* per segment: sum of its nodes' A                           */
+  double *pT;             /* ... and of their T                                         */
   mpm_dstate *pst, *ptr;  /* the law's committed and trial state per segment            */
   double *pw;             /* trial: the law's work this increment, times pA             */
   size_t *kseg;           /* where each segment's entries start in map                   */

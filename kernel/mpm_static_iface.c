@@ -42,7 +42,8 @@
 
 void mpm_static_iface_free(mpm_static *q)
 {
-  void *f[] = {q->split, q->snode, q->sA, q->sseg, q->segstart, q->sorder, q->pA, q->pst, q->ptr, q->pw, q->kseg};
+  void *f[] = {q->split, q->snode, q->sA, q->sT, q->sseg, q->segstart, q->sorder, q->pA, q->pT, q->pst, q->ptr, q->pw,
+               q->kseg};
   for (size_t i = 0; i < sizeof f / sizeof f[0]; i++)
     free(f[i]);
 }
@@ -187,6 +188,25 @@ static int segments(mpm_static *q, const mpm_iface *f, const double *An)
   return 0;
 }
 
+/* The ties' weights: a split node off the staircase (A_I 0: uGIMP's reach, the corners
+ * beyond the faces) is still tied to its segment's mean, with the weight of half a
+ * particle's side; per segment their sum. */
+static int ties(mpm_static *q)
+{
+  const double tfloor = 0.5 * q->s->sc.h / sqrt((double)q->s->sc.ppc);
+  int n = q->nseg > 0 ? q->segstart[q->nseg] : 0;
+  q->sT = malloc((size_t)(n ? n : 1) * sizeof(double));
+  q->pT = calloc((size_t)(q->nseg ? q->nseg : 1), sizeof(double));
+  if (!q->sT || !q->pT)
+    return -1;
+  for (int i = 0; i < n; i++)
+    q->sT[i] = fmax(q->sA[i], tfloor);
+  for (int g = 0; g < q->nseg; g++)
+    for (int a = q->segstart[g]; a < q->segstart[g + 1]; a++)
+      q->pT[g] += q->sT[q->sorder[a]];
+  return 0;
+}
+
 mpm_status mpm_static_iface_setup(mpm_static *q, char *err, size_t errlen)
 {
   const mpm_sim *s = q->s;
@@ -205,7 +225,7 @@ mpm_status mpm_static_iface_setup(mpm_static *q, char *err, size_t errlen)
   }
   for (size_t nd = 0; ok && nd < nn; nd++)
     q->split[nd] = q->split[nd] == 3;
-  ok = ok && segments(q, f, An) == 0;
+  ok = ok && segments(q, f, An) == 0 && ties(q) == 0;
   free(An);
   if (!ok) {
     snprintf(err, errlen, "out of memory for the static interface (or no interface line)");
@@ -387,9 +407,7 @@ int mpm_static_seg_law(const mpm_material *m, const mpm_dstate *in, const double
 static void segment_eval(mpm_static *q, int g, int tangent, double *Ax, double J[3][2])
 {
   const mpm_material *m = &q->imat;
-  /* a split node off the staircase (A_I 0: uGIMP's reach, the corners beyond the faces)
-   * is still tied to its segment's mean, with the weight of half a particle's side */
-  const double Ag = q->pA[g], k0 = m->E1, tfloor = 0.5 * q->s->sc.h / sqrt((double)q->s->sc.ppc);
+  const double Ag = q->pA[g], Tg = q->pT[g], k0 = m->E1;
   const int a0 = q->segstart[g], a1 = q->segstart[g + 1];
   if (!(Ag > 0.0))
     return;
@@ -397,12 +415,10 @@ static void segment_eval(mpm_static *q, int g, int tangent, double *Ax, double J
    * ties pull toward, so that the ties' forces sum to zero over the segment (tied to the
    * A-weighted mean, the nodes off the staircase, T_I > A_I, put a net force on it that
    * the law did not carry: fig8's curve 0.0011 of Pmax off at h 8, now 4e-7) */
-  double Ws[2] = {0.0, 0.0}, ws[2] = {0.0, 0.0}, Wt[2] = {0.0, 0.0}, Tg = 0.0;
-  for (int a = a0; a < a1; a++)
-    Tg += fmax(q->sA[q->sorder[a]], tfloor);
+  double Ws[2] = {0.0, 0.0}, ws[2] = {0.0, 0.0}, Wt[2] = {0.0, 0.0};
   for (int a = a0; a < a1; a++) {
     const int i = q->sorder[a];
-    const double Ti = fmax(q->sA[i], tfloor);
+    const double Ti = q->sT[i];
     double W[2], w[2];
     jump(q, q->snode[i], W, w);
     for (int c = 0; c < 2; c++) {
@@ -430,7 +446,7 @@ static void segment_eval(mpm_static *q, int g, int tangent, double *Ax, double J
     for (int c = 0; c < 4; c++) {
       const int e = comp_eq(q, nd, c);
       if (e >= 0)
-        q->R[e] += (c < 2 ? -1.0 : 1.0) * (q->sA[i] * t[c % 2] + fmax(q->sA[i], tfloor) * k0 * (W[c % 2] - Wt[c % 2]));
+        q->R[e] += (c < 2 ? -1.0 : 1.0) * (q->sA[i] * t[c % 2] + q->sT[i] * k0 * (W[c % 2] - Wt[c % 2]));
     }
   }
   if (!tangent)
@@ -450,7 +466,7 @@ static void segment_eval(mpm_static *q, int g, int tangent, double *Ax, double J
   for (int a = a0; a < a1; a++)
     for (int b = a0; b < a1; b++) {
       const int ia = q->sorder[a], ib = q->sorder[b];
-      const double Ai = q->sA[ia], Ti = fmax(Ai, tfloor), r = q->sA[ib] / Ag, rt = fmax(q->sA[ib], tfloor) / Tg;
+      const double Ai = q->sA[ia], Ti = q->sT[ia], r = q->sA[ib] / Ag, rt = q->sT[ib] / Tg;
       for (int ca = 0; ca < 4; ca++)
         for (int cb = 0; cb < 4; cb++, k++) {
           /* d f_I / d W_J = A_I S A_J / A_g + T_I k0 (delta_IJ - T_J / T_g) */
@@ -481,6 +497,16 @@ static void segment_eval(mpm_static *q, int g, int tangent, double *Ax, double J
   }
 }
 
+/* U0 times the line's area opened so far: each segment's min(lambda, 1) (eq. 10; past
+ * separation lambda grows with the jump, which spends nothing more) over states st. */
+static double line_dissipation(const mpm_static *q, const mpm_dstate *st)
+{
+  double d = 0.0;
+  for (int g = 0; g < q->nseg; g++)
+    d += q->imat.U0 * fmin(st[g].lam, 1.0) * q->pA[g];
+  return d;
+}
+
 void mpm_static_iface_eval(mpm_static *q, int tangent, double *Ax, double *D, double *C)
 {
   const mpm_material *m = &q->imat;
@@ -492,30 +518,24 @@ void mpm_static_iface_eval(mpm_static *q, int tangent, double *Ax, double *D, do
     J[i][0] = a[i];
     J[i][1] = b[i];
   }
-  double Dl = 0.0, Cl = 0.0;
-  for (int g = 0; g < q->nseg; g++) {
+  for (int g = 0; g < q->nseg; g++)
     segment_eval(q, g, tangent, Ax, J);
-    Dl += m->U0 * fmin(q->ptr[g].lam, 1.0) * q->pA[g];
-    Cl += m->U0 * fmin(q->ptr[g].lam, 1.0) * q->pA[g];
-  }
-  *D = Dl;
-  *C = Cl;
+  *D = *C = line_dissipation(q, q->ptr); /* the control counts what D does */
 }
 
 void mpm_static_iface_commit(mpm_static *q)
 {
   mpm_sim *s = q->s;
   int open = 0, on = 0;
-  double w = 0.0, d = 0.0;
+  double w = 0.0;
   for (int g = 0; g < q->nseg; g++) {
     q->pst[g] = q->ptr[g];
     w += q->pw[g];
-    d += q->imat.U0 * fmin(q->pst[g].lam, 1.0) * q->pA[g];
     on += q->pA[g] > 0.0;
     open += q->pA[g] > 0.0 && q->pst[g].sep;
   }
   s->led.W_iface += w;
-  s->led.D_static = d;
+  s->led.D_static = line_dissipation(q, q->pst);
   if (on > 0 && open == on) /* every segment of the line has separated: the bar is cut */
     s->cut = 1;
 }
@@ -524,7 +544,8 @@ void mpm_static_iface_commit(mpm_static *q)
  * separated lets go in place, its traction turned into opening (eq. 58 with no jump
  * increment: ud += t / k0) and its lambda set to 1, so that D is U0 times the crack's
  * area; the work its remaining traction would have done (at most that share of U0 for
- * the segment) is not booked.  The bar is cut; the number of segments that let go. */
+ * the segment) is not booked.  The number of segments that let go; the bar is cut if
+ * any did. */
 int mpm_static_iface_sever(mpm_static *q)
 {
   const mpm_material *m = &q->imat;
@@ -542,12 +563,10 @@ int mpm_static_iface_sever(mpm_static *q)
     o->sep = 1;
     n++;
   }
-  double d = 0.0;
-  for (int g = 0; g < q->nseg; g++) {
-    q->ptr[g] = q->pst[g]; /* the trial from the committed state, not the failed increment's */
-    d += m->U0 * fmin(q->pst[g].lam, 1.0) * q->pA[g];
-  }
-  q->s->led.D_static = d;
+  if (n == 0)
+    return 0;
+  memcpy(q->ptr, q->pst, sizeof *q->ptr * (size_t)q->nseg); /* not the failed increment's trial */
+  q->s->led.D_static = line_dissipation(q, q->pst);
   q->s->cut = 1;
   return n;
 }

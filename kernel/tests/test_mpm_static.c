@@ -27,23 +27,12 @@
  * h 2 the free band's separation sequence stalls: docs/static.md, "Where it stops".) */
 static mpm_scene snap_scene(void)
 {
-  mpm_scene sc;
-  memset(&sc, 0, sizeof sc);
+  mpm_scene sc = tu_scene(MPM_DCOH_MODEL1, 90.0, 1.0, 10.0, 1.0, 1.0);
   sc.L = 48.0;
   sc.H = 8.0;
-  sc.E = 1024.0;
-  sc.nu = 0.25;
-  sc.rho = 1.0;
-  sc.model = MPM_DCOH_MODEL1;
-  sc.alpha_deg = 90.0;
-  sc.snf = 1.0;
-  sc.stf = 10.0;
   sc.U0 = 0.5 * 48.0 / 1024.0;
-  sc.s0 = 1.0;
-  sc.q = 1.0;
   sc.sep_threshold = 1.0;
   sc.le_mode = MPM_LE_CELL;
-  sc.le_factor = 1.0;
   sc.imp_factor = 0.9;
   sc.imp_stf_factor = 1.0;
   sc.imp_x = 24.0;
@@ -55,6 +44,20 @@ static mpm_scene snap_scene(void)
   sc.speed = 0.001;
   sc.end_delta = 0.2;
   sc.solver = MPM_SOLVER_STATIC;
+  return sc;
+}
+
+/* The same bar with the crack as a cohesive interface (decohesion.path = interface) on
+ * the line at alpha through the bar's centre. */
+static mpm_scene iface_scene(double alpha)
+{
+  mpm_scene sc = snap_scene();
+  sc.path = MPM_PATH_IFACE;
+  sc.shape = MPM_SHAPE_GIMP;
+  sc.fields = MPM_FIELDS_TWO;
+  sc.scheme = MPM_SCHEME_MUSL;
+  sc.imp_factor = 1.0; /* the line through the bar's centre places the crack */
+  sc.alpha_deg = alpha;
   return sc;
 }
 
@@ -159,12 +162,7 @@ static void test_mpm_static_snapback(void **state)
 static void test_mpm_static_interface_exact(void **state)
 {
   (void)state;
-  mpm_scene sc = snap_scene();
-  sc.path = MPM_PATH_IFACE;
-  sc.shape = MPM_SHAPE_GIMP;
-  sc.fields = MPM_FIELDS_TWO;
-  sc.scheme = MPM_SCHEME_MUSL;
-  sc.imp_factor = 1.0; /* the line through the bar's centre places the crack */
+  const mpm_scene sc = iface_scene(90.0);
   static trace t;
   mpm_energy e;
   run_static(&sc, &t, &e, 500);
@@ -198,13 +196,7 @@ static void test_mpm_static_interface_exact(void **state)
  * crosses it (both facet families projected on n: peak 29.533 against 31.531, -6.3 %). */
 static void run_inclined(double alpha, double h)
 {
-  mpm_scene sc = snap_scene();
-  sc.path = MPM_PATH_IFACE;
-  sc.shape = MPM_SHAPE_GIMP;
-  sc.fields = MPM_FIELDS_TWO;
-  sc.scheme = MPM_SCHEME_MUSL;
-  sc.imp_factor = 1.0;
-  sc.alpha_deg = alpha;
+  mpm_scene sc = iface_scene(alpha);
   sc.h = h;
   sc.end_delta = 0.4;
   static trace t;
