@@ -5,11 +5,10 @@
  * the same particles and laws.  Plane stress, small strain, unit thickness,
  * dimensionless units.
  *
- * A program fills an mpm_scene (the plain description of a run; verify/scene.h reads
- * one from a scene file), makes an opaque mpm_sim from it, steps it, and reads the
- * loads, energies and particles back through the calls below.  The kernel's own
- * structs (particles, grid, materials, the pure constitutive update) are private
- * (kernel/mpm_kernel.h).  The scene keys are documented in docs/scene-keys.md.
+ * A program fills an mpm_scene (a run's plain description; verify/scene.h reads one
+ * from a scene file), makes an opaque mpm_sim from it, steps it, and reads the loads,
+ * energies and particles back through the calls below.  The kernel's own structs are
+ * private (kernel/mpm_kernel.h); the scene keys: docs/scene-keys.md.
  */
 #ifndef DELAM_MPM_H
 #define DELAM_MPM_H
@@ -49,9 +48,12 @@ enum { MPM_PATH_FREE = 0, MPM_PATH_LINE = 1, MPM_PATH_IFACE = 2 };      /* decoh
 enum { MPM_SHEAR_EVEN = 0, MPM_SHEAR_CLOSING = 1 };                     /* decohesion.reversed_shear */
 enum { MPM_SHARE_STICK = 0, MPM_SHARE_LINE = 1 };                       /* decohesion.share */
 enum { MPM_SOLVER_EXPLICIT = 0, MPM_SOLVER_STATIC = 1 };                /* solver.type */
+enum { MPM_SPEC_BAR = 0, MPM_SPEC_DCB = 1, MPM_SPEC_ELS = 2, MPM_GRIPS_ROLLERS = 0, MPM_GRIPS_HELD = 1 };
 
 /* ---- scene: everything a run needs, as plain numbers (filled by verify/scene.c) ---- */
 typedef struct {
+  int specimen, grips;   /* MPM_SPEC_* (the body, its supports and load), MPM_GRIPS_*  */
+  double a0;             /* dcb, els: the pre-crack's length from x = 0 along y = H / 2 */
   double L, H;           /* bar length and height; the bar is [0,L] x [0,H]           */
   double E, nu, rho;     /* Young's modulus, Poisson's ratio, density                  */
   int model;             /* MPM_DCOH_*                                                 */
@@ -98,8 +100,8 @@ typedef struct {
   int solver;            /* MPM_SOLVER_*                                               */
 } mpm_scene;
 
-/* The loading's steady velocity field, which the particles start with (no wave from the
- * grip): -speed (L - x) / L on the bar, the grip's -speed left of it, 0 right of it. */
+/* The particles' starting velocity (no wave from the grip): -speed (L - x) / L on the
+ * bar, the grip's -speed left of it, 0 right of it. */
 static inline double mpm_scene_start_vx(const mpm_scene *sc, double x)
 {
   return x <= 0.0 ? -sc->speed : x >= sc->L ? 0.0 : -sc->speed * (sc->L - x) / sc->L;
@@ -141,6 +143,7 @@ typedef struct {
   double t;                /* time                                                     */
   double P_grip, P_fixed;  /* loads of the last step at the grip and the fixed end (tension > 0) */
   int cut;                 /* 1 once the band has cut the bar (a separated particle in every row) */
+  double crack_tip;        /* dcb, els: the crack front's x (a0 before growth); bar: NAN */
   long n_soften, n_separate, n_bracketed; /* decohesion updates by path; bracketed solves */
   long n_debris;           /* separated particles that left the grid                  */
   double time_split[MPM_T_N]; /* seconds in sort, p2g, grid, g2p, constitutive update */
@@ -193,10 +196,9 @@ void mpm_sim_particles(const mpm_sim *s, mpm_particle_view *v);
 mpm_status mpm_sim_prestress(mpm_sim *s, double sigma);
 mpm_status mpm_sim_separate(mpm_sim *s, size_t i);
 
-/* decohesion.path = interface, for pictures: the number of places on the line (0
- * without one), and place i's piece of it, (xy[0], xy[1]) to (xy[2], xy[3]) in reference
- * coordinates, with its segment's lambda and state (0 stuck, 1 softening, 2 open); 0 when
- * place i is off the bar. */
+/* decohesion.path = interface, for pictures: the places on the line (0: none), and place
+ * i's piece, (xy[0], xy[1]) to (xy[2], xy[3]) in reference coordinates, its segment's
+ * lambda and state (0 stuck, 1 softening, 2 open); 0 when place i is off the bar. */
 int mpm_iface_pieces(const mpm_sim *s);
 int mpm_iface_piece(const mpm_sim *s, int i, double xy[4], double *lam, int *state);
 
@@ -225,17 +227,16 @@ typedef struct {
   long backtracks;         /* Newton steps halved by the line search                   */
   long severed;            /* interface segments let go below 2 % of the peak load     */
   int nres;                /* the last increment's Newton iterations, and each one's   */
-  double res[32];          /*   largest residual force over the largest load (first 32) */
+  double res[32];          /* largest residual force over the largest load (first 32) */
   int mode;                /* MPM_QS_* of the last increment                           */
   int unknowns;            /* free degrees of freedom                                  */
   size_t nnz;              /* entries of the tangent                                   */
   double t_eval, t_factor, t_solve; /* seconds: laws and assembly, factorization, solves */
 } mpm_static_stats;
 typedef struct mpm_static mpm_static;
-/* On a sim made from a scene with solver = static; s stays owned by the caller and must
- * outlive q.  MPM_EINVAL and a message for what it cannot solve. */
+/* On a sim of a scene with solver = static, which must outlive q; MPM_EINVAL and why. */
 mpm_status mpm_static_alloc(mpm_sim *s, mpm_static **out, char *err, size_t errlen);
-/* MPM_EINVAL and the reason if the static solver refuses the scene (before any sim). */
+/* MPM_EINVAL and the reason if the static solver refuses the scene (before a sim). */
 mpm_status mpm_static_refusal(const mpm_scene *sc, char *err, size_t errlen);
 void mpm_static_free(mpm_static *q);
 mpm_status mpm_static_step(mpm_static *q, char *err, size_t errlen);

@@ -73,6 +73,7 @@
 #include "mpm_fields.h"
 #include "mpm.h"
 #include "mpm_kernel.h"
+#include "mpm_specimen.h"
 #include "mpm_phase.h"
 #include "mpm_node.h"
 #include "mpm_iface.h"
@@ -125,11 +126,8 @@ mpm_damping *mpm_damping_alloc(const mpm_sim *s)
     for (int j = 0; j < g->nny; j++)
       d->vbar[2 * mpm_grid_node(g, i, j)] = d->vbar2[2 * mpm_grid_node(g, i, j)] = vx;
   }
-  for (int q = 0; q < s->ngrip; q++)
-    d->held[s->grip[q]] |= 1;
-  for (int q = 0; q < s->nfixx; q++)
-    d->held[s->fixx[q]] |= 1;
-  d->held[s->fixy] |= 2;
+  for (int q = 0; q < s->nbc; q++)
+    d->held[s->bc[q].node] |= (uint8_t)(1u << s->bc[q].comp);
   return d;
 }
 
@@ -259,7 +257,7 @@ void mpm_damping_parts(mpm_sim *s)
   mpm_damping *d = s->damp;
   if (s->sc.damping_about != MPM_DAMP_PARTS || !s->cut || d->alpha == 0.0)
     return;
-  assert(s->ngrip > 0 && s->nfixx > 0); /* every scene holds both ends (mpm_sim_alloc) */
+  assert(s->nbc > 0); /* every scene holds its ends (mpm_sim_alloc) */
   mpm_particles *p = s->p;
   const double dy = s->sc.h / sqrt((double)s->sc.ppc);
   if (!d->rows_set) { /* the parts the cut made: every row holds a separated particle */

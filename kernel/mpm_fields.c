@@ -31,6 +31,7 @@
 #include <string.h>
 
 #include "mpm_kernel.h"
+#include "mpm_specimen.h"
 #include "mpm_fields.h"
 #include "mpm_gimp.h"
 #include "mpm_iface.h"
@@ -118,11 +119,8 @@ void mpm_fields_mark(mpm_sim *s)
       f->crk[2 * n[q] + 1] += w[q] * p->y[k];
     }
   }
-  for (int q = 0; q < s->ngrip; q++)
-    f->split[s->grip[q]] = 0;
-  for (int q = 0; q < s->nfixx; q++)
-    f->split[s->fixx[q]] = 0;
-  f->split[s->fixy] = 0;
+  for (int q = 0; q < s->nbc; q++)
+    f->split[s->bc[q].node] = 0;
   for (size_t n = 0; n < nn; n++)
     if (f->split[n]) {
       f->crk[2 * n] /= f->cw[n];

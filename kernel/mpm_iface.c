@@ -62,6 +62,7 @@
 #include <string.h>
 
 #include "mpm_kernel.h"
+#include "mpm_specimen.h"
 #include "mpm_fields.h"
 #include "mpm_gimp.h"
 #include "mpm_iface.h"
@@ -152,11 +153,8 @@ static int split_nodes(const mpm_sim *s, mpm_iface *f)
     fl->split[n] = fabs(f->nx * (X - lx) + f->ny * (Y - ly)) <= reach;
     f->seg[n] = seg_of(f, X, Y);
   }
-  for (int q = 0; q < s->ngrip; q++)
-    fl->split[s->grip[q]] = 0;
-  for (int q = 0; q < s->nfixx; q++)
-    fl->split[s->fixx[q]] = 0;
-  fl->split[s->fixy] = 0;
+  for (int q = 0; q < s->nbc; q++)
+    fl->split[s->bc[q].node] = 0;
   fl->nsplit = 0;
   for (size_t n = 0; n < nn; n++)
     fl->nsplit += fl->split[n];

@@ -324,9 +324,10 @@ struct mpm_sim {
   double grid_ox0;         /* the grid's x-origin at t = 0                              */
   mpm_particles *p;
   mpm_grid *g;
-  int *grip;   int ngrip;  /* nodes where v^L_x = -speed (left end)                     */
-  int *fixx;   int nfixx;  /* nodes where v^L_x = 0 (right end)                         */
-  int fixy;                /* the one node where v^L_y = 0 as well                      */
+  struct mpm_bc *bc;       /* the constrained node components (mpm_specimen.h), in the   */
+  int nbc;                 /*   order the step takes them                               */
+  double crack_tip;        /* x of the interface's farthest separated point (NAN: none)  */
+  double line_x, line_y;   /* a point of the interface's line (the specimen's)           */
   double t;                /* time                                                     */
   long step;               /* steps taken                                              */
   double P_grip, P_fixed;  /* loads (tension positive) of the last step                 */

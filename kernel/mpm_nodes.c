@@ -52,6 +52,7 @@
 #include "mpm_node.h"
 #include "mpm_nodes.h"
 #include "mpm_phase.h"
+#include "mpm_specimen.h"
 
 /* grid.node_mass = limited applies where the strain is taken from v^L (usl, usavg) on
  * bilinear shapes (uGIMP's gradient vanishes with its weight at the support's edge, so
@@ -212,15 +213,19 @@ void mpm_nodes_update(mpm_sim *s)
     lim ? grid_nodes(s, bfac, 0, 1) : grid_nodes(s, bfac, 0, 0);
   /* The constraints (sc.bc; mpm.h), serial in node order.  Tension is positive in both
    * loads. */
-  const double vg = -s->vgrip;
   const int bc = s->sc.bc;
-  double Rg = 0.0, Rf = 0.0;
+  double Rg = 0.0, Rf = 0.0; /* sum c R (the load's), sum R where fixed */
   hold_sums h = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-  for (int q = 0; q < s->ngrip; q++)
-    Rg += hold(bc, &g->nd[s->grip[q]], 0, vg, -s->dvgrip, bfac, lim ? lc : NULL, &h);
-  for (int q = 0; q < s->nfixx; q++)
-    Rf += hold(bc, &g->nd[s->fixx[q]], 0, 0.0, 0.0, bfac, lim ? lc : NULL, &h);
-  hold(bc, &g->nd[s->fixy], 1, 0.0, 0.0, bfac, lim ? lc : NULL, &h);
+  for (int q = 0; q < s->nbc; q++) {
+    const mpm_bc *b = &s->bc[q];
+    const int moves = b->c != 0.0;
+    const double R = hold(bc, &g->nd[b->node], b->comp, moves ? b->c * s->vgrip : 0.0, moves ? b->c * s->dvgrip : 0.0,
+                          bfac, lim ? lc : NULL, &h);
+    if (moves)
+      Rg += b->c * R;
+    if (b->fixed)
+      Rf += R;
+  }
   mpm_ledger *L = &s->led;
   L->s_A += h.A;
   L->s_K += h.K;
@@ -228,9 +233,9 @@ void mpm_nodes_update(mpm_sim *s)
   L->s_Bheld += h.Bheld;
   L->s_H += h.H;
   L->s_Wtrue += h.Wtrue;
-  s->P_grip = -Rg / dt;
+  s->P_grip = Rg / dt;
   s->P_fixed = Rf / dt;
-  const double W = (Rg / dt) * vg * dt; /* power of the grip's force; the fixed nodes do no work */
+  const double W = (Rg / dt) * s->vgrip * dt; /* power of the load; the nodes held at rest do no work */
   s->W_ext += W;
   s->led.s_Wbook += W;
 }
@@ -240,11 +245,14 @@ void mpm_nodes_update(mpm_sim *s)
 static void held_velocity_lanes(mpm_sim *s)
 {
   mpm_grid *g = s->g;
-  for (int q = 0; q < s->ngrip; q++)
-    g->nd[s->grip[q]].fx = -s->vgrip;
-  for (int q = 0; q < s->nfixx; q++)
-    g->nd[s->fixx[q]].fx = 0.0;
-  g->nd[s->fixy].fy = 0.0;
+  for (int q = 0; q < s->nbc; q++) {
+    const mpm_bc *b = &s->bc[q];
+    const double v = b->c != 0.0 ? b->c * s->vgrip : 0.0;
+    if (b->comp)
+      g->nd[b->node].fy = v;
+    else
+      g->nd[b->node].fx = v;
+  }
 }
 
 /* USF and USAVG: the projected nodal velocity v_i = p_i / m_i with the constraints
@@ -255,14 +263,14 @@ void mpm_nodes_start_velocity(mpm_sim *s, double frac)
 {
   mpm_grid *g = s->g;
   const double c = frac * s->sc.dt, mmin = MPM_MASS_EPS * s->mat[MPM_MAT_BAR].mp;
-  const double vg = -s->vgrip;
   /* held components first, while the lanes hold the forces: the loop below sums
    * -c f . p / m for them; B wants -c f . v_bc */
   double Bh = 0.0;
-  for (int q = 0; q < s->ngrip + s->nfixx + 1; q++) {
-    const int y = q == s->ngrip + s->nfixx;
-    const mpm_node *n = &g->nd[q < s->ngrip ? s->grip[q] : y ? s->fixy : s->fixx[q - s->ngrip]];
-    const double im = n->m > mmin ? 1.0 / n->m : 0.0, vbc = q < s->ngrip ? vg : 0.0;
+  for (int q = 0; q < s->nbc; q++) {
+    const mpm_bc *b = &s->bc[q];
+    const int y = b->comp;
+    const mpm_node *n = &g->nd[b->node];
+    const double im = n->m > mmin ? 1.0 / n->m : 0.0, vbc = b->c != 0.0 ? b->c * s->vgrip : 0.0;
     const double f = y ? n->fy : n->fx, v = (y ? n->py : n->px) * im;
     Bh += c * f * v - c * f * vbc;
   }
@@ -297,11 +305,10 @@ void mpm_nodes_musl_velocity(mpm_sim *s)
   /* held components, before their v' is set: -m dv . v' was summed with the
    * increment d in place of dv; take it out (d q = m d v') */
   double corr = 0.0;
-  for (int q = 0; q < s->ngrip; q++)
-    corr += g->nd[s->grip[q]].fx * g->nd[s->grip[q]].qx;
-  for (int q = 0; q < s->nfixx; q++)
-    corr += g->nd[s->fixx[q]].fx * g->nd[s->fixx[q]].qx;
-  corr += g->nd[s->fixy].fy * g->nd[s->fixy].qy;
+  for (int q = 0; q < s->nbc; q++) {
+    const mpm_node *n = &g->nd[s->bc[q].node];
+    corr += s->bc[q].comp ? n->fy * n->qy : n->fx * n->qx;
+  }
 #ifdef _OPENMP
 #pragma omp parallel for schedule(static) num_threads(s->nthreads)
 #endif

@@ -34,6 +34,8 @@ static const char *iface_rules(const mpm_scene *sc, char *err, size_t len)
              mpm_scheme_name(sc->scheme), sc->model, sc->q, sc->s0, sc->snf, sc->eta);
     return "decohesion.path";
   }
+  if (sc->specimen != MPM_SPEC_BAR) /* the split beams' line: specimen_rules */
+    return NULL;
   const double a = sc->alpha_deg * (3.14159265358979323846 / 180.0), c = cos(a) / sin(a);
   if (!(sin(a) > 0.0) || !(sc->imp_x - sc->imp_y * c > 0.0 && sc->imp_x - sc->imp_y * c < sc->L &&
                            sc->imp_x + (sc->H - sc->imp_y) * c > 0.0 && sc->imp_x + (sc->H - sc->imp_y) * c < sc->L)) {
@@ -45,13 +47,44 @@ static const char *iface_rules(const mpm_scene *sc, char *err, size_t len)
   return NULL;
 }
 
+/* The specimens' own needs (kernel/mpm_specimen.h). */
+static const char *const SPEC[] = {"bar", "dcb", "els"};
+static const char *specimen_rules(const mpm_scene *sc, char *err, size_t len)
+{
+  if (sc->specimen < MPM_SPEC_BAR || sc->specimen > MPM_SPEC_ELS) {
+    snprintf(err, len, "specimen.type must be bar, dcb or els");
+    return "specimen.type";
+  }
+  if (sc->grips != MPM_GRIPS_ROLLERS && (sc->grips != MPM_GRIPS_HELD || sc->specimen != MPM_SPEC_BAR)) {
+    snprintf(err, len, "specimen.grips: held is the bar's (here: type %s; allowed: rollers)", W(sc->specimen, SPEC));
+    return "specimen.grips";
+  }
+  if (sc->specimen == MPM_SPEC_BAR)
+    return NULL;
+  /* the split beams: the interface along y = H / 2 on a node row, statically */
+  const double rows = 0.5 * sc->H / sc->h;
+  if (sc->solver != MPM_SOLVER_STATIC || !sc->model || sc->path != MPM_PATH_IFACE || sc->alpha_deg != 0.0 ||
+      fabs(rows - round(rows)) > 1e-9 * rows) {
+    snprintf(err, len, "specimen.type: %s needs solver.type = static, decohesion.path = interface with model 1, "
+             "alpha = 0 and H / 2 on a node row (here: solver %s, path %s, model %d, alpha %g, H / 2 / h = %g)",
+             W(sc->specimen, SPEC), sc->solver == MPM_SOLVER_STATIC ? "static" : "explicit", W(sc->path, PATH),
+             sc->model, sc->alpha_deg, rows);
+    return "specimen.type";
+  }
+  if (!(sc->a0 > 0.0 && sc->a0 < sc->L)) {
+    snprintf(err, len, "specimen.a0: %g must be in (0, L = %g): the pre-crack's length", sc->a0, sc->L);
+    return "specimen.a0";
+  }
+  return NULL;
+}
+
 mpm_status mpm_scene_rules(const mpm_scene *sc, const char **key, char *err, size_t len)
 {
-  const char *k = NULL;
+  const char *k = specimen_rules(sc, err, len);
   /* the viscous stress is measured stable with MUSL only (usl: fig8.ini's beta = h / c
    * throws a particle off the grid after the cut at h 4, 1 ppc; usf, usavg: two strain
    * passes) */
-  if (sc->damping_beta > 0.0 && sc->scheme != MPM_SCHEME_MUSL) {
+  if (!k && sc->damping_beta > 0.0 && sc->scheme != MPM_SCHEME_MUSL) {
     snprintf(err, len, "time.damping_beta: %g needs time.scheme = musl (here: %s; allowed: 0 with %s)", sc->damping_beta,
              mpm_scheme_name(sc->scheme), mpm_scheme_name(sc->scheme));
     k = "time.damping_beta";

@@ -1,12 +1,9 @@
 /*
  * mpm_sim.c - setting up a run from a scene: the grid (only as large as the motion
  * needs), particles on a regular n x n subdivision of each cell, the materials with
- * the imperfection, the boundary-condition node lists (the sums read back: mpm_view.c).
- *
- * Loading (the paper, sec. 4.4, Fig. 5; docs/model.md sec. 6, "the grip"): the left
- * end x = 0 is gripped in x only by a rigid head moving at -speed, modelled as
- * stress-free particles beyond the end whose nodes are gripped (mpm.h, MPM_MAT_HEAD);
- * the right end x = L is held in x, and its mid-height node in y.
+ * the imperfection, and the specimen's constrained node components (its row of the
+ * table, mpm_specimen.h: the paper's bar and its rigid head in mpm_spec_bar.c, the
+ * split beams in mpm_spec_beam.c; the loads they give are read back in mpm_view.c).
  */
 #include <math.h>
 #include <stdio.h>
@@ -19,6 +16,7 @@
 #include "mpm_gimp.h"
 #include "mpm_iface.h"
 #include "mpm_phase.h"
+#include "mpm_specimen.h"
 
 const char *mpm_strerror(mpm_status s)
 {
@@ -129,8 +127,7 @@ void mpm_sim_free(mpm_sim *s)
   free(s->count);
   free(s->scratch);
   free(s->scratch8);
-  free(s->grip);
-  free(s->fixx);
+  free(s->bc);
   free(s->rowsep);
   free(s->led_part);
   mpm_band_free(s->band);
@@ -138,41 +135,33 @@ void mpm_sim_free(mpm_sim *s)
   free(s);
 }
 
-/* The run's layout: the bar's cells, the grid's padding, the particle counts, the grip. */
-typedef struct {
-  double h;
-  int cx, cy, pad, padl, n1, grip0, ngrip, nfixcol;
-  size_t nbar, nhead, np;
-} layout;
-
-static layout layout_of(const mpm_scene *sc)
+/* The run's layout: the body's cells, the grid's padding, the particle counts. */
+static mpm_layout layout_of(const mpm_scene *sc)
 {
-  layout l;
+  mpm_layout l;
   const double h = l.h = sc->h;
   l.cx = (int)whole_cells(sc->L, h);
   l.cy = (int)whole_cells(sc->H, h);
   /* The grid is only as large as the motion needs: margin all round (at least one
    * cell), and on the left the grip's travel to end_delta besides. */
   l.pad = 1 + (int)ceil(sc->margin / h - 1e-9);
-  l.padl = l.pad + MPM_HEAD_CELLS + (int)ceil(sc->end_delta / h - 1e-9);
+  int left;
+  mpm_specimen_of(sc)->left_cells(sc, &left, &l.headc);
+  l.padl = l.pad + left;
   l.n1 = (int)lround(sqrt((double)sc->ppc));
   l.nbar = (size_t)l.cx * (size_t)l.cy * (size_t)sc->ppc;
-  l.nhead = sc->head == MPM_HEAD_NONE ? 0 : (size_t)MPM_HEAD_CELLS * (size_t)l.cy * (size_t)sc->ppc;
+  l.nhead = (size_t)l.headc * (size_t)l.cy * (size_t)sc->ppc;
   l.np = l.nbar + l.nhead;
-  l.grip0 = sc->head == MPM_HEAD_NONE ? l.padl : l.pad; /* first gripped node column */
-  l.ngrip = (l.padl - l.grip0 + 1) * (l.cy + 1);
-  /* uGIMP: the support of the bar's last particles reaches the node column beyond
-   * x = L, which is held too (the fixed support is a wall, like the head on the left). */
-  l.nfixcol = sc->shape == MPM_SHAPE_GIMP ? 2 : 1;
   return l;
 }
 
 /* The grid and the arrays; 0 if one could not be made (mpm_sim_free frees the rest). */
-static int alloc_arrays(mpm_sim *s, const mpm_scene *sc, const layout *l, int nthreads)
+static int alloc_arrays(mpm_sim *s, const mpm_scene *sc, const mpm_layout *l, int nthreads)
 {
-  const int cy = l->cy, ngrip = l->ngrip, nfixcol = l->nfixcol;
+  const int cy = l->cy;
   const size_t nhead = l->nhead, np = l->np;
   s->g = mpm_grid_alloc(l->padl + l->cx + l->pad, cy + 2 * l->pad, -l->padl * l->h, -l->pad * l->h, l->h);
+  s->nbc = s->g ? mpm_specimen_of(sc)->bcs(s, l, NULL) : 0;
   mpm_threads_init(&s->thr, nthreads, np);
   s->nthreads = s->thr.use;
   s->p = mpm_particles_alloc(np);
@@ -184,12 +173,11 @@ static int alloc_arrays(mpm_sim *s, const mpm_scene *sc, const layout *l, int nt
   s->dws = calloc((size_t)s->thr.nmax, sizeof *s->dws);
   s->defer = calloc((size_t)s->thr.nmax, sizeof *s->defer);
   s->head = malloc((nhead ? nhead : 1) * sizeof *s->head);
-  s->grip = malloc(sizeof(int) * (size_t)ngrip);
-  s->fixx = malloc(sizeof(int) * (size_t)(nfixcol * (cy + 1)));
+  s->bc = s->g ? malloc(sizeof *s->bc * (size_t)(s->nbc ? s->nbc : 1)) : NULL;
   s->nrow = cy * (int)lround(sqrt((double)sc->ppc));
   s->rowsep = malloc((size_t)s->nrow);
   s->cut_seen = -1; /* count at the first step: a scene may start with separated particles */
-  int ok = s->g && s->p && s->dws && s->defer && s->head && s->grip && s->fixx && s->rowsep;
+  int ok = s->g && s->p && s->dws && s->defer && s->head && s->bc && s->rowsep;
   if (ok) {
     const size_t ncell = (size_t)s->g->ncx * (size_t)s->g->ncy;
     s->nstrip = (s->g->ncx + MPM_STRIP - 1) / MPM_STRIP;
@@ -212,7 +200,7 @@ static int alloc_arrays(mpm_sim *s, const mpm_scene *sc, const layout *l, int nt
 }
 
 /* Le (decohesion.Le); ROW and ZONE: the band's rows as well.  0 if out of memory. */
-static int le_setup(mpm_sim *s, const mpm_scene *sc, const layout *l, double *Le_out)
+static int le_setup(mpm_sim *s, const mpm_scene *sc, const mpm_layout *l, double *Le_out)
 {
   const double h = l->h;
   const int n1 = l->n1;
@@ -260,7 +248,7 @@ static void materials(mpm_sim *s, const mpm_scene *sc, double Le)
 }
 
 /* The bar's particles; returns the imperfection's (the particle nearest imp_x, imp_y). */
-static size_t place_bar(mpm_sim *s, const mpm_scene *sc, const layout *l)
+static size_t place_bar(mpm_sim *s, const mpm_scene *sc, const mpm_layout *l)
 {
   const double h = l->h;
   const int n1 = l->n1, cx = l->cx, cy = l->cy;
@@ -294,7 +282,7 @@ static size_t place_bar(mpm_sim *s, const mpm_scene *sc, const layout *l)
 
 /* The imperfection's material and the crack's path (decohesion.path); MPM_EINVAL when
  * share = line cannot be laid on a node column. */
-static mpm_status mark_paths(mpm_sim *s, const mpm_scene *sc, const layout *l, size_t imp, char *err, size_t errlen)
+static mpm_status mark_paths(mpm_sim *s, const mpm_scene *sc, const mpm_layout *l, size_t imp, char *err, size_t errlen)
 {
   mpm_particles *p = s->p;
   const double h = l->h, d = h / l->n1, a = sc->alpha_deg * (3.14159265358979323846 / 180.0);
@@ -338,7 +326,7 @@ static mpm_status mark_paths(mpm_sim *s, const mpm_scene *sc, const layout *l, s
   return MPM_OK;
 }
 
-static void place_head(mpm_sim *s, const mpm_scene *sc, const layout *l)
+static void place_head(mpm_sim *s, const mpm_scene *sc, const mpm_layout *l)
 {
   mpm_particles *p = s->p;
   const double d = l->h / l->n1, mp = s->mat[MPM_MAT_BAR].mp;
@@ -348,7 +336,7 @@ static void place_head(mpm_sim *s, const mpm_scene *sc, const layout *l)
    * the grip. */
   size_t k = nbar;
   for (int j = 0; nhead && j < cy * n1; j++)
-    for (int i = -MPM_HEAD_CELLS * n1; i < 0; i++, k++) {
+    for (int i = -l->headc * n1; i < 0; i++, k++) {
       p->x[k] = p->x0[k] = (i + 0.5) * d;
       p->y[k] = p->y0[k] = (j + 0.5) * d;
       p->vx[k] = mpm_scene_start_vx(sc, p->x[k]); /* the head: the grip's speed */
@@ -356,26 +344,6 @@ static void place_head(mpm_sim *s, const mpm_scene *sc, const layout *l)
       p->V[k] = d * d;
       p->mat[k] = MPM_MAT_HEAD;
     }
-}
-
-static void bc_nodes(mpm_sim *s, const layout *l)
-{
-  const int grip0 = l->grip0, padl = l->padl, pad = l->pad, cy = l->cy, cx = l->cx, nfixcol = l->nfixcol;
-  const int ngrip = l->ngrip;
-  /* Boundary nodes: every column from the head's travel to x = 0 is gripped (rows
-   * 0..H); the column x = L is fixed in x, its mid-height node in y as well. */
-  const mpm_grid *g = s->g;
-  int q = 0;
-  for (int i = grip0; i <= padl; i++)
-    for (int j = 0; j <= cy; j++)
-      s->grip[q++] = (int)mpm_grid_node(g, i, j + pad);
-  for (int c = 0; c < nfixcol; c++)
-    for (int j = 0; j <= cy; j++)
-      s->fixx[c * (cy + 1) + j] = (int)mpm_grid_node(g, padl + cx + c, j + pad);
-  s->grid_ox0 = g->ox;
-  s->ngrip = ngrip;
-  s->nfixx = nfixcol * (cy + 1);
-  s->fixy = s->fixx[cy / 2];
 }
 
 /* Fails with MPM_ENOMEM and a message. */
@@ -398,7 +366,8 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
   s->sc = *sc;
   s->vgrip = sc->speed;
   s->ctl_D0 = INFINITY; /* dissipation control: the target starts at D (mpm_control.c) */
-  const layout l = layout_of(sc);
+  const mpm_layout l = layout_of(sc);
+  const mpm_specimen_type *spec = mpm_specimen_of(sc);
   if (!alloc_arrays(s, sc, &l, nthreads)) {
     mpm_sim_free(s);
     snprintf(err, errlen, "out of memory for %zu particles", l.np);
@@ -415,8 +384,12 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
     return st;
   }
   place_head(s, sc, &l);
-  bc_nodes(s, &l);
-  if (sc->model && sc->path == MPM_PATH_IFACE && !(s->g->fld->ifc = mpm_iface_alloc(s, s->p->x0[imp], s->p->y0[imp])))
+  s->grid_ox0 = s->g->ox;
+  s->nbc = spec->bcs(s, &l, s->bc);
+  s->crack_tip = spec->precrack ? sc->a0 : NAN;
+  spec->line_point(s, imp, &s->line_x, &s->line_y);
+  if (sc->model && sc->path == MPM_PATH_IFACE && spec->explicit_iface &&
+      !(s->g->fld->ifc = mpm_iface_alloc(s, s->line_x, s->line_y)))
     return nomem(s, "the interface's arrays", err, errlen);
   if (sc->damping > 0.0 && !(s->damp = mpm_damping_alloc(s)))
     return nomem(s, "the damping's node arrays", err, errlen);

@@ -37,6 +37,7 @@
 #include <time.h>
 
 #include "mpm_kernel.h"
+#include "mpm_specimen.h"
 #include "mpm_static.h"
 
 #define MPM_QS_FTOL 1e-9
@@ -65,7 +66,7 @@ void mpm_static_free(mpm_static *q)
 {
   if (!q)
     return;
-  void *f[] = {q->pid, q->cnt, q->node, q->N, q->Gx, q->Gy, q->eq, q->held, q->map, q->Un, q->Ut, q->R, q->kfd,
+  void *f[] = {q->pid, q->cnt, q->node, q->N, q->Gx, q->Gy, q->eq, q->held, q->coef, q->map, q->Un, q->Ut, q->R, q->kfd,
                q->ga, q->x1, q->x2, q->du, q->pdir, q->tst, q->tw, q->tpath};
   for (size_t i = 0; i < sizeof f / sizeof f[0]; i++)
     free(f[i]);
@@ -120,8 +121,7 @@ mpm_status mpm_static_alloc(mpm_sim *s, mpm_static **out, char *err, size_t errl
     return st;
   }
   const mpm_scene *sc = &s->sc;
-  const double sa = fabs(sin(sc->alpha_deg * (3.14159265358979323846 / 180.0)));
-  q->Dref = sc->model != MPM_DCOH_NONE ? sc->U0 * sc->H / fmax(sa, 1e-3) : 1.0;
+  q->Dref = sc->model != MPM_DCOH_NONE ? mpm_specimen_of(sc)->dis_full(sc) : 1.0;
   q->Fref = 1e-3 * fmin(sc->snf, sc->stf) * sc->H;
   q->step_d = 1e-3 * sc->L * fmin(sc->snf, sc->stf) / sc->E; /* the first, elastic, increment */
   q->step_D = 1e-3 * q->Dref;

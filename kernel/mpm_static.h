@@ -27,7 +27,10 @@ mpm_status mpm_lin_solve(mpm_lin *l, const double *b, double *x);
 
 /* Degrees of freedom: each node's x and y; eq >= 0 is the unknown's row, else the
  * component is held (MPM_DOF_*) or the node carries no particle. */
-enum { MPM_DOF_OFF = -1, MPM_DOF_GRIP = -2, MPM_DOF_HELD = -3 };
+/* GRIP: held at c delta with c < 0 (the bar's grip pulls back), PUSH: c > 0; every
+ * driven component of a specimen has the same |c| (mpm_static_number checks it), so
+ * the sums of the load and of d R / d delta take +-f and are scaled by |c| once. */
+enum { MPM_DOF_OFF = -1, MPM_DOF_GRIP = -2, MPM_DOF_HELD = -3, MPM_DOF_PUSH = -4 };
 
 struct mpm_static {
   mpm_sim *s;             /* borrowed: scene, materials, particles, grid, loads, energies */
@@ -42,6 +45,9 @@ struct mpm_static {
                              the node is split; node[] holds slots                      */
   int *eq;                /* 2 nslot: the unknown of each component, or MPM_DOF_*         */
   double *held;           /* 2 nslot: the value of a held component (MPM_DOF_HELD)        */
+  double *coef;           /* 2 nslot: a driven component's value per unit delta, c       */
+  double cmag;            /* |c| of every driven component                               */
+  int drv2;               /* 1: a driven component other than x at c < 0 (driven_load)   */
   int nfree;              /* unknowns                                                   */
   int pinned;             /* 1 once the cut part's vertical rigid motion is held          */
   int *map;               /* per particle, (2 MPM_ST_MAX)^2 positions in the values, -1 off */
@@ -52,7 +58,7 @@ struct mpm_static {
   double dlast;           /* the last increment's change of delta                       */
   /* vectors over the unknowns */
   double *R, *kfd, *ga, *x1, *x2, *du;
-  double gb;              /* d Ct / d delta through the gripped components               */
+  double gb;              /* d Ct / d delta through the driven components                */
   /* the particles' trial state (np each) and what the increment booked */
   mpm_dstate *tst;        /* each particle's state after the update                      */
   double *tw;             /* ... the traction work it booked                             */
@@ -92,6 +98,9 @@ struct mpm_static {
   mpm_dstate *pst, *ptr;  /* the law's committed and trial state per segment            */
   double *pw;             /* trial: the law's work this increment, times pA             */
   size_t *kseg;           /* where each segment's entries start in map                   */
+  double *segx;           /* per segment: x of its first node                           */
+  double *pD;             /* ... the area its dissipation counts (pA; 0 on a pre-crack)   */
+  uint8_t *spre;          /* per segment: 1 on the pre-crack (open from the start)       */
   mpm_material imat;      /* the law as a material of the update: E1 = G = k0, E2 = 0, Le 1 */
 };
 

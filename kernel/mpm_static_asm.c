@@ -20,6 +20,7 @@
 
 #include "mpm_kernel.h"
 #include "mpm_shape.h"
+#include "mpm_specimen.h"
 #include "mpm_static.h"
 
 /* One particle's stencil: nodes with a weight or a gradient, at reference (x0, y0). */
@@ -82,11 +83,12 @@ mpm_status mpm_static_setup(mpm_static *q, char *err, size_t errlen)
   q->Gy = malloc(np * M * sizeof(double));
   q->eq = malloc(2 * q->nslot * sizeof *q->eq);
   q->held = calloc(2 * q->nslot, sizeof(double));
+  q->coef = calloc(2 * q->nslot, sizeof(double));
   q->Un = calloc(2 * q->nslot, sizeof(double));
   q->Ut = calloc(2 * q->nslot, sizeof(double));
   q->tst = malloc((np ? np : 1) * sizeof *q->tst);
   double **t[] = {&q->tw};
-  int ok = q->pid && q->cnt && q->node && q->N && q->Gx && q->Gy && q->eq && q->held && q->Un && q->Ut;
+  int ok = q->pid && q->cnt && q->node && q->N && q->Gx && q->Gy && q->eq && q->held && q->coef && q->Un && q->Ut;
   for (size_t i = 0; ok && i < sizeof t / sizeof t[0]; i++)
     ok = (*t[i] = malloc((np ? np : 1) * sizeof(double))) != NULL;
   ok = ok && q->tst && (q->tpath = malloc(np ? np : 1)) && (q->dw = mpm_dwork_alloc());
@@ -116,30 +118,32 @@ mpm_status mpm_static_number(mpm_static *q, char *err, size_t errlen)
   for (size_t c = 0; c < q->np; c++)
     for (int a = 0; a < q->cnt[c]; a++)
       q->eq[2 * (size_t)q->node[c * M + (size_t)a]] = q->eq[2 * (size_t)q->node[c * M + (size_t)a] + 1] = 0;
-  /* a held node holds both its slots */
-  for (size_t o = 0; o < ns; o += nn) {
-    for (int i = 0; i < s->ngrip; i++)
-      if (q->eq[2 * (o + (size_t)s->grip[i])] != MPM_DOF_OFF)
-        q->eq[2 * (o + (size_t)s->grip[i])] = MPM_DOF_GRIP;
-    for (int i = 0; i < s->nfixx; i++)
-      if (q->eq[2 * (o + (size_t)s->fixx[i])] != MPM_DOF_OFF)
-        q->eq[2 * (o + (size_t)s->fixx[i])] = MPM_DOF_HELD;
-    if (q->eq[2 * (o + (size_t)s->fixy) + 1] != MPM_DOF_OFF)
-      q->eq[2 * (o + (size_t)s->fixy) + 1] = MPM_DOF_HELD;
+  /* the specimen's constrained components: a node's both slots, or where the node is
+   * split and the condition is one side's, that side's slot */
+  for (int i = 0; i < s->nbc; i++) {
+    const mpm_bc *b = &s->bc[i];
+    for (size_t o = 0; o < ns; o += nn) {
+      if (b->side != MPM_BC_ANY && ns > nn && (o == 0) != (b->side == MPM_BC_NEAR))
+        continue;
+      const size_t k = 2 * (o + (size_t)b->node) + b->comp;
+      if (q->eq[k] == MPM_DOF_OFF)
+        continue;
+      q->eq[k] = b->c < 0.0 ? MPM_DOF_GRIP : b->c > 0.0 ? MPM_DOF_PUSH : MPM_DOF_HELD;
+      q->coef[k] = b->c;
+      if (b->c != 0.0 && q->cmag != 0.0 && fabs(b->c) != q->cmag) {
+        snprintf(err, errlen, "static solver: the specimen drives its components by %g and %g times delta; it must "
+                 "drive them all by the same magnitude", q->cmag, fabs(b->c));
+        return MPM_EINVAL;
+      }
+      if (b->c != 0.0)
+        q->cmag = fabs(b->c);
+      q->drv2 |= b->c > 0.0 || (b->c < 0.0 && b->comp == 1);
+    }
   }
   if (q->pinned) {
-    /* the gripped part's vertical rigid motion, free once the bar is cut: held at the
-     * gripped node nearest mid-height, where it is now (no force: the part is unloaded) */
-    int best = -1;
-    double bd = INFINITY;
-    for (int i = 0; i < s->ngrip; i++) {
-      const size_t n = (size_t)s->grip[i];
-      const double y = s->g->oy + s->sc.h * (double)(n % (size_t)s->g->nny), d = fabs(y - 0.5 * s->sc.H);
-      if (q->eq[2 * n] == MPM_DOF_GRIP && d < bd) {
-        bd = d;
-        best = (int)n;
-      }
-    }
+    /* the cut part's vertical rigid motion, free once the body is cut: held where it is
+     * now (no force: the part is unloaded) */
+    const int best = mpm_specimen_of(&s->sc)->pin_node(s, q->eq);
     for (size_t o = 0; best >= 0 && o < ns; o += nn)
       if (q->eq[2 * (o + (size_t)best) + 1] != MPM_DOF_OFF) {
         q->eq[2 * (o + (size_t)best) + 1] = MPM_DOF_HELD;
@@ -230,7 +234,9 @@ static void particle_tangent(mpm_static *q, size_t c, const mpm_material *m, con
       if (eb >= 0)
         q->ga[eb] += gd;
       else if (eb == MPM_DOF_GRIP)
-        q->gb -= gd; /* u = -delta there */
+        q->gb -= gd; /* u = c delta there, the sum scaled by |c| in eval */
+      else if (eb == MPM_DOF_PUSH)
+        q->gb += gd;
     }
     for (int a = 0; a < cn; a++) {
       const double kx = V * (Gx[a] * sx + Gy[a] * sxy), ky = V * (Gy[a] * sy + Gx[a] * sxy);
@@ -242,14 +248,43 @@ static void particle_tangent(mpm_static *q, size_t c, const mpm_material *m, con
           Ax[kx_at] += kx;
         if (ky_at >= 0)
           Ax[ky_at] += ky;
-      } else if (eb == MPM_DOF_GRIP) { /* d R / d delta = -K_{f,grip} */
+      } else if (eb == MPM_DOF_GRIP) { /* d R / d delta = c K_{f,driven} */
         if (ex >= 0)
           q->kfd[ex] -= kx;
         if (ey >= 0)
           q->kfd[ey] -= ky;
+      } else if (eb == MPM_DOF_PUSH) {
+        if (ex >= 0)
+          q->kfd[ex] += kx;
+        if (ey >= 0)
+          q->kfd[ey] += ky;
       }
     }
   }
+}
+
+/* The load's share of the driven components other than the x ones pulled back (the
+ * bar's grip, summed in mpm_static_eval's loop): +-f at each, from the trial stresses.
+ * A pass of its own, so that the particle loop keeps the arithmetic it had before. */
+static double driven_load(const mpm_static *q)
+{
+  const size_t M = MPM_ST_MAX;
+  double P = 0.0;
+  for (size_t c = 0; c < q->np; c++) {
+    const int *nd = q->node + c * M;
+    const double *Gx = q->Gx + c * M, *Gy = q->Gy + c * M, V = q->s->p->V[q->pid[c]];
+    const mpm_dstate *o = &q->tst[c];
+    for (int a = 0; a < q->cnt[c]; a++) {
+      const int ex = q->eq[2 * nd[a]], ey = q->eq[2 * nd[a] + 1];
+      if (ex == MPM_DOF_PUSH)
+        P += V * (Gx[a] * o->sxx + Gy[a] * o->sxy);
+      if (ey == MPM_DOF_PUSH)
+        P += V * (Gy[a] * o->syy + Gx[a] * o->sxy);
+      else if (ey == MPM_DOF_GRIP)
+        P -= V * (Gy[a] * o->syy + Gx[a] * o->sxy);
+    }
+  }
+  return P;
 }
 
 mpm_status mpm_static_eval(mpm_static *q, int tangent)
@@ -260,8 +295,8 @@ mpm_status mpm_static_eval(mpm_static *q, int tangent)
   const size_t M = MPM_ST_MAX, ns = q->nslot;
   double *Ut = q->Ut, *Ax = tangent ? mpm_lin_values(q->lin) : NULL;
   for (size_t i = 0; i < 2 * ns; i++)
-    if (q->eq[i] == MPM_DOF_GRIP)
-      Ut[i] = -q->dt;
+    if (q->eq[i] == MPM_DOF_GRIP || q->eq[i] == MPM_DOF_PUSH)
+      Ut[i] = q->coef[i] * q->dt;
     else if (q->eq[i] == MPM_DOF_HELD)
       Ut[i] = q->held[i];
   memset(q->R, 0, sizeof(double) * (size_t)q->nfree);
@@ -320,6 +355,15 @@ mpm_status mpm_static_eval(mpm_static *q, int tangent)
     mpm_static_iface_eval(q, tangent, Ax, &Dl, &Cl);
     D += Dl;
     C += Cl;
+  }
+  if (q->drv2) /* the driven components other than x pulled back */
+    Pg += driven_load(q);
+  if (q->cmag != 1.0 && q->cmag != 0.0) { /* the sums of c f: +-f above, times |c| */
+    Pg *= q->cmag;
+    for (int i = 0; tangent && i < q->nfree; i++)
+      q->kfd[i] *= q->cmag;
+    if (tangent)
+      q->gb *= q->cmag;
   }
   q->Pg = Pg;
   q->Pf = Pf;

@@ -9,7 +9,8 @@
  * side's sum of V grad N = the integral of N_I n_s over the near side's boundary, where
  * the sides' particle squares meet in a staircase: on an inclined line a_I does not lie
  * along n node by node, only summed along the line.  So the law acts on segments of
- * MPM_QS_SEG cells along the line, on their nodes' mean jump weighted by the staircase's
+ * a few cells along the line (the specimen's seg_cells: 3 on the bar, docs/static.md; one
+ * node on a line along a node row), on their nodes' mean jump weighted by the staircase's
  * projected share A_I (facet_areas), and node I carries A_I t(W_seg) + T_I k0 (W_I - W_seg)
  * (T_I = A_I, at least half a particle's side; W_seg the A-weighted mean for the law, the
  * T-weighted one for the ties): the segment's traction, and a stiff tie on its node's
@@ -35,17 +36,63 @@
 #include "mpm_kernel.h"
 #include "mpm_fields.h"
 #include "mpm_iface.h"
+#include "mpm_specimen.h"
 #include "mpm_static.h"
 
 #define MPM_QS_TIE 1e6    /* the tie's stiffness, k0 L / E per unit area                  */
-#define MPM_QS_SEG 3.0    /* a segment's length along the line, in cells (docs/static.md)  */
 
 void mpm_static_iface_free(mpm_static *q)
 {
   void *f[] = {q->split, q->snode, q->sA, q->sT, q->sseg, q->segstart, q->sorder, q->pA, q->pT, q->pst, q->ptr, q->pw,
-               q->kseg};
+               q->kseg, q->segx, q->pD, q->spre};
   for (size_t i = 0; i < sizeof f / sizeof f[0]; i++)
     free(f[i]);
+}
+
+/* A line along x (the split beams, mpm_spec_beam.c): the y-facing facets between the
+ * sides' particle squares, each of length d, into A_I by the nodes' bilinear weights at
+ * the facet's midpoint.  Where the line starts open (a pre-crack) its nodes take every
+ * facet (their contact's area), and the bonded nodes only the bonded facets, so that
+ * the bonded shares sum to the bonded length (the crack tip's node carries the half of
+ * its share that lies ahead of the tip). */
+static int column_facets(const mpm_static *q, const mpm_iface *f, const signed char *side, int nx, int ny, double d,
+                         double *A)
+{
+  const mpm_sim *s = q->s;
+  const mpm_grid *g = s->g;
+  const double h = s->sc.h;
+  const mpm_specimen_type *spec = mpm_specimen_of(&s->sc);
+  double *Ab = calloc(q->nn, sizeof(double));
+  if (!Ab || !(fabs(f->ny) > 1e-12)) {
+    free(Ab);
+    return -1;
+  }
+  for (int j = 0; j + 1 < ny; j++)
+    for (int i = 0; i < nx; i++) {
+      const signed char s0 = side[(size_t)j * (size_t)nx + (size_t)i], s1 = side[(size_t)(j + 1) * (size_t)nx + (size_t)i];
+      if (s0 < 0 || s1 < 0 || s1 == s0) /* the +y neighbour */
+        continue;
+      const double w = d * (s0 == 0 ? 1.0 : -1.0) / f->ny, xm = (i + 0.5) * d, ym = (j + 1.0) * d;
+      const int open = spec->precrack && spec->precrack(&s->sc, xm, ym);
+      const double fx = (xm - s->grid_ox0) / h, fy = (ym - g->oy) / h;
+      const int ci = (int)floor(fx), cj = (int)floor(fy);
+      const double rx = fx - ci, ry = fy - cj;
+      for (int b = 0; b < 2; b++)
+        for (int a = 0; a < 2; a++) {
+          const size_t nd = mpm_grid_node(g, ci + a, cj + b);
+          const double wn = w * (a ? rx : 1.0 - rx) * (b ? ry : 1.0 - ry);
+          A[nd] += wn;
+          if (!open)
+            Ab[nd] += wn;
+        }
+    }
+  for (size_t nd = 0; nd < q->nn; nd++) {
+    const double x = s->grid_ox0 + h * (double)(nd / (size_t)g->nny), y = g->oy + h * (double)(nd % (size_t)g->nny);
+    if (!(spec->precrack && spec->precrack(&s->sc, x, y)))
+      A[nd] = Ab[nd];
+  }
+  free(Ab);
+  return 0;
 }
 
 /* The split nodes' shares of the line, A_I = sum over the staircase's x-facing facets (an
@@ -67,16 +114,20 @@ static int facet_areas(const mpm_static *q, const mpm_iface *f, double *A)
   const double h = s->sc.h, d = h / sqrt((double)s->sc.ppc);
   const int nx = (int)lround(s->sc.L / d), ny = (int)lround(s->sc.H / d);
   signed char *side = malloc((size_t)nx * (size_t)ny);
-  if (!side || !(fabs(f->nx) > 1e-12)) { /* a line along x crosses no row */
-    free(side);
+  if (!side)
     return -1;
-  }
+  const int along_x = !(fabs(f->nx) > 1e-12); /* a line along x crosses no row: columns */
   memset(side, -1, (size_t)nx * (size_t)ny);
   for (size_t c = 0; c < q->np; c++) {
     const size_t k = q->pid[c];
     const int i = (int)floor(p->x0[k] / d), j = (int)floor(p->y0[k] / d);
     if (i >= 0 && i < nx && j >= 0 && j < ny)
       side[(size_t)j * (size_t)nx + (size_t)i] = (signed char)mpm_iface_side(f, p->x0[k], p->y0[k]);
+  }
+  if (along_x) {
+    const int r = column_facets(q, f, side, nx, ny, d, A);
+    free(side);
+    return r;
   }
   for (int j = 0; j < ny; j++)
     for (int i = 0; i < nx; i++) {
@@ -152,11 +203,14 @@ static int segments(mpm_static *q, const mpm_iface *f, const double *An)
     smin = lo;
     smax = hi;
   }
-  /* equal segments of about MPM_QS_SEG cells: a short remainder at the line's end would
-   * carry a few facets' share and initiate first */
-  const int nfit = (int)lround((smax - smin) / (MPM_QS_SEG * s->sc.h));
+  /* equal segments of about the specimen's length in cells (a short remainder at the
+   * line's end would carry a few facets' share and initiate first); 0: one per node
+   * place along the line (a line along a node row: the nodes' own quadrature) */
+  const double cells = mpm_specimen_of(&s->sc)->seg_cells;
+  const int bynode = !(cells > 0.0);
+  const int nfit = bynode ? (int)lround((smax - smin) / s->sc.h) + 1 : (int)lround((smax - smin) / (cells * s->sc.h));
   q->nseg = n ? (nfit > 1 ? nfit : 1) : 0;
-  const double len = q->nseg > 0 && smax > smin ? (smax - smin) / q->nseg : 1.0;
+  const double len = bynode ? s->sc.h : q->nseg > 0 && smax > smin ? (smax - smin) / q->nseg : 1.0;
   q->segstart = calloc((size_t)q->nseg + 1, sizeof *q->segstart);
   q->pA = calloc((size_t)(q->nseg ? q->nseg : 1), sizeof(double));
   q->pst = calloc((size_t)(q->nseg ? q->nseg : 1), sizeof *q->pst);
@@ -168,7 +222,7 @@ static int segments(mpm_static *q, const mpm_iface *f, const double *An)
     return -1;
   }
   for (int i = 0; i < n; i++) {
-    const int gi = (int)floor((sp[i] - smin) / len);
+    const int gi = bynode ? (int)lround((sp[i] - smin) / len) : (int)floor((sp[i] - smin) / len);
     q->sseg[i] = gi < 0 ? 0 : gi >= q->nseg ? q->nseg - 1 : gi;
     q->segstart[q->sseg[i] + 1]++;
     q->pA[q->sseg[i]] += q->sA[i];
@@ -207,15 +261,49 @@ static int ties(mpm_static *q)
   return 0;
 }
 
+/* Each segment's place along the line (its first node's x), and where the line starts
+ * open (a pre-crack), that segment separated from the start with nothing dissipated:
+ * its faces carry contact only (eqs. 56-58). */
+static int precrack(mpm_static *q)
+{
+  const mpm_sim *s = q->s;
+  const mpm_specimen_type *spec = mpm_specimen_of(&s->sc);
+  q->segx = malloc((size_t)(q->nseg ? q->nseg : 1) * sizeof(double));
+  q->pD = malloc((size_t)(q->nseg ? q->nseg : 1) * sizeof(double));
+  q->spre = calloc((size_t)(q->nseg ? q->nseg : 1), 1);
+  if (!q->segx || !q->pD || !q->spre)
+    return -1;
+  for (int g = 0; g < q->nseg; g++) {
+    q->segx[g] = NAN;
+    q->pD[g] = q->pA[g];
+    if (q->segstart[g + 1] == q->segstart[g])
+      continue;
+    const size_t nd = (size_t)q->snode[q->sorder[q->segstart[g]]];
+    const double x = s->grid_ox0 + s->sc.h * (double)(nd / (size_t)s->g->nny);
+    const double y = s->g->oy + s->sc.h * (double)(nd % (size_t)s->g->nny);
+    q->segx[g] = x;
+    if (spec->precrack && spec->precrack(&s->sc, x, y)) {
+      q->spre[g] = 1;
+      q->pD[g] = 0.0; /* a pre-crack's lambda grows with its opening, which spends nothing */
+      q->pst[g].sep = q->ptr[g].sep = 1;
+    }
+  }
+  return 0;
+}
+
 mpm_status mpm_static_iface_setup(mpm_static *q, char *err, size_t errlen)
 {
   const mpm_sim *s = q->s;
   const mpm_particles *p = s->p;
-  const mpm_iface *f = s->g && s->g->fld ? s->g->fld->ifc : NULL;
+  /* the line: the specimen's point at alpha, with the explicit interface's side rule */
+  const double a = s->sc.alpha_deg * (3.14159265358979323846 / 180.0);
+  const mpm_iface line = {.lx = s->line_x, .ly = s->line_y, .nx = sin(a), .ny = -cos(a), .tx = cos(a), .ty = sin(a),
+                          .on = 1e-9 * s->sc.h};
+  const mpm_iface *f = &line;
   const size_t M = MPM_ST_MAX, nn = q->nn;
   q->split = calloc(nn, 1);
   double *An = calloc(nn, sizeof(double));
-  int ok = f && q->split && An && facet_areas(q, f, An) == 0;
+  int ok = q->split && An && facet_areas(q, f, An) == 0;
   /* which sides touch each node (bit 0 near, 1 far): both, and it is split */
   for (size_t c = 0; ok && c < q->np; c++) {
     const size_t k = q->pid[c];
@@ -225,7 +313,7 @@ mpm_status mpm_static_iface_setup(mpm_static *q, char *err, size_t errlen)
   }
   for (size_t nd = 0; ok && nd < nn; nd++)
     q->split[nd] = q->split[nd] == 3;
-  ok = ok && segments(q, f, An) == 0 && ties(q) == 0;
+  ok = ok && segments(q, f, An) == 0 && ties(q) == 0 && precrack(q) == 0;
   free(An);
   if (!ok) {
     snprintf(err, errlen, "out of memory for the static interface (or no interface line)");
@@ -478,6 +566,8 @@ static void segment_eval(mpm_static *q, int g, int tangent, double *Ax, double J
             Ax[at] += kab;
           else if (ea >= 0 && eb == MPM_DOF_GRIP)
             q->kfd[ea] -= kab;
+          else if (ea >= 0 && eb == MPM_DOF_PUSH)
+            q->kfd[ea] += kab;
         }
     }
   /* the control's gradient, d C / d W_J = U0 A_J gl; none once the segment has spent U0
@@ -493,6 +583,8 @@ static void segment_eval(mpm_static *q, int g, int tangent, double *Ax, double J
         q->ga[eb] += gd;
       else if (eb == MPM_DOF_GRIP)
         q->gb -= gd;
+      else if (eb == MPM_DOF_PUSH)
+        q->gb += gd;
     }
   }
 }
@@ -503,7 +595,7 @@ static double line_dissipation(const mpm_static *q, const mpm_dstate *st)
 {
   double d = 0.0;
   for (int g = 0; g < q->nseg; g++)
-    d += q->imat.U0 * fmin(st[g].lam, 1.0) * q->pA[g];
+    d += q->imat.U0 * fmin(st[g].lam, 1.0) * q->pD[g];
   return d;
 }
 
@@ -528,12 +620,16 @@ void mpm_static_iface_commit(mpm_static *q)
   mpm_sim *s = q->s;
   int open = 0, on = 0;
   double w = 0.0;
+  double tip = s->crack_tip;
   for (int g = 0; g < q->nseg; g++) {
     q->pst[g] = q->ptr[g];
     w += q->pw[g];
     on += q->pA[g] > 0.0;
     open += q->pA[g] > 0.0 && q->pst[g].sep;
+    if (q->pst[g].sep && !q->spre[g] && q->pA[g] > 0.0 && q->segx[g] > tip) /* the crack's front */
+      tip = q->segx[g];
   }
+  s->crack_tip = tip;
   s->led.W_iface += w;
   s->led.D_static = line_dissipation(q, q->pst);
   if (on > 0 && open == on) /* every segment of the line has separated: the bar is cut */

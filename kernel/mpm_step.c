@@ -52,6 +52,7 @@
 #include "mpm_fields.h"
 #include "mpm.h"
 #include "mpm_kernel.h"
+#include "mpm_specimen.h"
 #include "mpm_gimp.h"
 #include "mpm_node.h"
 #include "mpm_nodes.h"
@@ -530,7 +531,7 @@ static void head_rigid(mpm_sim *s)
   /* the ledger: what the head (the machine) took, its KE change and what its
    * projection below removes */
   L->W_head = ke0 - L->KE_head0 + L->head_reset;
-  if (s->ngrip == 0)
+  if (s->nbc == 0)
     return; /* the head is the grip: without one (tests of the bare step) it is left alone */
   if (!(m > 0.0))
     return;

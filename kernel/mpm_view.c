@@ -10,6 +10,7 @@
 #include "mpm_fields.h"
 #include "mpm_iface.h"
 #include "mpm_kernel.h"
+#include "mpm_specimen.h"
 
 const mpm_scene *mpm_sim_scene(const mpm_sim *s)
 {
@@ -18,7 +19,7 @@ const mpm_scene *mpm_sim_scene(const mpm_sim *s)
 
 void mpm_sim_info_get(const mpm_sim *s, mpm_sim_info *out)
 {
-  *out = (mpm_sim_info){.step = s->step, .t = s->t, .P_grip = s->P_grip, .P_fixed = s->P_fixed, .cut = s->cut,
+  *out = (mpm_sim_info){.step = s->step, .t = s->t, .P_grip = s->P_grip, .P_fixed = s->P_fixed, .cut = s->cut, .crack_tip = s->crack_tip,
                         .n_soften = s->n_soften, .n_separate = s->n_separate, .n_bracketed = s->n_bracketed,
                         .n_debris = s->n_debris};
   for (int q = 0; q < MPM_T_N; q++)
@@ -144,6 +145,9 @@ void mpm_sim_energy(const mpm_sim *s, mpm_energy *e)
   if (s->g && s->g->fld && s->g->fld->ifc) { /* the interface's (mpm_iface.c) */
     wc += s->led.W_iface;
     dd += mpm_iface_D(s) + s->led.D_static;
+  } else if (s->sc.model && s->sc.path == MPM_PATH_IFACE) { /* the static solver's line alone */
+    wc += s->led.W_iface;
+    dd += s->led.D_static;
   }
   e->W_coh = wc;
   e->D = dd;
@@ -174,6 +178,6 @@ size_t mpm_sim_bytes_per_particle(const mpm_sim *s)
   const size_t fields = s->g->fld ? nn * (sizeof(mpm_node) + 1 + 3 * sizeof(double)) : 0;
   const size_t grid = nn * sizeof(mpm_node) + fields;
   const size_t other = s->nhead * sizeof(uint32_t) + (size_t)s->thr.nmax * sizeof(mpm_defer) +
-                       (size_t)(s->ngrip + s->nfixx) * sizeof(int);
+                       (size_t)s->nbc * sizeof(mpm_bc);
   return (particles + sorting + grid + other + np / 2) / np;
 }

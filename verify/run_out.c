@@ -4,6 +4,7 @@
  * temporary name and renamed into place when complete (docs/output-formats.md).
  */
 #include <errno.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -153,9 +154,14 @@ int ver_run_write_rows(const ver_run_row *r, long n, const char *dir, char *bad)
   FILE *f = ver_run_open_tmp(dir, "load.csv", tmp, sizeof tmp, bad);
   if (!f)
     return -1;
-  fprintf(f, "# delam load.csv schema %d\nt,delta,P_grip,P_fixed\n", VER_SCHEMA_LOAD);
+  /* crack_tip: the specimens with a pre-crack (docs/specimens.md) */
+  const int tip = n > 0 && isfinite(r[0].tip);
+  fprintf(f, "# delam load.csv schema %d\nt,delta,P_grip,P_fixed%s\n", VER_SCHEMA_LOAD, tip ? ",crack_tip" : "");
   for (long i = 0; i < n; i++)
-    fprintf(f, "%.9g,%.9g,%.9g,%.9g\n", r[i].t, r[i].delta, r[i].Pg, r[i].Pf);
+    if (tip)
+      fprintf(f, "%.9g,%.9g,%.9g,%.9g,%.9g\n", r[i].t, r[i].delta, r[i].Pg, r[i].Pf, r[i].tip);
+    else
+      fprintf(f, "%.9g,%.9g,%.9g,%.9g\n", r[i].t, r[i].delta, r[i].Pg, r[i].Pf);
   if (ver_run_commit(f, tmp, bad))
     return -1;
   if (!(f = ver_run_open_tmp(dir, "energy.csv", tmp, sizeof tmp, bad)))

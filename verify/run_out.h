@@ -14,6 +14,7 @@
  * equilibrium state of the increment) and the energies there. */
 typedef struct {
   double t, delta, Pg, Pf;
+  double tip;              /* the crack front's x (NAN: the specimen has no pre-crack) */
   mpm_energy e;
 } ver_run_row;
 

@@ -15,8 +15,8 @@
 #include "mpm.h"
 
 #define VER_MAX_SNAP 16
-#define VER_NKEYS 54
-#define VER_NSECT 14
+#define VER_NKEYS 57
+#define VER_NSECT 15
 #define VER_MAX_OVER 32
 
 typedef struct {

@@ -60,6 +60,8 @@ static int check_present(ver_scene *vs, char *err, size_t errlen)
    * explicit step's default; docs/static.md) */
   if (sc->solver == MPM_SOLVER_STATIC && !vs->seen[ver_scene_key_idx("decohesion", "separation")])
     sc->sep_threshold = 1.0;
+  if (!vs->seen[ver_scene_key_idx("specimen", "a0")])
+    sc->a0 = sc->specimen == MPM_SPEC_BAR ? 0.0 : sc->L / 3.0;
   if (!vs->seen[ver_scene_key_idx("imperfection", "x")])
     sc->imp_x = 0.5 * sc->L;
   if (!vs->seen[ver_scene_key_idx("imperfection", "y")])

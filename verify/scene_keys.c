@@ -19,6 +19,9 @@
 #define VOFF(f) offsetof(ver_scene, f)  /* run control, not the kernel's */
 const keydef ver_scene_keys[] = {
   {"method", "preset", K_PRESET, VOFF(preset), 0, 0, 0, 0, -1, "paper (the paper's method), band (a band along the line through the flaw; docs/methods.md) or interface (a cohesive interface on that line; docs/methods.md): the values of the method keys (docs/scene-keys.md), each key the file sets overriding its preset's; --method NAME makes NAME the run's method instead"},
+  {"specimen", "type", K_SPECIMEN, OFF(specimen), 0, 0, 0, 0, MPM_SPEC_BAR, "bar (the paper's: pulled along x at x = 0, held at x = L), dcb (double cantilever beam: the arms' ends x = 0 opened by +-delta / 2 in y, mode I) or els (end-loaded split: x = L clamped, both arms' ends moved by delta in y, mode II); dcb and els: a pre-crack along y = H / 2 from x = 0 to a0, the interface beyond it, solver.type = static (docs/specimens.md)"},
+  {"specimen", "grips", K_GRIPS, OFF(grips), 0, 0, 0, 0, MPM_GRIPS_ROLLERS, "rollers (the paper's: the bar's ends held in x, one node in y) or held (the ends held in x and y, as wedge grips hold them; specimen.type = bar)"},
+  {"specimen", "a0", K_DBL, OFF(a0), 0, 0, 0, LO_OPEN, -1, "> 0 and below L: the pre-crack's length along y = H / 2 from x = 0 (dcb, els; default L / 3)"},
   {"bar", "L", K_DBL, OFF(L), 1, 0, 0, LO_OPEN, 0, "> 0"},
   {"bar", "H", K_DBL, OFF(H), 1, 0, 0, LO_OPEN, 0, "> 0"},
   {"material", "E", K_DBL, OFF(E), 1, 0, 0, LO_OPEN, 0, "> 0"},
@@ -99,6 +102,8 @@ static const struct {
   {K_FIELDS, "one", MPM_FIELDS_ONE}, {K_FIELDS, "two", MPM_FIELDS_TWO},
   {K_NODEMASS, "lumped", MPM_NODEMASS_LUMPED}, {K_NODEMASS, "limited", MPM_NODEMASS_LIMITED},
   {K_SOLVER, "explicit", MPM_SOLVER_EXPLICIT}, {K_SOLVER, "static", MPM_SOLVER_STATIC},
+  {K_SPECIMEN, "bar", MPM_SPEC_BAR}, {K_SPECIMEN, "dcb", MPM_SPEC_DCB}, {K_SPECIMEN, "els", MPM_SPEC_ELS},
+  {K_GRIPS, "rollers", MPM_GRIPS_ROLLERS}, {K_GRIPS, "held", MPM_GRIPS_HELD},
 };
 #define NENUMS (sizeof ENUMS / sizeof ENUMS[0])
 

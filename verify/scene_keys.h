@@ -11,7 +11,7 @@
 
 #include "scene.h"
 
-typedef enum { K_DBL, K_INT, K_LE, K_SCHEME, K_MOTION, K_SHAPE, K_FIELDS, K_NODEMASS, K_BC, K_HEAD, K_CONTROL, K_IMPSIZE, K_DAMPFROM, K_DAMPABOUT, K_PATH, K_SHEAR, K_SHARE, K_WEIGHTS, K_PRESET, K_SOLVER, K_LIST } ktype;
+typedef enum { K_DBL, K_INT, K_LE, K_SCHEME, K_MOTION, K_SHAPE, K_FIELDS, K_NODEMASS, K_BC, K_HEAD, K_CONTROL, K_IMPSIZE, K_DAMPFROM, K_DAMPABOUT, K_PATH, K_SHEAR, K_SHARE, K_WEIGHTS, K_PRESET, K_SOLVER, K_SPECIMEN, K_GRIPS, K_LIST } ktype;
 
 /* Range kinds: (lo, hi) open, [lo, hi) half open, etc. encoded by flags. */
 enum { LO_OPEN = 1, LO_CLOSED = 2, HI_OPEN = 4, HI_CLOSED = 8 };

@@ -64,7 +64,7 @@ check opt-until-nan "--until: 'nan' is not a number > 0" "$fig6" --until nan
 check opt-threads-word "--threads: 'x' is not a number > 0" "$fig6" --threads x
 check opt-set-nokey "'nokey': expected section.key=value" "$fig6" --set nokey
 check opt-set-unknown "material.Ex=1: unknown key (allowed in [material]: E, nu, rho)" "$fig6" --set material.Ex=1
-check opt-set-section "nosuch.E=1: unknown key (allowed sections: method, bar," "$fig6" --set nosuch.E=1
+check opt-set-section "nosuch.E=1: unknown key (allowed sections: method, specimen, bar," "$fig6" --set nosuch.E=1
 check opt-set-range "command line: material.nu: 0.5 is out of range (in (-1, 0.5))" "$fig6" --set material.nu=0.5
 check opt-set-junk "command line: material.E: '10x' is not a number" "$fig6" --set material.E=10x
 check opt-set-empty "command line: material.E: empty value" "$fig6" --set material.E=

@@ -81,9 +81,7 @@ static mpm_scene block_scene(int ppc, double margin)
  * never carries mass. */
 static void release_block(mpm_sim *s)
 {
-  s->ngrip = 0;
-  s->nfixx = 0;
-  s->fixy = 0;
+  s->nbc = 0;
 }
 
 static void momentum_case(int scheme, int shape)

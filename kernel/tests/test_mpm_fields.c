@@ -65,9 +65,7 @@ static mpm_sim *blocks_shape(int fields, double v, int shape)
   char err[256] = "";
   if (mpm_sim_alloc(&sc, 1, &s, err, sizeof err) != MPM_OK)
     fail_msg("mpm_sim_alloc: %s", err);
-  s->ngrip = 0;
-  s->nfixx = 0;
-  s->fixy = 0; /* a corner node of the padding, never reached */
+  s->nbc = 0;
   mpm_particles *p = s->p;
   for (size_t k = 0; k < p->n; k++) {
     if (p->mat[k] == MPM_MAT_HEAD) { /* park the head far from the blocks, at rest */

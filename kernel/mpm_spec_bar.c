@@ -1,0 +1,101 @@
+/*
+ * mpm_spec_bar.c - the paper's specimen (sec. 4.4, Fig. 5): the bar [0, L] x [0, H]
+ * pulled at its left end x = 0 by a rigid head moving at -speed in x (stress-free
+ * particles beyond the end, MPM_MAT_HEAD, whose node columns are all gripped), and held
+ * at its right end x = L in x, its mid-height node in y as well (specimen.grips =
+ * rollers).  specimen.grips = held holds both ends in y too, as a test machine's wedge
+ * grips do.  The crack runs along the line at alpha through the flaw's particle.
+ */
+#include <math.h>
+
+#include "mpm_specimen.h"
+#include "mpm_static.h"
+
+/* the head and the grip's travel to end_delta (the columns are laid with or without
+ * the head's particles) */
+static void bar_left_cells(const mpm_scene *sc, int *left, int *head)
+{
+  *left = MPM_HEAD_CELLS + (int)ceil(sc->end_delta / sc->h - 1e-9);
+  *head = sc->head == MPM_HEAD_NONE ? 0 : MPM_HEAD_CELLS;
+}
+
+/* Every node column from the head's travel to x = 0 is gripped in x (rows 0..H); the
+ * column x = L is held in x (uGIMP: the column beyond it too, which the bar's last
+ * particles reach: the support is a wall, like the head on the left), its mid-height
+ * node in y; held grips hold every one of those nodes in y as well. */
+static int bar_bcs(const mpm_sim *s, const mpm_layout *l, mpm_bc *out)
+{
+  const mpm_grid *g = s->g;
+  const int grip0 = l->nhead ? l->pad : l->padl, nfixcol = s->sc.shape == MPM_SHAPE_GIMP ? 2 : 1;
+  const int held = s->sc.grips == MPM_GRIPS_HELD;
+  int n = 0;
+#define PUT(i, j, cmp, cc, fx)                                                                         \
+  do {                                                                                             \
+    if (out)                                                                                       \
+      out[n] = (mpm_bc){(int)mpm_grid_node(g, (i), (j) + l->pad), (cmp), (fx), MPM_BC_ANY, (cc)};  \
+    n++;                                                                                           \
+  } while (0)
+  for (int i = grip0; i <= l->padl; i++)
+    for (int j = 0; j <= l->cy; j++)
+      PUT(i, j, 0, -1.0, 0);
+  for (int c = 0; c < nfixcol; c++)
+    for (int j = 0; j <= l->cy; j++)
+      PUT(l->padl + l->cx + c, j, 0, 0.0, 1);
+  if (!held) {
+    PUT(l->padl + l->cx, l->cy / 2, 1, 0.0, 0);
+    return n;
+  }
+  for (int i = grip0; i <= l->padl; i++)
+    for (int j = 0; j <= l->cy; j++)
+      PUT(i, j, 1, 0.0, 0);
+  for (int c = 0; c < nfixcol; c++)
+    for (int j = 0; j <= l->cy; j++)
+      PUT(l->padl + l->cx + c, j, 1, 0.0, 0);
+#undef PUT
+  return n;
+}
+
+static void bar_line_point(const mpm_sim *s, size_t imp, double *lx, double *ly)
+{
+  *lx = s->p->x0[imp];
+  *ly = s->p->y0[imp];
+}
+
+/* U0 H / sin a: the line crosses the bar from y = 0 to y = H */
+static double bar_dis_full(const mpm_scene *sc)
+{
+  const double sa = fabs(sin(sc->alpha_deg * (3.14159265358979323846 / 180.0)));
+  return sc->U0 * sc->H / fmax(sa, 1e-3);
+}
+
+/* Once cut, the gripped part's vertical rigid motion: held at the gripped node nearest
+ * mid-height (no force: the part is unloaded). */
+static int bar_pin_node(const mpm_sim *s, const int *eq)
+{
+  int best = -1;
+  double bd = INFINITY;
+  for (int i = 0; i < s->nbc; i++) {
+    const mpm_bc *b = &s->bc[i];
+    if (b->comp != 0 || b->c == 0.0)
+      continue;
+    const size_t n = (size_t)b->node;
+    const double y = s->g->oy + s->sc.h * (double)(n % (size_t)s->g->nny), d = fabs(y - 0.5 * s->sc.H);
+    if (eq[2 * n] == MPM_DOF_GRIP && d < bd) {
+      bd = d;
+      best = (int)n;
+    }
+  }
+  return best;
+}
+
+const mpm_specimen_type mpm_spec_bar = {
+  .name = "bar",
+  .left_cells = bar_left_cells,
+  .bcs = bar_bcs,
+  .line_point = bar_line_point,
+  .dis_full = bar_dis_full,
+  .precrack = NULL,
+  .explicit_iface = 1,
+  .seg_cells = 3.0,
+  .pin_node = bar_pin_node,
+};
