@@ -111,7 +111,7 @@ static inline double mpm_scene_start_vx(const mpm_scene *sc, double x)
 double mpm_scene_path_halfwidth(const mpm_scene *sc);
 /* Checks a scene for physical sense; MPM_EINVAL and a message naming the key. */
 mpm_status mpm_scene_check(const mpm_scene *sc, char *err, size_t errlen);
-/* Critical time step h / (c sqrt 2), c = sqrt(E1 / rho) (measured; see mpm_sim.c). */
+/* Critical time step h / (c sqrt 2), c = sqrt(E1 / rho) (measured: mpm_sim.c). */
 double mpm_scene_dt_crit(const mpm_scene *sc);
 /* The rules between the method options (mpm_rules.c; mpm_scene_check ends with them):
  * MPM_OK, or MPM_EINVAL with the first one broken in err, which starts with the key at
@@ -128,8 +128,7 @@ typedef struct mpm_sim mpm_sim;
  * default.  Results do not depend on it (fixed summation order). */
 mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char *err, size_t errlen);
 void mpm_sim_free(mpm_sim *s);
-/* One explicit step (eqs. 2-7) with the scene's scheme.  On failure, err names the step,
- * particle and field. */
+/* One explicit step (eqs. 2-7); on failure err names the step, particle and field. */
 mpm_status mpm_sim_step(mpm_sim *s, char *err, size_t errlen);
 /* The grip's displacement delta. */
 double mpm_sim_delta(const mpm_sim *s);
@@ -144,6 +143,7 @@ typedef struct {
   double P_grip, P_fixed;  /* loads of the last step at the grip and the fixed end (tension > 0) */
   int cut;                 /* 1 once the band has cut the bar (a separated particle in every row) */
   double crack_tip;        /* dcb, els: the crack front's x (a0 before growth); bar: NAN */
+  double gap_min;          /* the static interface's least normal opening (< 0: overlap) */
   long n_soften, n_separate, n_bracketed; /* decohesion updates by path; bracketed solves */
   long n_debris;           /* separated particles that left the grid                  */
   double time_split[MPM_T_N]; /* seconds in sort, p2g, grid, g2p, constitutive update */

@@ -327,6 +327,7 @@ struct mpm_sim {
   struct mpm_bc *bc;       /* the constrained node components (mpm_specimen.h), in the   */
   int nbc;                 /*   order the step takes them                               */
   double crack_tip;        /* x of the interface's farthest separated point (NAN: none)  */
+  double gap_min;          /* the static interface's least normal opening so far         */
   double line_x, line_y;   /* a point of the interface's line (the specimen's)           */
   double t;                /* time                                                     */
   long step;               /* steps taken                                              */

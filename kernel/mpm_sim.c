@@ -387,6 +387,7 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
   s->grid_ox0 = s->g->ox;
   s->nbc = spec->bcs(s, &l, s->bc);
   s->crack_tip = spec->precrack ? sc->a0 : NAN;
+  s->gap_min = INFINITY;
   spec->line_point(s, imp, &s->line_x, &s->line_y);
   if (sc->model && sc->path == MPM_PATH_IFACE && spec->explicit_iface &&
       !(s->g->fld->ifc = mpm_iface_alloc(s, s->line_x, s->line_y)))

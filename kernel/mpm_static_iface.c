@@ -630,6 +630,14 @@ void mpm_static_iface_commit(mpm_static *q)
       tip = q->segx[g];
   }
   s->crack_tip = tip;
+  /* the least normal opening at a node of the line (contact keeps it near 0 from below) */
+  for (int a = 0; a < (q->nseg > 0 ? q->segstart[q->nseg] : 0); a++) {
+    const int i = q->sorder[a];
+    double W[2], dw[2];
+    jump(q, q->snode[i], W, dw);
+    if (q->sA[i] > 0.0)
+      s->gap_min = fmin(s->gap_min, W[0] * q->imat.nx + W[1] * q->imat.ny);
+  }
   s->led.W_iface += w;
   s->led.D_static = line_dissipation(q, q->pst);
   if (on > 0 && open == on) /* every segment of the line has separated: the bar is cut */

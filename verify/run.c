@@ -347,6 +347,8 @@ static void finish(const run_state *r, ver_summary *u, double w0, double c0)
   u->L_debris_final = e.L_debris;
   u->L_damp_final = e.L_damp;
   u->n_debris = in.n_debris;
+  u->crack_tip_final = in.crack_tip;
+  u->gap_min = isfinite(in.gap_min) ? in.gap_min : NAN;
   const double E0 = r->e0.KE + r->e0.SE;
   u->energy_residual = energy_residual(r->rows, r->nrow, E0, &u->energy_unbooked);
   u->energy_start = E0;

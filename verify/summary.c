@@ -54,6 +54,8 @@ static const struct {
   {"n_separate", offsetof(ver_summary, n_separate), F_LONG},
   {"n_bracketed", offsetof(ver_summary, n_bracketed), F_LONG},
   {"n_debris", offsetof(ver_summary, n_debris), F_LONG},
+  {"crack_tip_final", offsetof(ver_summary, crack_tip_final), F_DBL},
+  {"gap_min", offsetof(ver_summary, gap_min), F_DBL},
   {"wall_s", offsetof(ver_summary, wall_s), F_DBL},
   {"cpu_s", offsetof(ver_summary, cpu_s), F_DBL},
   {"updates_per_s", offsetof(ver_summary, updates_per_s), F_DBL},

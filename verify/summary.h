@@ -27,6 +27,8 @@ typedef struct {
   double L_damp_final;           /* ... and what the local damping took (time.damping)           */
   double L_debris_final;         /* ... and what debris carried off the grid (mpm_step.c)        */
   long n_debris;                 /* separated particles that left the grid as debris     */
+  double crack_tip_final;        /* dcb, els: the crack front's x at the end (NaN: the bar) */
+  double gap_min;                /* the static interface's least normal opening (NaN: none) */
   double energy_start;           /* E0 = KE + SE at the start                        */
   double energy_kept;            /* free vibration: (KE + SE) at the end over E0; NaN otherwise */
   double period, period_exact, period_error; /* vibration: measured, 2 L / (m c) corrected, error */
