@@ -1,7 +1,10 @@
 /*
- * cmd_check.c - `delam check --scene SCENE DIR`: judges a run folder that any code
+ * cmd_check.c - `delam check [--scene SCENE] DIR`: judges a run folder that any code
  * wrote, with the checks `delam verify` applies to delam's own runs (policy.c, the
- * measurements of metrics.h; nothing here decides a tolerance).
+ * measurements of metrics.h; nothing here decides a tolerance).  A folder delam wrote
+ * is judged against its own scene.ini (the effective scene the run computed); SCENE and
+ * the options, if given, must agree with it on every key a check reads (judged_scene).
+ * Another code's folder (no scene.ini) is judged against SCENE with the options.
  *
  * Input (docs/output-formats.md, "Checking a run of another code"):
  *   DIR/load.csv     required: a header naming at least delta and P_grip (P_fixed is
@@ -41,8 +44,8 @@
 static void usage(FILE *f)
 {
   fprintf(f,
-    "usage: delam check --scene SCENE DIR [options]\n"
-    "Judges a run folder written by any code against the closed-form bar of SCENE, with\n"
+    "usage: delam check [--scene SCENE] DIR [options]\n"
+    "Judges a run folder written by any code against the closed-form bar of its scene, with\n"
     "the checks of `delam verify` (peak load, elastic and softening slopes, separation,\n"
     "load-curve error, external work; dissipation and energy balance when energy.csv is\n"
     "there; band width and crack angle when final particles are).  At alpha 90 (q 1,\n"
@@ -56,6 +59,12 @@ static void usage(FILE *f)
     "5 %% of Pmax after the peak), and nothing against a grip speed.\n\n"
     "DIR holds load.csv (header with at least delta and P_grip), optionally energy.csv\n"
     "(W_ext, KE, SE, W_coh, D) and final.csv (x0, y0, lambda); see docs/output-formats.md.\n\n"
+    "A folder delam wrote is judged against DIR/scene.ini, the effective scene the run\n"
+    "computed; --scene and the options below then say what the run was meant to be, and a\n"
+    "folder whose scene.ini differs from them on a key a check reads (the bar, the\n"
+    "material, the law, h, ppc, the method's Le, path and fields, the grip speed and\n"
+    "control, the solver) is refused, naming the keys.  Another code's folder (no\n"
+    "scene.ini) needs --scene.\n\n"
     "options:\n"
     "  --scene SCENE     the scene the run was meant to compute (a file, or a name: fig6)\n"
     "  --h H, --ppc N    the run's grid spacing and particles per cell (default: from\n"
@@ -67,8 +76,10 @@ static void usage(FILE *f)
     "  --particles FILE  the final particle CSV (default DIR/final.csv when present)\n"
     "  --out FILE        where check.json goes (default DIR/check.json)\n"
     "  --help            this text\n"
-    "Not judged (exit 2): a run whose summary.json says complete: false or that has\n"
-    "delam's scene.ini without a summary.json; a file that is not a regular text file;\n"
+    "Not judged (exit 2): a folder of delam's (a scene.ini, or energy.csv or final.csv\n"
+    "with delam's schema line) without a summary.json; a summary.json that is not a\n"
+    "regular file holding one whole JSON object, or whose \"complete\" is there and not\n"
+    "true (delam's must have it); a file that is not a regular text file;\n"
     "a delta that goes back where the grip only pulls (solver.type = explicit and\n"
     "loading.control = grip); an energy.csv whose W_ext is more than 1%% of the work\n"
     "from the area under load.csv's P_grip-delta curve, or that does not cover the\n"
@@ -76,60 +87,6 @@ static void usage(FILE *f)
     "exit status: 0 all checks pass (or are within a known limit), 1 a check failed or\n"
     "check.json could not be written, 2 bad usage or unusable input (file, line and\n"
     "column named)\n");
-}
-
-/* The scene the folder is judged against: SCENE with --set, h and ppc. */
-static int build_scene(const char *arg, const char *dir, const char *method, double h, double ppc, const char **sets,
-                       int nset, ver_scene *vs, char *err, size_t errlen)
-{
-  char path[4400], buf[160], num[40];
-  if (ver_scene_resolve(arg, path, sizeof path, err, errlen) || ver_scene_parse(path, vs, err, errlen))
-    return 2;
-  if (h <= 0 || ppc <= 0 || !method) { /* a folder delam wrote says its own */
-    char own[1400];
-    ver_scene ds;
-    struct stat st;
-    snprintf(own, sizeof own, "%s/scene.ini", dir);
-    if (lstat(own, &st) == 0) { /* there but unreadable: not silently judged as another case */
-      if (ver_scene_parse(own, &ds, err, errlen))
-        return 2;
-      if (h <= 0)
-        h = ds.sc.h;
-      if (ppc <= 0)
-        ppc = ds.sc.ppc;
-      /* rows of equilibrium states, not interval averages: judged as such */
-      if (ds.sc.solver == MPM_SOLVER_STATIC && ver_scene_set(vs, "solver.type=static", err, errlen))
-        return 2;
-      if (!method && ds.preset >= 0 && ds.preset != vs->preset)
-        method = ver_method_name(ds.preset); /* the run's --method */
-    }
-  }
-  if (method) {
-    snprintf(buf, sizeof buf, "method.preset=%s", method);
-    if (ver_scene_set(vs, buf, err, errlen))
-      return 2;
-  }
-  if (h > 0) {
-    ver_scene_fmt_num(vs->sc.dt * h / vs->sc.h, num, sizeof num); /* the file's Courant number */
-    snprintf(buf, sizeof buf, "time.dt=%s", num);
-    if (ver_scene_set(vs, buf, err, errlen))
-      return 2;
-    ver_scene_fmt_num(h, num, sizeof num);
-    snprintf(buf, sizeof buf, "grid.h=%s", num);
-    if (ver_scene_set(vs, buf, err, errlen))
-      return 2;
-  }
-  if (ppc > 0) {
-    ver_scene_fmt_num(ppc, num, sizeof num);
-    snprintf(buf, sizeof buf, "grid.ppc=%s", num);
-    if (ver_scene_set(vs, buf, err, errlen))
-      return 2;
-  }
-  for (int i = 0; i < nset; i++)
-    if (ver_scene_set(vs, sets[i], err, errlen))
-      return 2;
-  vs->allow_unstable = 1; /* nothing is run here */
-  return ver_scene_validate(vs, err, errlen);
 }
 
 /* Informational, never judged (not a ver_check: the checks' classes and verdicts stay as
@@ -309,77 +266,293 @@ static void print_verdict(const char *label, const ver_case *c, const check_info
          have_pt ? ", with particles" : ", no particles: band width and angle left out");
 }
 
-/* summary.json's "complete" in *complete, its "delta_end" and "error": 1 if the file is
- * JSON with a boolean "complete", 0 if it has none (another code's summary), -1 if it
- * cannot be read or is not JSON. */
-static int summary_complete(const char *path, int *complete, double *delta_end, char *error, size_t len)
+/* The first line of DIR/name starts with prefix (delam's schema line): 1, else 0. */
+static int has_schema_line(const char *dir, const char *name, const char *prefix)
 {
-  char *txt = ver_io_slurp(path, NULL, 1 << 20);
-  cJSON *o = txt ? cJSON_Parse(txt) : NULL;
-  free(txt);
-  if (!o)
-    return -1;
-  const cJSON *c = cJSON_GetObjectItemCaseSensitive(o, "complete");
-  const cJSON *d = cJSON_GetObjectItemCaseSensitive(o, "delta_end");
-  const cJSON *e = cJSON_GetObjectItemCaseSensitive(o, "error");
-  const int have = cJSON_IsBool(c);
-  *complete = cJSON_IsTrue(c);
-  *delta_end = cJSON_IsNumber(d) ? d->valuedouble : NAN;
-  snprintf(error, len, "%s", cJSON_IsString(e) ? e->valuestring : "");
-  cJSON_Delete(o);
-  return have;
+  char path[1400], head[64] = "";
+  snprintf(path, sizeof path, "%s/%s", dir, name);
+  FILE *f = ver_open_regular(path, NULL);
+  if (!f)
+    return 0;
+  if (!fgets(head, sizeof head, f))
+    head[0] = '\0';
+  fclose(f);
+  return !strncmp(head, prefix, strlen(prefix));
 }
 
-/* Whether the run in DIR finished: not while a delam process holds its lock; then a
- * summary.json with "complete" says so (false: not judged); a folder with delam's
- * scene.ini needs a summary.json that says complete: true.  Another code's folder
- * without such a summary is judged on its files.  0, or 2 with the reason in err. */
-static int run_finished(const char *dir, char *err, size_t errlen)
+/* Whether delam wrote DIR: a scene.ini there (delam's, or one that must then read as a
+ * scene), or an energy.csv or final.csv with delam's schema line.  load.csv alone does
+ * not say so: a curve cut out of a delam run keeps its comment line (the README's tour
+ * makes another code's folder that way). */
+static int folder_is_ours(const char *dir)
 {
-  char path[1400], head[64] = "", error[320];
+  char path[1400];
+  struct stat st;
+  snprintf(path, sizeof path, "%s/scene.ini", dir);
+  return lstat(path, &st) == 0 || has_schema_line(dir, "energy.csv", "# delam energy.csv") ||
+         has_schema_line(dir, "final.csv", "# delam particles.csv");
+}
+
+/* What "complete" holds when it is not true, for a message: the JSON text of the value. */
+static void json_shown(const cJSON *v, char *buf, size_t len)
+{
+  char *t = cJSON_PrintUnformatted(v);
+  snprintf(buf, len, "%.60s%s", t ? t : "?", t && strlen(t) > 60 ? "..." : "");
+  free(t);
+}
+
+/* Whether the run in DIR finished, so that its files can be believed: not while a
+ * delam process holds its lock; a summary.json that is there must be a regular file
+ * holding one whole JSON object whose "complete", where it has one, is literally true
+ * (a string "true", 1 or null is not); a folder of delam's (folder_is_ours) needs that
+ * summary.json and its "complete".  Another code's folder without a summary.json, or
+ * with one that has no "complete", is judged on its files.  The summary's "scene" (its
+ * name) goes to scene ("" if none).  0, or 2 with the file, what was found and why in err. */
+static int run_finished(const char *dir, int ours, char *scene, size_t slen, char *err, size_t errlen)
+{
+  char path[1400];
+  scene[0] = '\0';
   const long holder = ver_io_lock_holder(dir);
   if (holder > 0) {
     snprintf(err, errlen, "%s: a delam process (pid %ld) is writing this folder now: not judged", dir, holder);
     return 2;
   }
-  snprintf(path, sizeof path, "%s/scene.ini", dir);
-  FILE *f = ver_open_regular(path, NULL);
-  if (f) {
-    if (!fgets(head, sizeof head, f))
-      head[0] = '\0';
-    fclose(f);
-  }
-  const int ours = !strncmp(head, "; delam scene.ini", 17);
-  int complete = 0;
-  double delta_end;
   snprintf(path, sizeof path, "%s/summary.json", dir);
   struct stat st;
-  const int there = lstat(path, &st) == 0;
-  const int k = there ? summary_complete(path, &complete, &delta_end, error, sizeof error) : 0;
-  if (k > 0 && !complete)
+  if (lstat(path, &st) != 0) {
+    if (!ours)
+      return 0;
+    snprintf(path, sizeof path, "%s/scene.ini", dir);
+    snprintf(err, errlen, "%s: delam's %s but no summary.json: the run has not finished (killed, or it failed to "
+             "write it); not judged", dir, lstat(path, &st) == 0 ? "scene.ini" : "files (energy.csv or final.csv "
+             "with its schema line)");
+    return 2;
+  }
+  size_t len = 0;
+  char *txt = ver_io_slurp(path, &len, 1 << 20);
+  if (!txt) {
+    const int e = errno;
+    if (e == EINVAL && stat(path, &st) == 0)
+      snprintf(err, errlen, "%s: %s, not a regular file: the run's record is damaged; not judged", path,
+               ver_file_kind(st.st_mode));
+    else if (e == EFBIG)
+      snprintf(err, errlen, "%s: larger than 1 MiB (delam writes about 4 KiB): not a run's record; not judged", path);
+    else
+      snprintf(err, errlen, "%s: cannot read: %s; not judged", path, strerror(e));
+    return 2;
+  }
+  const char *end = NULL;
+  cJSON *o = cJSON_ParseWithOpts(txt, &end, 1); /* the whole file, nothing after it */
+  if (!o || !cJSON_IsObject(o)) {
+    const size_t at = o ? 0 : end ? (size_t)(end - txt) : len;
+    if (!o && strlen(txt) < len)
+      snprintf(err, errlen, "%s: a NUL byte at byte %zu: not JSON text; the run's record is damaged, not judged",
+               path, strlen(txt) + 1);
+    else if (!o)
+      snprintf(err, errlen, "%s: not whole JSON (%s %zu of its %zu bytes): the run's record is damaged or cut "
+               "short; not judged", path, at >= len ? "it ends before the JSON does, after" : "unexpected text at byte",
+               at >= len ? len : at + 1, len);
+    else
+      snprintf(err, errlen, "%s: JSON but not an object: the run's record is damaged; not judged", path);
+    cJSON_Delete(o);
+    free(txt);
+    return 2;
+  }
+  free(txt);
+  const cJSON *c = cJSON_GetObjectItemCaseSensitive(o, "complete");
+  const cJSON *d = cJSON_GetObjectItemCaseSensitive(o, "delta_end");
+  const cJSON *e = cJSON_GetObjectItemCaseSensitive(o, "error");
+  const cJSON *s = cJSON_GetObjectItemCaseSensitive(o, "scene");
+  if (cJSON_IsString(s))
+    snprintf(scene, slen, "%s", s->valuestring);
+  int rc = 2;
+  char shown[80];
+  if (cJSON_IsFalse(c))
     snprintf(err, errlen, "%s says complete: false (the run stopped at delta %.6g%s%.300s): an interrupted or "
-             "failed run is not judged", path, delta_end, error[0] ? ": " : "", error);
-  else if (ours && there && k <= 0)
-    snprintf(err, errlen, "%s: %s: the run's record is damaged; not judged", path,
-             k < 0 ? "cannot be read or is not JSON" : "no \"complete\" key");
-  else if (ours && !there)
-    snprintf(err, errlen, "%s: delam's scene.ini but no summary.json: the run has not finished (killed, or it "
-             "failed to write it); not judged", dir);
+             "failed run is not judged", path, cJSON_IsNumber(d) ? d->valuedouble : NAN,
+             cJSON_IsString(e) ? ": " : "", cJSON_IsString(e) ? e->valuestring : "");
+  else if (c && !cJSON_IsTrue(c)) {
+    json_shown(c, shown, sizeof shown);
+    snprintf(err, errlen, "%s: \"complete\" is %s, not true: the run's record is damaged; not judged", path, shown);
+  } else if (!c && ours)
+    snprintf(err, errlen, "%s: no \"complete\" key: the run's record is damaged; not judged", path);
   else
-    return 0;
-  return 2;
+    rc = 0;
+  cJSON_Delete(o);
+  return rc;
+}
+
+/* The scene SCENE with --method, --h, --ppc and --set; where delam wrote the folder
+ * (own, its scene.ini; else NULL), the run's h, ppc, method and solver where no option
+ * gives them. */
+static int build_scene(const char *arg, const ver_scene *own, const char *method, double h, double ppc,
+                       const char *const *sets, int nset, ver_scene *vs, char *err, size_t errlen)
+{
+  char path[4400], buf[160], num[40];
+  if (ver_scene_resolve(arg, path, sizeof path, err, errlen) || ver_scene_parse(path, vs, err, errlen))
+    return 2;
+  if (own) {
+    if (h <= 0)
+      h = own->sc.h;
+    if (ppc <= 0)
+      ppc = own->sc.ppc;
+    /* rows of equilibrium states, not interval averages: judged as such */
+    if (own->sc.solver == MPM_SOLVER_STATIC && ver_scene_set(vs, "solver.type=static", err, errlen))
+      return 2;
+    if (!method && own->preset >= 0 && own->preset != vs->preset)
+      method = ver_method_name(own->preset); /* the run's --method */
+  }
+  if (method) {
+    snprintf(buf, sizeof buf, "method.preset=%s", method);
+    if (ver_scene_set(vs, buf, err, errlen))
+      return 2;
+  }
+  if (h > 0) {
+    ver_scene_fmt_num(vs->sc.dt * h / vs->sc.h, num, sizeof num); /* the file's Courant number */
+    snprintf(buf, sizeof buf, "time.dt=%s", num);
+    if (ver_scene_set(vs, buf, err, errlen))
+      return 2;
+    ver_scene_fmt_num(h, num, sizeof num);
+    snprintf(buf, sizeof buf, "grid.h=%s", num);
+    if (ver_scene_set(vs, buf, err, errlen))
+      return 2;
+  }
+  if (ppc > 0) {
+    ver_scene_fmt_num(ppc, num, sizeof num);
+    snprintf(buf, sizeof buf, "grid.ppc=%s", num);
+    if (ver_scene_set(vs, buf, err, errlen))
+      return 2;
+  }
+  for (int i = 0; i < nset; i++)
+    if (ver_scene_set(vs, sets[i], err, errlen))
+      return 2;
+  vs->allow_unstable = 1; /* nothing is run here */
+  return ver_scene_validate(vs, err, errlen);
+}
+
+/* The keys a check's reference or measurement reads (scene_bar.c: the closed-form bar;
+ * policy.c: the classes and tolerances; foreign.c, sweep_cases.c: the separation
+ * window, the wave solution, the grip's direction).  A folder's scene.ini that differs
+ * from the scene given on one of them was another problem: judging it against that
+ * scene would report the difference as the run's error. */
+static const char *const REF_KEYS[] = {
+  "bar.L", "bar.H", "material.E", "material.nu", "material.rho", "decohesion.model", "decohesion.alpha",
+  "decohesion.snf", "decohesion.stf", "decohesion.U0", "decohesion.s0", "decohesion.q", "decohesion.separation",
+  "decohesion.Le", "decohesion.path", "imperfection.x", "grid.h", "grid.ppc", "grid.fields", "loading.control",
+  "loading.speed", "run.sep_load", "solver.type", "vibration.mode",
+};
+
+/* The effective scene's text (ver_scene_write_ini, every key with its value); malloc'd. */
+static char *scene_text(const ver_scene *vs)
+{
+  char *txt = NULL;
+  size_t len = 0;
+  FILE *f = open_memstream(&txt, &len);
+  if (!f)
+    return NULL;
+  const int bad = ver_scene_write_ini(vs, f);
+  if (fclose(f) || bad) {
+    free(txt);
+    return NULL;
+  }
+  return txt;
+}
+
+/* The value of "section.key" in a scene's text into out ("" if it has none). */
+static void scene_value(const char *txt, const char *skey, char *out, size_t len)
+{
+  const char *dot = strchr(skey, '.');
+  const size_t sl = (size_t)(dot - skey), kl = strlen(dot + 1);
+  int in = 0;
+  out[0] = '\0';
+  for (const char *l = txt; l && *l; l = strchr(l, '\n'), l = l ? l + 1 : NULL) {
+    const size_t ll = strcspn(l, "\n");
+    if (*l == '[')
+      in = ll == sl + 2 && !strncmp(l + 1, skey, sl) && l[sl + 1] == ']';
+    else if (in && !strncmp(l, dot + 1, kl) && !strncmp(l + kl, " = ", 3)) {
+      snprintf(out, len, "%.*s", (int)(ll - kl - 3), l + kl + 3);
+      return;
+    }
+  }
+}
+
+/* The REF_KEYS on which scene a (the one given) and b (the folder's scene.ini) differ,
+ * as "key (A in ANAME, B in the run)" into out; how many (-1: out of memory). */
+static int scene_diff(const ver_scene *a, const char *aname, const ver_scene *b, char *out, size_t len)
+{
+  char *ta = scene_text(a), *tb = scene_text(b), va[64], vb[64];
+  int n = 0;
+  out[0] = '\0';
+  if (!ta || !tb)
+    n = -1;
+  for (size_t i = 0; n >= 0 && i < sizeof REF_KEYS / sizeof REF_KEYS[0]; i++) {
+    scene_value(ta, REF_KEYS[i], va, sizeof va);
+    scene_value(tb, REF_KEYS[i], vb, sizeof vb);
+    if (strcmp(va, vb)) {
+      const size_t at = strlen(out);
+      snprintf(out + at, len - at, "%s%s (%s in %s, %s in the run)", n ? "; " : "", REF_KEYS[i], va[0] ? va : "none",
+               aname, vb[0] ? vb : "none");
+      n++;
+    }
+  }
+  free(ta);
+  free(tb);
+  return n;
+}
+
+/* The scene DIR is judged against, into vs.  A folder delam wrote (own, its scene.ini,
+ * read here) is judged against that scene: the effective scene the run computed.  A
+ * SCENE (or an option) then only says what the run was meant to be: where it differs on
+ * a key of REF_KEYS the folder is refused, naming the keys.  Another code's folder is
+ * judged against SCENE with the options.  0, or 2 with err. */
+static int judged_scene(const check_opts *o, const char *summary_scene, ver_scene *vs, char *err, size_t errlen)
+{
+  char own[1400];
+  struct stat st;
+  snprintf(own, sizeof own, "%s/scene.ini", o->dir);
+  if (lstat(own, &st) != 0) {
+    if (!o->scene) {
+      snprintf(err, errlen, "%s has no scene.ini (another code's folder): needs --scene SCENE, the scene it was "
+               "meant to compute (usage: delam check [--scene SCENE] DIR)", o->dir);
+      return 2;
+    }
+    return build_scene(o->scene, NULL, o->method, o->h, o->ppc, o->sets, o->nset, vs, err, errlen);
+  }
+  static ver_scene run, given; /* large */
+  if (ver_scene_parse(own, &run, err, errlen))
+    return 2; /* there but unreadable: not silently judged as another case */
+  run.allow_unstable = 1;
+  if (ver_scene_validate(&run, err, errlen))
+    return 2;
+  if (o->scene || o->method || o->h > 0 || o->ppc > 0 || o->nset > 0) {
+    if (build_scene(o->scene ? o->scene : own, &run, o->method, o->h, o->ppc, o->sets, o->nset, &given, err, errlen))
+      return 2;
+    char diff[2400], gname[160];
+    const int opts = o->nset || o->method || o->h > 0 || o->ppc > 0;
+    snprintf(gname, sizeof gname, "%s%s", o->scene ? given.name : "the options", o->scene && opts ? " with the options" : "");
+    const int nd = scene_diff(&given, gname, &run, diff, sizeof diff);
+    if (nd) {
+      if (nd < 0)
+        snprintf(err, errlen, "%s: out of memory comparing it with the scene given", own);
+      else
+        snprintf(err, errlen, "%s: the run computed another problem than %s, on %d key%s that change%s a "
+                 "reference: %s; judge it against its own scene with `delam check %s`", own, gname, nd,
+                 nd > 1 ? "s" : "", nd > 1 ? "" : "s", diff, o->dir);
+      return 2;
+    }
+  }
+  *vs = run;
+  /* the scene's name in the labels: the one given, else the run's own (summary.json) */
+  snprintf(vs->name, sizeof vs->name, "%s", o->scene ? given.name : summary_scene[0] ? summary_scene : run.name);
+  return 0;
 }
 
 /* Whether the run's grip only pulls: the explicit solver under loading.control = grip
- * (the static solver follows a snapback, the dissipation control may too), as the
- * folder's own scene.ini says where delam wrote it, else the scene it is judged against. */
-static int grip_pulls(const char *dir, const ver_scene *vs)
+ * (the static solver follows a snapback, the dissipation control may too), in the scene
+ * it is judged against (its own scene.ini where delam wrote it, judged_scene). */
+static int grip_pulls(const ver_scene *vs)
 {
-  char path[1400], e[200];
-  ver_scene own;
-  snprintf(path, sizeof path, "%s/scene.ini", dir);
-  const mpm_scene *sc = ver_scene_parse(path, &own, e, sizeof e) == 0 ? &own.sc : &vs->sc;
-  return sc->control == MPM_CONTROL_GRIP && sc->solver == MPM_SOLVER_EXPLICIT;
+  return vs->sc.control == MPM_CONTROL_GRIP && vs->sc.solver == MPM_SOLVER_EXPLICIT;
 }
 
 /* load.csv (delta, P_grip, P_fixed, t) and energy.csv (W_ext first, t at 12; or NULL) say
@@ -427,7 +600,7 @@ static void free_inputs(check_inputs *in)
   ver_table_free(&in->pt);
 }
 
-/* Reads DIR's files after run_finished and checks that they agree (inputs_agree).  0,
+/* Reads DIR's files (after run_finished) and checks that they agree (inputs_agree).  0,
  * or 2 with the file and the reason in err (nothing left allocated). */
 static int read_inputs(const char *dir, const char *pfile, const ver_scene *vs, check_inputs *in, char *err,
                        size_t errlen)
@@ -438,8 +611,6 @@ static int read_inputs(const char *dir, const char *pfile, const ver_scene *vs, 
   static const char *const pnames[] = {"x0", "y0", "lambda"};
   char path[1400];
   memset(in, 0, sizeof *in);
-  if (run_finished(dir, err, errlen))
-    return 2;
   snprintf(path, sizeof path, "%s/load.csv", dir);
   int r = ver_table_read(path, lnames, 4, 2, &in->ld, err, errlen);
   if (r == 1)
@@ -449,7 +620,7 @@ static int read_inputs(const char *dir, const char *pfile, const ver_scene *vs, 
   snprintf(path, sizeof path, "%s/energy.csv", dir);
   r = ver_table_read(path, enames, 13, 5, &in->en, err, errlen);
   in->have_en = r == 0;
-  if (r == 2 || inputs_agree(dir, grip_pulls(dir, vs), &in->ld, in->have_en ? &in->en : NULL, err, errlen)) {
+  if (r == 2 || inputs_agree(dir, grip_pulls(vs), &in->ld, in->have_en ? &in->en : NULL, err, errlen)) {
     free_inputs(in);
     return 2;
   }
@@ -473,15 +644,16 @@ int ver_cmd_check(int argc, char **argv)
   const int pa = check_args(argc, argv, &o);
   if (pa)
     return pa == 1 ? 0 : 2;
-  const char *scene = o.scene, *dir = o.dir, *out = o.out, *pfile = o.pfile;
-  if (!scene || !dir) {
-    fprintf(stderr, PROG ": needs --scene SCENE and a run folder (usage: delam check --scene SCENE DIR)\n");
+  const char *dir = o.dir, *out = o.out, *pfile = o.pfile;
+  if (!dir) {
+    fprintf(stderr, PROG ": needs a run folder (usage: delam check [--scene SCENE] DIR)\n");
     return 2;
   }
   static ver_case c; /* large; one per process */
   memset(&c, 0, sizeof c);
-  char err[4800];
-  if (build_scene(scene, dir, o.method, o.h, o.ppc, o.sets, o.nset, &c.vs, err, sizeof err)) {
+  char err[4800], sname[64];
+  if (run_finished(dir, folder_is_ours(dir), sname, sizeof sname, err, sizeof err) ||
+      judged_scene(&o, sname, &c.vs, err, sizeof err)) {
     fprintf(stderr, PROG ": %s\n", err);
     return 2;
   }

@@ -8,7 +8,12 @@
 #                area under it (the energy the curve dissipates) is twice the paper's
 #                U0 H / 2: exit 1, naming W_ext_final;
 #   unusable     a missing column, a bad number, no load.csv: exit 2, naming file,
-#                line and column.
+#                line and column;
+#   own-scene    a delam run with --set decohesion.U0 = 2 x the file's: `delam check DIR`
+#                judges it against its own scene.ini (D_final's reference is the set U0
+#                times the file's H, worked out here), `--scene fig6 DIR` refuses it
+#                (exit 2, naming decohesion.U0 with both values), and `--scene fig6 --set
+#                decohesion.U0=...` agrees with the folder and judges it.
 # Prints TAP; exits 1 if a check failed.
 set -u
 delam=${1:?usage: check_check.sh path/to/delam SRC}
@@ -80,6 +85,27 @@ awk 'NR == 5 { print "abc,x9,0.25"; next } { print }' other/load.csv > bad2/load
 "$delam" check --scene "$scene" bad3 >out.txt 2>&1; rc=$?
 [ -z "$why" ] && { { [ $rc = 2 ] && grep -q "bad3/load.csv: no such file" out.txt; } || why="no load.csv: exit $rc, $(head -1 out.txt)"; }
 result unusable "$why"
+
+# a run of another problem than the scene file's: twice its U0
+u0=$(awk -F' *= *' '/^\[/ { s = $0 } s == "[decohesion]" && $1 == "U0" { print $2 + 0 }' "$scene")
+H=$(awk -F' *= *' '/^\[/ { s = $0 } s == "[bar]" && $1 == "H" { print $2 + 0 }' "$scene")
+u2=$(awk -v u="$u0" 'BEGIN { printf "%.17g", 2 * u }')
+"$delam" run "$scene" --h 8 --set decohesion.U0="$u2" --threads 1 --quiet --out twiceU0 >/dev/null 2>&1
+"$delam" check twiceU0 >out.txt 2>&1
+rc=$?
+why=""
+[ $rc = 0 ] || why="delam check DIR: exit $rc: $(grep -E 'FAIL|check:|delam check' out.txt | head -3)"
+ref=$(python3 -c 'import json, sys; print(next(c["reference"] for c in json.load(open(sys.argv[1]))["checks"] if c["name"] == "D_final"))' twiceU0/check.json 2>/dev/null)
+[ -z "$why" ] && ! awk -v r="$ref" -v u="$u2" -v h="$H" 'BEGIN { exit !(r != "" && (r - u * h) ^ 2 <= 1e-18 * (u * h) ^ 2) }' &&
+  why="D_final's reference is '$ref', not U0 $u2 x H $H"
+"$delam" check --scene "$scene" twiceU0 >out.txt 2>&1
+rc=$?
+[ -z "$why" ] && { { [ $rc = 2 ] && grep -q "twiceU0/scene.ini: .* decohesion.U0 ($u0 in fig6, $u2 in the run)" out.txt; } ||
+  why="--scene fig6 on the U0 run: exit $rc, $(head -c 300 out.txt)"; }
+"$delam" check --scene "$scene" --set decohesion.U0="$u2" twiceU0 >out.txt 2>&1
+rc=$?
+[ -z "$why" ] && [ $rc != 0 ] && why="--scene fig6 --set decohesion.U0=$u2: exit $rc, $(head -c 300 out.txt)"
+result own-scene "$why"
 
 echo "1..$n"
 [ "$fail" = 0 ]
