@@ -256,7 +256,8 @@ void ver_foreign_measure(ver_case *c, const ver_table *ld, const ver_table *en, 
   /* separation by the load, with the run's window of 4 L / c in delta */
   const double cw = sqrt(sc->E / (1.0 - sc->nu * sc->nu) / sc->rho);
   const double step = (d[n - 1] - d[0]) / (double)(n - 1);
-  const long win = step > 0 ? (long)fmax(1.0, ceil(4.0 * sc->L / cw * sc->speed / step)) : 1;
+  /* at most every row (a window past the rows says no more, and the count must fit a long) */
+  const long win = step > 0 ? (long)fmin((double)n, fmax(1.0, ceil(4.0 * sc->L / cw * sc->speed / step))) : 1;
   ver_sep sep;
   c->delta_sep = NAN;
   if (ver_sep_init(&sep, sc->H, sc->h, sc->ppc, win, c->vs.sep_load_frac) == 0) {

@@ -4,6 +4,7 @@
 #include <float.h>
 #include <math.h>
 #include <stddef.h>
+#include <stdio.h>
 #include <stdlib.h>
 
 #include <gsl/gsl_fit.h>
@@ -340,39 +341,116 @@ double ver_curve_err_bar(const ana_bar *b, const double *delta, const double *P,
   return ver_curve_l2(delta, P, n, delta_end, b->Pmax, bar_load, b, maxdev, points);
 }
 
-/* Distance from (x, y) to the polyline (px, py) of m points. */
-static double poly_dist(const double *px, const double *py, size_t m, double x, double y)
+/* The analytic path of ver_curve_path in (delta / delta_peak, P / Pmax): the elastic
+ * line, the softening branch at PATH_NS + 1 points, then P = 0 (one long segment), and
+ * the branch's segments in blocks of PATH_BLK with their bounding boxes, so that a distance is
+ * found without visiting every segment: a block whose box is no nearer than the best
+ * segment so far cannot hold a nearer one.  Where the branch's P never rises (every
+ * bar: P falls with sigma*, eq. 34) the blocks are ordered in P and the search runs out
+ * from the block at the point's P, stopping each way once the P gap alone is no nearer. */
+enum { PATH_NS = 2000, PATH_NP = PATH_NS + 3, PATH_BLK = 32, PATH_NB = (PATH_NS + PATH_BLK - 1) / PATH_BLK };
+typedef struct {
+  double x[PATH_NP], y[PATH_NP];        /* the path's points; segment j joins j and j + 1 */
+  double bx0[PATH_NB], bx1[PATH_NB];    /* block b: the branch's segments 1 + b PATH_BLK  */
+  double by0[PATH_NB], by1[PATH_NB];    /* .. + PATH_BLK - 1: x and y bounds of their points */
+  int falls;                            /* 1: y never rises along the branch              */
+} path_poly;
+
+/* The first and one past the last segment of block b. */
+static int blk_first(int b)
 {
-  double best = INFINITY;
-  for (size_t j = 0; j + 1 < m; j++) {
-    const double ax = px[j], ay = py[j], bx = px[j + 1] - ax, by = py[j + 1] - ay, l2 = bx * bx + by * by;
-    double t = l2 > 0.0 ? ((x - ax) * bx + (y - ay) * by) / l2 : 0.0;
-    t = t < 0.0 ? 0.0 : t > 1.0 ? 1.0 : t;
-    const double dx = x - ax - t * bx, dy = y - ay - t * by;
-    best = fmin(best, dx * dx + dy * dy);
+  return 1 + b * PATH_BLK;
+}
+static int blk_end(int b)
+{
+  return 1 + (b + 1) * PATH_BLK < PATH_NS + 1 ? 1 + (b + 1) * PATH_BLK : PATH_NS + 1;
+}
+
+static void path_blocks(path_poly *pp)
+{
+  pp->falls = 1;
+  for (int j = 2; j <= PATH_NS + 1; j++)
+    pp->falls = pp->falls && pp->y[j] <= pp->y[j - 1];
+  for (int b = 0; b < PATH_NB; b++) {
+    const int j0 = blk_first(b), j1 = blk_end(b);
+    pp->bx0[b] = pp->bx1[b] = pp->x[j0];
+    pp->by0[b] = pp->by1[b] = pp->y[j0];
+    for (int j = j0 + 1; j <= j1; j++) { /* segment j - 1 ends at point j */
+      pp->bx0[b] = fmin(pp->bx0[b], pp->x[j]);
+      pp->bx1[b] = fmax(pp->bx1[b], pp->x[j]);
+      pp->by0[b] = fmin(pp->by0[b], pp->y[j]);
+      pp->by1[b] = fmax(pp->by1[b], pp->y[j]);
+    }
+  }
+}
+
+/* Squared distance from (x, y) to segment j (points j, j + 1). */
+static double seg_d2(const path_poly *pp, int j, double x, double y)
+{
+  const double ax = pp->x[j], ay = pp->y[j], bx = pp->x[j + 1] - ax, by = pp->y[j + 1] - ay, l2 = bx * bx + by * by;
+  double t = l2 > 0.0 ? ((x - ax) * bx + (y - ay) * by) / l2 : 0.0;
+  t = t < 0.0 ? 0.0 : t > 1.0 ? 1.0 : t;
+  const double dx = x - ax - t * bx, dy = y - ay - t * by;
+  return dx * dx + dy * dy;
+}
+
+/* The nearest of block b's segments to (x, y) into *best, unless its box is no nearer;
+ * returns the squared gap in y alone between the point and the box. */
+static double path_block(const path_poly *pp, int b, double x, double y, double *best)
+{
+  const double gx = x < pp->bx0[b] ? pp->bx0[b] - x : x > pp->bx1[b] ? x - pp->bx1[b] : 0.0;
+  const double gy = y < pp->by0[b] ? pp->by0[b] - y : y > pp->by1[b] ? y - pp->by1[b] : 0.0;
+  if (gx * gx + gy * gy < *best)
+    for (int j = blk_first(b); j < blk_end(b); j++)
+      *best = fmin(*best, seg_d2(pp, j, x, y));
+  return gy * gy;
+}
+
+/* Distance from (x, y) to the path: the minimum over its segments (the blocks skipped
+ * hold none nearer). */
+static double path_dist(const path_poly *pp, double x, double y)
+{
+  double best = fmin(seg_d2(pp, 0, x, y), seg_d2(pp, PATH_NP - 2, x, y)); /* the elastic line, the tail */
+  if (!pp->falls) {
+    for (int b = 0; b < PATH_NB; b++)
+      path_block(pp, b, x, y, &best);
+    return sqrt(best);
+  }
+  int b0 = 0; /* the first block whose lowest y is at or below the point's */
+  while (b0 < PATH_NB - 1 && pp->by0[b0] > y)
+    b0++;
+  for (int b = b0; b >= 0 && path_block(pp, b, x, y, &best) < best; b--) {
+  }
+  for (int b = b0 + 1; b < PATH_NB && path_block(pp, b, x, y, &best) < best; b++) {
   }
   return sqrt(best);
 }
 
+/* Points per row of the run's polyline at most: a longer row (an outlier) is sampled at
+ * this many evenly spaced points, each weighing for the ds-spaced points it stands for,
+ * so the work is linear in the rows whatever the values. */
+#define PATH_MAX_PER_ROW 4096
+
 double ver_curve_path(const ana_bar *b, const double *delta, const double *P, size_t n, double *d5)
 {
-  enum { NS = 2000 };          /* points of the softening branch                     */
   const double ds = 0.002;     /* spacing of the run's points along its polyline     */
-  double dpk, Ppk, px[NS + 3], py[NS + 3];
+  double dpk, Ppk;
   if (d5)
     *d5 = NAN;
-  if (n == 0 || !(b->Pmax > 0.0))
+  path_poly *pp = n > 0 && b->Pmax > 0.0 ? malloc(sizeof *pp) : NULL; /* 96 KiB: not on the stack */
+  if (!pp)
     return NAN;
   ana_bar_softening_point(b, 1.0, &dpk, &Ppk);
-  px[0] = py[0] = 0.0;
-  for (int k = 0; k <= NS; k++) { /* sigma* from 1 to 0 */
+  pp->x[0] = pp->y[0] = 0.0;
+  for (int k = 0; k <= PATH_NS; k++) { /* sigma* from 1 to 0 */
     double d, p;
-    ana_bar_softening_point(b, 1.0 - (double)k / NS, &d, &p);
-    px[k + 1] = d / dpk;
-    py[k + 1] = p / b->Pmax;
+    ana_bar_softening_point(b, 1.0 - (double)k / PATH_NS, &d, &p);
+    pp->x[k + 1] = d / dpk;
+    pp->y[k + 1] = p / b->Pmax;
   }
-  px[NS + 2] = px[NS + 1] + 1e3;
-  py[NS + 2] = 0.0;
+  pp->x[PATH_NS + 2] = pp->x[PATH_NS + 1] + 1e3;
+  pp->y[PATH_NS + 2] = 0.0;
+  path_blocks(pp);
   size_t ipk = 0, end = n - 1;
   for (size_t i = 1; i < n; i++)
     if (P[i] > P[ipk])
@@ -382,16 +460,19 @@ double ver_curve_path(const ana_bar *b, const double *delta, const double *P, si
       end = i;
       break;
     }
-  double s = 0.0, x0 = 0.0, y0 = 0.0;
-  size_t m = 0;
+  double s = 0.0, m = 0.0, x0 = 0.0, y0 = 0.0;
   for (size_t i = 0; i <= end; i++) {
     const double x1 = delta[i] / dpk, y1 = P[i] / b->Pmax, len = hypot(x1 - x0, y1 - y0);
-    const int k = (int)ceil(len / ds);
-    for (int j = 1; j <= k; j++) {
-      const double t = (double)j / k, e = poly_dist(px, py, NS + 3, x0 + t * (x1 - x0), y0 + t * (y1 - y0));
-      s += e * e;
-      m++;
+    if (!isfinite(len)) {
+      free(pp);
+      return DBL_MAX; /* a row beyond the doubles once scaled: as far as can be, and finite */
     }
+    const double kt = ceil(len / ds), k = fmin(kt, PATH_MAX_PER_ROW), w = k > 0.0 ? kt / k : 0.0;
+    for (double j = 1; j <= k; j++) {
+      const double t = j / k, e = path_dist(pp, x0 + t * (x1 - x0), y0 + t * (y1 - y0));
+      s += w * e * e;
+    }
+    m += kt;
     if (d5 && i > ipk && isnan(*d5) && P[i] <= 0.05 * b->Pmax && P[i - 1] > 0.05 * b->Pmax) {
       const double f = (P[i - 1] - 0.05 * b->Pmax) / (P[i - 1] - P[i]);
       double da, pa;
@@ -401,7 +482,10 @@ double ver_curve_path(const ana_bar *b, const double *delta, const double *P, si
     x0 = x1;
     y0 = y1;
   }
-  return m ? sqrt(s / (double)m) : NAN;
+  free(pp);
+  if (!(m > 0.0))
+    return NAN;
+  return isfinite(s) && isfinite(m) ? sqrt(s / m) : DBL_MAX;
 }
 
 typedef struct {
@@ -409,20 +493,30 @@ typedef struct {
   size_t n;
 } ref_rows;
 
-/* The reference rows' load at delta: linear between rows, from (0, 0) to the first. */
+/* The reference rows' load at delta: linear between rows, from (0, 0) to the first.  The
+ * rows' delta never falls (ver_curve_err_curve stops them at a snapback), so the row is
+ * found by bisection: the curve error stays linear in the rows (times their log). */
 static double rows_load(const void *ctx, double delta)
 {
   const ref_rows *q = ctx;
-  double d0 = 0.0, P0 = 0.0;
-  for (size_t i = 0; i < q->n; i++) {
-    if (delta <= q->d[i]) {
-      const double w = q->d[i] > d0 ? (delta - d0) / (q->d[i] - d0) : 1.0;
-      return P0 + w * (q->P[i] - P0);
-    }
-    d0 = q->d[i];
-    P0 = q->P[i];
+  if (q->n == 0)
+    return 0.0;
+  if (delta <= q->d[0]) {
+    const double w = q->d[0] > 0.0 ? delta / q->d[0] : 1.0;
+    return w * q->P[0];
   }
-  return P0;
+  if (!(delta <= q->d[q->n - 1]))
+    return q->P[q->n - 1];
+  size_t lo = 0, hi = q->n - 1; /* d[lo] < delta <= d[hi] */
+  while (hi - lo > 1) {
+    const size_t mid = lo + (hi - lo) / 2;
+    if (delta <= q->d[mid])
+      hi = mid;
+    else
+      lo = mid;
+  }
+  const double w = q->d[hi] > q->d[lo] ? (delta - q->d[lo]) / (q->d[hi] - q->d[lo]) : 1.0;
+  return q->P[lo] + w * (q->P[hi] - q->P[lo]);
 }
 
 double ver_curve_err_curve(const double *rd, const double *rP, size_t rn, const double *delta, const double *P,
@@ -442,6 +536,22 @@ static double wave_load(const void *ctx, double delta)
   return ana_wave_load_at(ctx, delta);
 }
 
+/* The wave solution is built a percent past the window, so that its last row has a
+ * sample beyond it. */
+#define WAVE_PAST 1.01
+
+int ver_curve_wave_size(const ana_bar *b, double speed, double rho, double xg, double thr, double delta_end,
+                        char *why, size_t len)
+{
+  const ana_wave_params wp = {speed, rho, xg, thr};
+  long n;
+  char e[300];
+  if (ana_wave_size(b, &wp, delta_end * WAVE_PAST, &n, e, sizeof e) != ANA_ERANGE)
+    return 0;
+  snprintf(why, len, "%s", e);
+  return 2;
+}
+
 double ver_curve_err_wave(const ana_bar *b, double speed, double rho, double xg, double thr, const double *delta,
                           const double *P, size_t n, double delta_end, double *maxdev, double *peak)
 {
@@ -451,7 +561,7 @@ double ver_curve_err_wave(const ana_bar *b, double speed, double rho, double xg,
     *maxdev = NAN;
   if (peak)
     *peak = NAN;
-  if (ana_wave_init(b, &wp, delta_end * 1.01, &w, NULL, 0) != ANA_OK)
+  if (ana_wave_init(b, &wp, delta_end * WAVE_PAST, &w, NULL, 0) != ANA_OK)
     return NAN;
   if (peak)
     *peak = ana_wave_peak(&w, NULL);

@@ -13,7 +13,10 @@
 #                judges it against its own scene.ini (D_final's reference is the set U0
 #                times the file's H, worked out here), `--scene fig6 DIR` refuses it
 #                (exit 2, naming decohesion.U0 with both values), and `--scene fig6 --set
-#                decohesion.U0=...` agrees with the folder and judges it.
+#                decohesion.U0=...` agrees with the folder and judges it;
+#   wave-cap     an iface90 run with U0 1000 (its separation 1e3 out, the exact solution
+#                at the grip speed 1.3e8 samples, 3 GB): exit 2 within 10 s, naming the
+#                cap, not a verdict after minutes.
 # Prints TAP; exits 1 if a check failed.
 set -u
 delam=${1:?usage: check_check.sh path/to/delam SRC}
@@ -106,6 +109,18 @@ rc=$?
 rc=$?
 [ -z "$why" ] && [ $rc != 0 ] && why="--scene fig6 --set decohesion.U0=$u2: exit $rc, $(head -c 300 out.txt)"
 result own-scene "$why"
+
+"$delam" run "$src/data/scenes/iface90.ini" --h 8 --set decohesion.U0=1000 --set run.end_delta=0.3 --threads 1 \
+  --quiet --out bigU0 >/dev/null 2>&1
+start=$(date +%s.%N)
+timeout 60 "$delam" check bigU0 >out.txt 2>&1
+rc=$?
+secs=$(awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN { printf "%.2f", b - a }')
+why=""
+{ [ $rc = 2 ] && grep -q "bigU0: curve_wave needs the exact solution at the grip speed, and .* above its cap of 4e+06" out.txt; } ||
+  why="exit $rc after $secs s: $(head -c 300 out.txt)"
+[ -z "$why" ] && awk -v s="$secs" 'BEGIN { exit !(s > 10) }' && why="$secs s"
+result wave-cap "$why"
 
 echo "1..$n"
 [ "$fail" = 0 ]
