@@ -102,8 +102,69 @@ typedef struct {
   char why[120];     /* why it is left out, when it is                      */
 } check_info;
 
-static int write_json(const char *out, const ver_case *c, const check_info *info, const char *dir,
-                      const char *scene_path, int have_en, const char *pfile, int rc)
+/* Checks left out because the closed form gives them no finite reference (a relative
+ * error needs one that is not 0), each with why: never a verdict on NaN or inf. */
+typedef struct {
+  int n;
+  char name[VER_NCHECK][24];
+  char why[VER_NCHECK][200];
+} check_skips;
+
+/* Why a check's reference is degenerate, into why. */
+static void skip_reason(const ver_case *c, const ver_check *k, char *why, size_t len)
+{
+  if (!strcmp(k->name, "k_soft") && c->have_ana && !isfinite(k->reference))
+    snprintf(why, len, "the closed form's softening branch is vertical at the peak (g = %.4g: the load drops at "
+             "one delta, eq. 36 gives dP/ddelta = %g): no finite slope to compare with", c->ana.g, k->reference);
+  else
+    snprintf(why, len, "the closed form gives reference %g%s: no %s error to judge", k->reference,
+             k->rel && k->reference == 0.0 ? " (a relative error needs one that is not 0)" : "",
+             k->rel ? "relative" : "finite");
+}
+
+/* The checks whose reference is not finite (or 0 where the error is relative) are taken
+ * out of c into sk, with why; the verdict is then that of the rest. */
+static void skip_degenerate(ver_case *c, check_skips *sk)
+{
+  sk->n = 0;
+  for (int j = 0; j < c->nchk;) {
+    const ver_check *k = &c->chk[j];
+    if (isfinite(k->reference) && !(k->rel && k->reference == 0.0)) {
+      j++;
+      continue;
+    }
+    snprintf(sk->name[sk->n], sizeof sk->name[0], "%s", k->name);
+    skip_reason(c, k, sk->why[sk->n], sizeof sk->why[0]);
+    sk->n++;
+    ver_policy_drop(c, sk->name[sk->n - 1]);
+  }
+}
+
+/* Why a measured number is NaN (the check fails on it): what the rows lack. */
+static const char *unmeasured(const ver_case *c, const char *name)
+{
+  const int st = c->vs.sc.solver == MPM_SOLVER_STATIC;
+  if (!strcmp(name, "k_elastic"))
+    return "fewer than 3 rows between 0.1 and 0.6 of the peak before it, and no row under that band followed by "
+           "one over it";
+  if (!strcmp(name, "k_soft"))
+    return "the load never falls under 0.2 of the peak after it";
+  if (!strcmp(name, "delta_sep"))
+    return st ? "the load never falls to run.sep_load of the peak after it"
+              : "the load's mean over a window of 4 L / c never stays under run.sep_load of the peak after it";
+  if (!strcmp(name, "load_after_sep"))
+    return "no separation detected (delta_sep)";
+  if (!strcmp(name, "crack_angle"))
+    return "fewer than 2 particles at or past the separation threshold, or no preferred direction among them";
+  if (!strncmp(name, "curve", 5))
+    return "no row inside the compared window";
+  if (!strcmp(name, "peak_P"))
+    return "no row with a finite load";
+  return "the rows give no finite value";
+}
+
+static int write_json(const char *out, const ver_case *c, const check_skips *sk, const check_info *info,
+                      const char *dir, const char *scene_path, int have_en, const char *pfile, int rc)
 {
   cJSON *o = cJSON_CreateObject();
   cJSON_AddNumberToObject(o, "schema", VER_SCHEMA_CHECK);
@@ -123,8 +184,19 @@ static int write_json(const char *out, const ver_case *c, const check_info *info
     cJSON_AddStringToObject(in, "particles", pfile);
   cJSON_AddStringToObject(o, "checked_by", ver_build_version());
   cJSON *ck = cJSON_AddArrayToObject(o, "checks");
-  for (int j = 0; j < c->nchk; j++)
-    cJSON_AddItemToArray(ck, ver_check_json(&c->chk[j]));
+  for (int j = 0; j < c->nchk; j++) {
+    cJSON *kj = ver_check_json(&c->chk[j]);
+    if (isnan(c->chk[j].measured)) /* null in the file: why */
+      cJSON_AddStringToObject(kj, "not_measured", unmeasured(c, c->chk[j].name));
+    cJSON_AddItemToArray(ck, kj);
+  }
+  cJSON *sj = cJSON_AddArrayToObject(o, "skipped");
+  for (int j = 0; j < sk->n; j++) {
+    cJSON *e = cJSON_CreateObject();
+    cJSON_AddStringToObject(e, "name", sk->name[j]);
+    cJSON_AddStringToObject(e, "reason", sk->why[j]);
+    cJSON_AddItemToArray(sj, e);
+  }
   if (have_en) { /* informational: not a check, never part of the verdict */
     cJSON *io = cJSON_AddObjectToObject(o, "info");
     cJSON_AddNumberToObject(io, "delta_sep", info->delta_sep);
@@ -236,10 +308,19 @@ static void info_measure(const ver_case *c, const ver_table *ld, const ver_table
 
 /* The verdict lines: every check, the informational line, then the case's verdict and
  * what was left out. */
-static void print_verdict(const char *label, const ver_case *c, const check_info *in, int have_en, int have_pt)
+static void print_verdict(const char *label, const ver_case *c, const check_skips *sk, const check_info *in,
+                          int have_en, int have_pt)
 {
-  for (int j = 0; j < c->nchk; j++)
-    ver_sweep_print_check(label, &c->chk[j]);
+  for (int j = 0; j < c->nchk; j++) {
+    const ver_check *k = &c->chk[j];
+    if (!isnan(k->measured)) /* inf is a value: as far as can be, and it fails */
+      ver_sweep_print_check(label, k);
+    else
+      printf("%-11s %s %s: not measured: %s (reference %.6g) -- %s\n", ver_verdict_name(k->verdict)[0] == 'f' ?
+             "FAIL" : ver_verdict_name(k->verdict), label, k->name, unmeasured(c, k->name), k->reference, k->note);
+  }
+  for (int j = 0; j < sk->n; j++)
+    printf("%-11s %s %s: not judged: %s\n", "skip", label, sk->name[j], sk->why[j]);
   if (in->have)
     printf("%-11s %s D_cut: %.6g at the detected separation (delta %.4g), %.6g after it; over U0 x area %.4g: "
            "%.4g and %.4g -- informational, never judged\n", "info", label, in->D_cut, in->delta_sep,
@@ -263,6 +344,10 @@ static void print_verdict(const char *label, const ver_case *c, const check_info
       if (c->chk[j].verdict == VER_FAIL)
         printf(" %s", c->chk[j].name);
   }
+  if (sk->n)
+    printf(" (%d checks, %d skipped; %s%s)\n", c->nchk, sk->n, have_en ? "with energy.csv" : "no energy.csv: D and energy balance left out",
+           have_pt ? ", with particles" : ", no particles: band width and angle left out");
+  else
   printf(" (%d checks; %s%s)\n", c->nchk, have_en ? "with energy.csv" : "no energy.csv: D and energy balance left out",
          have_pt ? ", with particles" : ", no particles: band width and angle left out");
 }
@@ -416,13 +501,15 @@ int ver_cmd_check(int argc, char **argv)
   snprintf(label, sizeof label, "%s vs %s-h%g-ppc%d", dir, c.vs.name, c.vs.sc.h, c.vs.sc.ppc);
   check_info info;
   info_measure(&c, ld, have_en ? &in.en : NULL, &info);
-  print_verdict(label, &c, &info, have_en, have_pt);
+  check_skips sk;
+  skip_degenerate(&c, &sk);
+  print_verdict(label, &c, &sk, &info, have_en, have_pt);
   const int rc = c.verdict == VER_FAIL ? 1 : 0;
   char jpath[1400];
   snprintf(jpath, sizeof jpath, "%s", out ? out : "");
   if (!out)
     snprintf(jpath, sizeof jpath, "%s/check.json", dir);
-  const int wrc = write_json(jpath, &c, &info, dir, c.vs.path, have_en, have_pt ? in.ppath : NULL, rc);
+  const int wrc = write_json(jpath, &c, &sk, &info, dir, c.vs.path, have_en, have_pt ? in.ppath : NULL, rc);
   const int werr = errno;
   free_inputs(&in);
   if (wrc) {

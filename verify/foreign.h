@@ -36,6 +36,13 @@ void ver_table_free(ver_table *t);
  * numbers are NaN. */
 void ver_foreign_measure(ver_case *c, const ver_table *ld, const ver_table *en, const ver_table *pt);
 
+/* The load test of separation on rows at any spacing: the first delta, after the peak of
+ * P, at which the means of P and Pf over the window (delta - span, delta] (each row's load
+ * standing for its interval since the row before) both fall below frac x the peak; the
+ * window's centre is returned (as separation.h's test on delam's evenly spaced rows, a
+ * window of span / spacing rows).  NaN if they never do.  Linear in the rows. */
+double ver_sep_window(const double *d, const double *P, const double *Pf, size_t n, double span, double frac);
+
 /* The first row i (0-based) where d[i] < d[i - 1], or -1: a delta that goes back. */
 long ver_foreign_backstep(const double *d, long n);
 

@@ -54,14 +54,23 @@ static double fit_rows(const double *x, const double *y, const size_t *idx, size
 double ver_elastic_slope(const double *delta, const double *P, size_t n, double peak, double delta_peak,
                          double lo, double hi)
 {
-  size_t *idx = malloc((n + 1) * sizeof *idx), m = 0;
+  size_t *idx = calloc(n + 1, sizeof *idx), m = 0;
   if (!idx)
     return NAN;
   for (size_t i = 0; i < n && delta[i] < delta_peak; i++)
     if (P[i] <= hi * peak && P[i] >= lo * peak)
       idx[m++] = i;
-  const double s = fit_rows(delta, P, idx, m);
+  double s = fit_rows(delta, P, idx, m);
   free(idx);
+  /* a rise that crosses the band within too few rows to fit (a curve given at its
+   * corners, the closed form's own): the secant from the last row under the band to the
+   * first over it, the peak's row included */
+  size_t under = n;
+  for (size_t i = 0; !isfinite(s) && i < n && delta[i] <= delta_peak; i++)
+    if (P[i] < lo * peak)
+      under = i;
+    else if (P[i] > hi * peak && under < n && delta[i] > delta[under])
+      s = (P[i] - P[under]) / (delta[i] - delta[under]);
   return s;
 }
 

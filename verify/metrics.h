@@ -25,7 +25,9 @@
 int ver_fit_line(const double *x, const double *y, size_t n, double *slope, double *icpt);
 
 /* Elastic slope dP/ddelta: least-squares line through the rows before delta_peak with
- * lo * peak <= P <= hi * peak.  NaN if fewer than 3 rows qualify. */
+ * lo * peak <= P <= hi * peak.  Where fewer than 3 rows qualify, the secant from the last
+ * row under lo * peak to the first over hi * peak (up to the peak's row): a rise that
+ * crosses the band within a row or two; NaN if the rows do not cross it. */
 double ver_elastic_slope(const double *delta, const double *P, size_t n, double peak, double delta_peak,
                          double lo, double hi);
 

@@ -299,8 +299,13 @@ static void test_ver_metrics_elastic_slope_by_hand(void **state)
   const double d[5] = {0.05, 0.1, 0.2, 0.3, 0.4}, P[5] = {5, 10, 21, 30, 50};
   assert_rel(ver_elastic_slope(d, P, 5, 50, 0.4, VER_ELASTIC_LO, VER_ELASTIC_HI), 3.725 / 0.036875, 1e-12,
              "elastic slope");
-  /* fewer than 3 rows in the band */
+  /* fewer than 3 rows in the band, and no row under it (5 >= 0.1 x 50) to start a secant */
   assert_true(isnan(ver_elastic_slope(d, P, 5, 50, 0.15, VER_ELASTIC_LO, VER_ELASTIC_HI)));
+  /* a line given at its corners (the closed form's curve: (0, 0), then the peak): the
+   * secant from the last row under 0.1 of the peak to the first over 0.6, 32 / 0.1875 */
+  const double cd[3] = {0.0, 0.1875, 0.2}, cP[3] = {0.0, 32.0, 30.0};
+  assert_rel(ver_elastic_slope(cd, cP, 3, 32.0, 0.1875, VER_ELASTIC_LO, VER_ELASTIC_HI), 32.0 / 0.1875, 1e-15,
+             "secant across the band");
 }
 
 /* Softening slope: peak 32 at delta 0.2, then P = 32 - 171 (delta - 0.2) sampled every
