@@ -189,6 +189,19 @@ int ver_table_read(const char *path, const char *const *names, int nname, int nr
   char *txt = table_text(path, &len, &rc, err, errlen);
   if (!txt)
     return rc;
+  const unsigned char *u = (const unsigned char *)txt;
+  if (len >= 2 && ((u[0] == 0xff && u[1] == 0xfe) || (u[0] == 0xfe && u[1] == 0xff))) {
+    snprintf(err, errlen, "%s:1: UTF-16 text (it starts with the byte-order mark 0x%02x 0x%02x): save it as UTF-8 "
+             "or ASCII", path, u[0], u[1]);
+    free(txt);
+    return 2;
+  }
+  /* a UTF-8 byte-order mark (spreadsheets write one) is no part of the header's first name */
+  const size_t bom = len >= 3 && u[0] == 0xef && u[1] == 0xbb && u[2] == 0xbf ? 3 : 0;
+  if (bom) {
+    memmove(txt, txt + bom, len - bom + 1);
+    len -= bom;
+  }
   long rows = 1;
   for (const char *s = txt; (s = memchr(s, '\n', len - (size_t)(s - txt))); s++)
     rows++;

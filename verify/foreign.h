@@ -21,7 +21,8 @@ typedef struct {
 
 /* Reads path: leading '#' lines and blank lines are skipped, the first other line is
  * the header; the columns names[0..nname-1] (nname <= VER_TABLE_MAXCOL), of which the
- * first nreq must be there, are read from every row, each field a finite number.
+ * first nreq must be there, are read from every row, each field a finite number.  A
+ * leading UTF-8 byte-order mark is skipped; UTF-16 text is refused, named.
  * Returns 0; 1 if the file does not exist; 2 with "file:line:column: what" (or
  * "file:line: ...") in err.  At least 3 data rows. */
 int ver_table_read(const char *path, const char *const *names, int nname, int nreq, ver_table *t, char *err,

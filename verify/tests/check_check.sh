@@ -25,7 +25,11 @@
 #   degenerate   g = 1 (fig6 with bar.L doubled): k_soft's reference is infinite, so it is
 #                skipped with the reason (not "reference inf, err -nan %"), and a curve
 #                whose first row, its peak, is at 1e300 prints no nan: each number that
-#                cannot be measured says why (k_elastic: no rows before the peak).
+#                cannot be measured says why (k_elastic: no rows before the peak);
+#   messages     a UTF-8 byte-order mark before the header is skipped (the curve is judged),
+#                UTF-16 text is refused naming its mark, a CSV over 256 MiB is refused
+#                naming that limit and docs/output-formats.md states the same limit, a
+#                check.json that cannot be written names the reason (strerror).
 # Prints TAP; exits 1 if a check failed.
 set -u
 delam=${1:?usage: check_check.sh path/to/delam SRC}
@@ -168,6 +172,31 @@ rc=$?
 [ -z "$why" ] && grep -qi 'nan' out.txt && why="peak 1e300: $(grep -i nan out.txt | head -2)"
 [ -z "$why" ] && ! grep -q 'k_elastic: not measured: fewer than 3 rows' out.txt && why="peak 1e300: k_elastic: $(grep k_elastic out.txt)"
 result degenerate "$why"
+
+mkdir bom utf16 large
+printf '\357\273\277' >bom/load.csv && cat other/load.csv >>bom/load.csv
+"$delam" check --scene "$scene" --h 4 --ppc 4 bom >out.txt 2>&1
+rc=$?
+why=""
+[ $rc = 0 ] || why="UTF-8 BOM: exit $rc: $(head -c 200 out.txt)"
+printf '\377\376d\000' >utf16/load.csv
+"$delam" check --scene "$scene" utf16 >out.txt 2>&1
+rc=$?
+[ -z "$why" ] && { { [ $rc = 2 ] && grep -q "utf16/load.csv:1: UTF-16 text (it starts with the byte-order mark 0xff 0xfe)" out.txt; } ||
+  why="UTF-16: exit $rc: $(head -c 200 out.txt)"; }
+truncate -s 257M large/load.csv
+"$delam" check --scene "$scene" large >out.txt 2>&1
+rc=$?
+[ -z "$why" ] && { { [ $rc = 2 ] && grep -q "large/load.csv: larger than 256 MiB: refused" out.txt; } ||
+  why="257 MiB: exit $rc: $(head -c 200 out.txt)"; }
+rm -f large/load.csv
+[ -z "$why" ] && ! grep -q "CSV file of at most 256 MiB" "$src/docs/output-formats.md" && why="docs/output-formats.md does not say 256 MiB"
+[ -z "$why" ] && grep -q "64 MiB" "$src/docs/output-formats.md" && why="docs/output-formats.md still says 64 MiB"
+"$delam" check --scene "$scene" --h 4 --ppc 4 --out nowhere/check.json other >out.txt 2>&1
+rc=$?
+[ -z "$why" ] && { { [ $rc = 1 ] && grep -q "nowhere/check.json: cannot write: No such file or directory" out.txt; } ||
+  why="--out nowhere/: exit $rc: $(grep 'delam check' out.txt | head -c 200)"; }
+result messages "$why"
 
 echo "1..$n"
 [ "$fail" = 0 ]
