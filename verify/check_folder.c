@@ -41,11 +41,22 @@ int ver_check_ours(const char *dir)
          has_schema_line(dir, "final.csv", "# delam particles.csv");
 }
 
+/* s for a one-line message: control bytes (a newline in a run's error) shown as '?'. */
+static const char *shown_line(const char *s, char *buf, size_t len)
+{
+  snprintf(buf, len, "%s", s);
+  for (char *p = buf; *p; p++)
+    if ((unsigned char)*p < 0x20 || *p == 0x7f)
+      *p = '?';
+  return buf;
+}
+
 /* What "complete" holds when it is not true, for a message: the JSON text of the value. */
 static void json_shown(const cJSON *v, char *buf, size_t len)
 {
   char *t = cJSON_PrintUnformatted(v);
-  snprintf(buf, len, "%.60s%s", t ? t : "?", t && strlen(t) > 60 ? "..." : "");
+  char line[64];
+  snprintf(buf, len, "%s%s", shown_line(t ? t : "?", line, sizeof line), t && strlen(t) > 60 ? "..." : "");
   free(t);
 }
 
@@ -108,11 +119,11 @@ int ver_check_finished(const char *dir, int ours, char *scene, size_t slen, char
   if (cJSON_IsString(s))
     snprintf(scene, slen, "%s", s->valuestring);
   int rc = 2;
-  char shown[80];
+  char shown[80], line[304];
   if (cJSON_IsFalse(c))
     snprintf(err, errlen, "%s says complete: false (the run stopped at delta %.6g%s%.300s): an interrupted or "
              "failed run is not judged", path, cJSON_IsNumber(d) ? d->valuedouble : NAN,
-             cJSON_IsString(e) ? ": " : "", cJSON_IsString(e) ? e->valuestring : "");
+             cJSON_IsString(e) ? ": " : "", cJSON_IsString(e) ? shown_line(e->valuestring, line, sizeof line) : "");
   else if (c && !cJSON_IsTrue(c)) {
     json_shown(c, shown, sizeof shown);
     snprintf(err, errlen, "%s: \"complete\" is %s, not true: the run's record is damaged; not judged", path, shown);

@@ -16,7 +16,8 @@
 #   check-summary-*  a summary.json cut short, with text after its object, whose
 #                "complete" is "false", 0 or null, that is a FIFO or a directory, with
 #                scene.ini and without (-1, -0), or missing beside delam's energy.csv
-#                and final.csv alone: exit 2 naming the file and what it holds.
+#                and final.csv alone: exit 2 naming the file and what it holds, on one
+#                line (a newline in the run's error shown as '?': found by make fuzz-check).
 #   writer-*     one writer per output folder: a second run into a folder a first run
 #                is writing exits 2 naming the folder and the first's pid, and touches
 #                nothing (the first's scene.ini still says ppc 4, its summary.json is
@@ -122,6 +123,9 @@ for ini in 1 0; do
   sumcase fifo-$ini $ini fifo 'sc/summary.json: a FIFO, not a regular file'
   sumcase dir-$ini $ini dir 'sc/summary.json: a directory, not a regular file'
 done
+sumcase error-newline 1 '{"complete": false, "error": "line one
+line two"}' 'sc/summary.json says complete: false \(the run stopped at delta nan: line one\?line two\)'
+[ "$(wc -l <err.txt)" = 1 ] || result check-summary-one-line "the message has $(wc -l <err.txt) lines"
 sumcase none-0 0 none "sc: delam's files \(energy.csv or final.csv with its schema line\) but no summary.json"
 cp -r base raise
 awk -F, 'BEGIN { OFS = "," } /^[#t]/ { print; next } { if ($2 > 1) $3 = 0.9; print }' base/load.csv >raise/load.csv
