@@ -4,13 +4,14 @@
 #   make check-asan   the kernel, analytic, verify unit and robustness tests under AddressSanitizer + UBSan
 #   make fuzz     build the libFuzzer target for the scene parser and run it FUZZ_TIME seconds
 #                 (installs clang and its libFuzzer runtime when missing)
+#   make fuzz-check   the same for delam check's readers (load.csv, summary.json)
 BUILD     ?= build
 MESONFLAGS ?=
 DEBS = meson ninja-build pkg-config gcc libgsl-dev libcmocka-dev libinih-dev \
        libcjson-dev libsuitesparse-dev gnuplot-nox parallel
 SUDO = $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-.PHONY: all deps build check check-asan fuzz fuzz-deps report report-full bench docs-keys clean
+.PHONY: all deps build check check-asan fuzz fuzz-check fuzz-deps report report-full bench docs-keys clean
 
 all: build
 
@@ -75,6 +76,20 @@ fuzz-deps:
 fuzz: deps fuzz-deps build-fuzz/fuzz_scene
 	build-fuzz/fuzz_scene -max_total_time=$(FUZZ_TIME) -dict=fuzz/scene.dict -max_len=8192 \
 	  -artifact_prefix=build-fuzz/ -print_final_stats=1 build-fuzz/corpus fuzz/corpus data/scenes data/bad
+
+# delam check's readers: foreign.c (CSV) and check_folder.c (summary.json) built with
+# the fuzzer, the rest they call from the meson build's libraries.  Seeds: fuzz/corpus-check.
+FUZZ_CHECK_SRC = fuzz/fuzz_check.c verify/foreign.c verify/check_folder.c verify/io.c verify/datadir.c
+FUZZ_CHECK_LIBS = $(BUILD)/verify/libver.a $(BUILD)/verify/libverscene.a $(BUILD)/kernel/libmpm.a $(BUILD)/analytic/libana.a
+build-fuzz/fuzz_check: $(FUZZ_CHECK_SRC) verify/foreign.h verify/check_folder.h build
+	@mkdir -p build-fuzz/corpus-check
+	$(FUZZ_CC) -g -O1 -std=c11 -D_POSIX_C_SOURCE=200809L -Wall -Wextra -Wno-unknown-pragmas -Wno-psabi \
+	  -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined -Ikernel -Ianalytic -Iverify \
+	  -I$(BUILD)/verify $(FUZZ_CHECK_SRC) $(FUZZ_CHECK_LIBS) -fopenmp -lcjson -linih -lgsl -lgslcblas -lumfpack -lm -o $@
+
+fuzz-check: deps fuzz-deps build-fuzz/fuzz_check
+	build-fuzz/fuzz_check -max_total_time=$(FUZZ_TIME) -max_len=8192 -artifact_prefix=build-fuzz/ \
+	  -print_final_stats=1 build-fuzz/corpus-check fuzz/corpus-check
 
 report: build
 	$(BUILD)/delam report

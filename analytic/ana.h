@@ -9,7 +9,7 @@
 #ifndef DELAM_ANA_H
 #define DELAM_ANA_H
 
-enum { ANA_OK = 0, ANA_EINVAL = 1, ANA_EFAIL = 2 };
+enum { ANA_OK = 0, ANA_EINVAL = 1, ANA_EFAIL = 2, ANA_ERANGE = 3 /* a table too large to hold */ };
 
 typedef struct {
   double alpha_deg; /* laminate angle from the x-axis, (0, 90] deg            */
@@ -89,7 +89,13 @@ typedef struct {
 } ana_wave;
 
 /* Solves to delta_end; ANA_EINVAL (message in err) for a bar or parameters outside the
- * above, ANA_EFAIL if out of memory.  *out owns its samples: ana_wave_free. */
+ * above, ANA_ERANGE (message in err) where it would take more than ANA_WAVE_MAX_SAMPLES
+ * time samples (3 arrays of doubles that long: 96 MiB; iface90.ini takes 5e4),
+ * ANA_EFAIL if out of memory.  *out owns its samples: ana_wave_free. */
+#define ANA_WAVE_MAX_SAMPLES 4000000
+/* ana_wave_init's checks alone, and the samples it would take in *n: ANA_OK, ANA_EINVAL
+ * or ANA_ERANGE, with the message in err. */
+int ana_wave_size(const ana_bar *bar, const ana_wave_params *wp, double delta_end, long *n, char *err, int errlen);
 int ana_wave_init(const ana_bar *bar, const ana_wave_params *wp, double delta_end, ana_wave *out, char *err,
                   int errlen);
 void ana_wave_free(ana_wave *w);

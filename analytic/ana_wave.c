@@ -80,12 +80,10 @@ void ana_wave_free(ana_wave *w)
   w->n = 0;
 }
 
-int ana_wave_init(const ana_bar *bar, const ana_wave_params *wp, double delta_end, ana_wave *out, char *err,
-                  int errlen)
+int ana_wave_size(const ana_bar *bar, const ana_wave_params *wp, double delta_end, long *n, char *err, int errlen)
 {
   const ana_params *p = &bar->p;
-  out->P = NULL;
-  out->n = 0;
+  *n = 0;
   if (fabs(p->alpha_deg - 90.0) > 1e-9)
     return bad(err, errlen, "the wave solution is 1-D: alpha must be 90 deg");
   if (fabs(p->q - 1.0) > 1e-12 || fabs(p->s0 - p->snf) > 1e-12 * p->snf)
@@ -98,6 +96,31 @@ int ana_wave_init(const ana_bar *bar, const ana_wave_params *wp, double delta_en
     return bad(err, errlen, "the separation threshold must lie in (0, 1]");
   if (!(isfinite(delta_end) && delta_end > 0.0))
     return bad(err, errlen, "the wave solution needs delta_end > 0");
+  const double c = sqrt(p->E / wp->rho), dt = fmin(wp->xg / c, (p->L - wp->xg) / c) / ANA_WAVE_SUB; /* as init's */
+  /* counted in double first: a slow grip or a large U0 (which puts the separation far
+   * out) asks for more samples than memory, or a long, holds */
+  const double t_end = delta_end / wp->speed, want = ceil(t_end / dt) + 1.0;
+  if (!(want <= ANA_WAVE_MAX_SAMPLES)) {
+    if (err && errlen > 0)
+      snprintf(err, (size_t)errlen, "the wave solution to delta %.6g would take %.3g time samples (delta / (speed "
+               "dt), dt = %.3g, a %d-th of the shorter transit), above its cap of %g", delta_end, want, dt,
+               ANA_WAVE_SUB, (double)ANA_WAVE_MAX_SAMPLES);
+    return ANA_ERANGE;
+  }
+  *n = (long)want;
+  return ANA_OK;
+}
+
+int ana_wave_init(const ana_bar *bar, const ana_wave_params *wp, double delta_end, ana_wave *out, char *err,
+                  int errlen)
+{
+  const ana_params *p = &bar->p;
+  out->P = NULL;
+  out->n = 0;
+  long n;
+  const int rc = ana_wave_size(bar, wp, delta_end, &n, err, errlen);
+  if (rc != ANA_OK)
+    return rc;
 
   const double V = wp->speed, c = sqrt(p->E / wp->rho), Z = wp->rho * c, snf = p->snf, U0 = p->U0;
   const double Tg = wp->xg / c, Tf = (p->L - wp->xg) / c;
@@ -105,10 +128,9 @@ int ana_wave_init(const ana_bar *bar, const ana_wave_params *wp, double delta_en
   const double kh = p->E * V / p->L; /* d sigma_h / dt */
   const double alpha = 2.0 * snf * snf / (U0 * Z), ea = exp(alpha * dt);
   const double wthr = wp->thr * U0 / snf;
-  const double t_end = delta_end / V;
-  /* load samples every dt from t = 0 to t_end; the plane's histories from the onset */
-  const long n = (long)ceil(t_end / dt) + 1;
-  const long nw = n > (long)(t0 / dt) ? n - (long)(t0 / dt) + 2 : 2;
+  /* load samples every dt to delta_end (n of them); the plane's histories from the onset
+   * (compared in double: t0 / dt may be past what a long holds) */
+  const long nw = (double)n > t0 / dt ? n - (long)(t0 / dt) + 2 : 2;
   double *P = malloc((size_t)n * sizeof *P), *A = malloc((size_t)nw * sizeof *A),
          *B = malloc((size_t)nw * sizeof *B);
   if (!P || !A || !B) {

@@ -15,7 +15,6 @@
 #include "foreign.h"
 #include "io.h"
 #include "metrics.h"
-#include "separation.h"
 
 void ver_table_free(ver_table *t)
 {
@@ -190,6 +189,19 @@ int ver_table_read(const char *path, const char *const *names, int nname, int nr
   char *txt = table_text(path, &len, &rc, err, errlen);
   if (!txt)
     return rc;
+  const unsigned char *u = (const unsigned char *)txt;
+  if (len >= 2 && ((u[0] == 0xff && u[1] == 0xfe) || (u[0] == 0xfe && u[1] == 0xff))) {
+    snprintf(err, errlen, "%s:1: UTF-16 text (it starts with the byte-order mark 0x%02x 0x%02x): save it as UTF-8 "
+             "or ASCII", path, u[0], u[1]);
+    free(txt);
+    return 2;
+  }
+  /* a UTF-8 byte-order mark (spreadsheets write one) is no part of the header's first name */
+  const size_t bom = len >= 3 && u[0] == 0xef && u[1] == 0xbb && u[2] == 0xbf ? 3 : 0;
+  if (bom) {
+    memmove(txt, txt + bom, len - bom + 1);
+    len -= bom;
+  }
   long rows = 1;
   for (const char *s = txt; (s = memchr(s, '\n', len - (size_t)(s - txt))); s++)
     rows++;
@@ -230,6 +242,110 @@ int ver_table_read(const char *path, const char *const *names, int nname, int nr
   return rc;
 }
 
+/* The load each row stands for over its interval (delta[i - 1], delta[i]] (delam's rows
+ * are interval averages), summed from the first row: the integral of P d delta; NULL if
+ * out of memory. */
+static double *load_integral(const double *d, const double *P, size_t n)
+{
+  double *I = malloc(sizeof(double) * (n ? n : 1));
+  if (!I)
+    return NULL;
+  for (size_t i = 0; i < n; i++)
+    I[i] = i ? I[i - 1] + P[i] * (d[i] - d[i - 1]) : 0.0;
+  return I;
+}
+
+/* The integral from the first row to x, d[0] <= x <= d[n - 1]; *j (a cursor kept between
+ * calls, so that a sweep in x is linear) becomes the row whose interval holds x. */
+static double integral_at(const double *d, const double *P, const double *I, size_t n, size_t *j, double x)
+{
+  while (*j + 1 < n && d[*j] < x)
+    (*j)++;
+  while (*j > 0 && d[*j - 1] >= x) /* a delta that went back (dissipation control) */
+    (*j)--;
+  return I[*j] - P[*j] * (d[*j] - x);
+}
+
+/* The window's means of both loads when it ends at x, the larger of the two over the
+ * threshold in *over (signed: below 0 both are under it). */
+typedef struct {
+  const double *d, *P, *Pf, *Ig, *If;
+  size_t n, jg, jf, kg, kf; /* cursors: the window's end and start, each load */
+  double span, thr;
+} sep_win;
+
+static double win_over(sep_win *w, double x)
+{
+  const double g = integral_at(w->d, w->P, w->Ig, w->n, &w->jg, x) -
+                   integral_at(w->d, w->P, w->Ig, w->n, &w->kg, x - w->span);
+  const double f = integral_at(w->d, w->Pf, w->If, w->n, &w->jf, x) -
+                   integral_at(w->d, w->Pf, w->If, w->n, &w->kf, x - w->span);
+  return fmax(fabs(g), fabs(f)) / w->span - w->thr;
+}
+
+double ver_sep_window(const double *d, const double *P, const double *Pf, size_t n, double span, double frac)
+{
+  double *Ig = load_integral(d, P, n), *If = load_integral(d, Pf, n), peak = -INFINITY, dpk = 0.0, sep = NAN;
+  if (!Ig || !If || !(span > 0.0) || n < 2) {
+    free(Ig);
+    free(If);
+    return NAN;
+  }
+  /* The means are piecewise linear in the window's end x, with corners where x or x -
+   * span meets a row: x runs over those corners in order (rows and rows + span merged),
+   * and the first crossing under the threshold is found on the line between two. */
+  sep_win w = {d, P, Pf, Ig, If, n, 0, 0, 0, 0, span, 0.0};
+  double xp = NAN, op = NAN; /* the last corner whose window was past the peak, its excess */
+  for (size_t i = 0, k = 0; (i < n || k < n) && isnan(sep);) {
+    const int row = k >= n || (i < n && d[i] <= d[k] + span);
+    const double x = row ? d[i] : d[k] + span;
+    if (row) {
+      if (P[i] > peak) {
+        peak = P[i];
+        dpk = d[i];
+        xp = NAN; /* a new peak: the windows before it do not count */
+      }
+      i++;
+    } else
+      k++;
+    if (x > d[n - 1] || !(peak > 0.0) || !(x - span > dpk) || x - span < d[0])
+      continue;
+    w.thr = frac * peak;
+    const double o = win_over(&w, x);
+    if (o < 0.0)
+      sep = isfinite(xp) && op > 0.0 ? xp + (x - xp) * op / (op - o) : x; /* on the line between the corners */
+    xp = x;
+    op = o;
+  }
+  free(Ig);
+  free(If);
+  return isfinite(sep) ? sep - 0.5 * span : NAN; /* the window's centre */
+}
+
+/* A static run: where its rows' load falls to the closed form's load at the separation
+ * threshold (0 at lambda = 1), on the line through the first row past the peak at or
+ * under sep_load of the peak and the row before it (extrapolated where the rows stop
+ * short of it: near separation the branch is straight, eq. 34 at q 1).  The rows are
+ * exact states, so the detection's margin (a fraction of the peak, there for a ringing
+ * explicit run) is not the separation: at a strong snapback it lies 10-17 % of delta_sep
+ * away from it.  NaN if the load never falls that far. */
+static double static_sep(const ver_case *c, const double *d, const double *P, size_t n)
+{
+  double Ps = 0.0, ds;
+  if (c->have_ana && c->vs.sc.sep_threshold < 1.0)
+    ana_bar_softening_point(&c->ana, 1.0 - pow(c->vs.sc.sep_threshold, c->ana.p.q), &ds, &Ps);
+  int past = 0;
+  for (size_t i = 0; i < n; i++) {
+    past = past || P[i] >= c->peak_P;
+    if (past && P[i] <= c->vs.sep_load_frac * c->peak_P) {
+      if (i == 0 || !(P[i - 1] > P[i]))
+        return d[i];
+      return d[i] + (Ps - P[i]) * (d[i] - d[i - 1]) / (P[i] - P[i - 1]);
+    }
+  }
+  return NAN;
+}
+
 void ver_foreign_measure(ver_case *c, const ver_table *ld, const ver_table *en, const ver_table *pt)
 {
   const mpm_scene *sc = &c->vs.sc;
@@ -253,34 +369,12 @@ void ver_foreign_measure(ver_case *c, const ver_table *ld, const ver_table *en, 
     c->curve_path = pts ? ver_curve_path(&c->ana, d, P, n, &c->delta5) : NAN;
   }
   ver_case_wave(c, d, P, n);
-  /* separation by the load, with the run's window of 4 L / c in delta */
+  /* separation by the load, over the run's window of 4 L / c in delta, whatever the
+   * rows' spacing; a static run's rows are states along its path (no window) */
   const double cw = sqrt(sc->E / (1.0 - sc->nu * sc->nu) / sc->rho);
-  const double step = (d[n - 1] - d[0]) / (double)(n - 1);
-  const long win = step > 0 ? (long)fmax(1.0, ceil(4.0 * sc->L / cw * sc->speed / step)) : 1;
-  ver_sep sep;
-  c->delta_sep = NAN;
-  if (ver_sep_init(&sep, sc->H, sc->h, sc->ppc, win, c->vs.sep_load_frac) == 0) {
-    double peak = -INFINITY, dpk = 0.0;
-    for (size_t i = 0; i < n; i++) {
-      if (P[i] > peak) {
-        peak = P[i];
-        dpk = d[i];
-      }
-      ver_sep_load(&sep, d[i], P[i], Pf[i], peak, dpk);
-    }
-    if (sep.delta_sep >= 0)
-      c->delta_sep = sep.delta_sep;
-    ver_sep_free(&sep);
-  }
-  if (sc->solver == MPM_SOLVER_STATIC) { /* rows are states, not a time series: no window */
-    c->delta_sep = NAN;
-    int past = 0;
-    for (size_t i = 0; i < n && isnan(c->delta_sep); i++) {
-      past = past || P[i] >= c->peak_P;
-      if (past && P[i] <= c->vs.sep_load_frac * c->peak_P)
-        c->delta_sep = d[i];
-    }
-  }
+  c->delta_sep = sc->solver == MPM_SOLVER_STATIC
+                     ? static_sep(c, d, P, n)
+                     : ver_sep_window(d, P, Pf, n, 4.0 * sc->L / cw * sc->speed, c->vs.sep_load_frac);
   c->P_after = ver_load_after(d, P, n, c->delta_sep, c->peak_P, &c->P_after_t, &c->P_after_c);
   if (en) { /* W_ext, KE, SE, W_coh, D */
     const size_t m = (size_t)en->n;

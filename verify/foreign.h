@@ -21,7 +21,8 @@ typedef struct {
 
 /* Reads path: leading '#' lines and blank lines are skipped, the first other line is
  * the header; the columns names[0..nname-1] (nname <= VER_TABLE_MAXCOL), of which the
- * first nreq must be there, are read from every row, each field a finite number.
+ * first nreq must be there, are read from every row, each field a finite number.  A
+ * leading UTF-8 byte-order mark is skipped; UTF-16 text is refused, named.
  * Returns 0; 1 if the file does not exist; 2 with "file:line:column: what" (or
  * "file:line: ...") in err.  At least 3 data rows. */
 int ver_table_read(const char *path, const char *const *names, int nname, int nreq, ver_table *t, char *err,
@@ -35,6 +36,13 @@ void ver_table_free(ver_table *t);
  * area under the load curve and D, the energy residual are NaN; without pt the band
  * numbers are NaN. */
 void ver_foreign_measure(ver_case *c, const ver_table *ld, const ver_table *en, const ver_table *pt);
+
+/* The load test of separation on rows at any spacing: the first delta, after the peak of
+ * P, at which the means of P and Pf over the window (delta - span, delta] (each row's load
+ * standing for its interval since the row before) both fall below frac x the peak; the
+ * window's centre is returned (as separation.h's test on delam's evenly spaced rows, a
+ * window of span / spacing rows).  NaN if they never do.  Linear in the rows. */
+double ver_sep_window(const double *d, const double *P, const double *Pf, size_t n, double span, double frac);
 
 /* The first row i (0-based) where d[i] < d[i - 1], or -1: a delta that goes back. */
 long ver_foreign_backstep(const double *d, long n);

@@ -4,6 +4,7 @@
 #include <float.h>
 #include <math.h>
 #include <stddef.h>
+#include <stdio.h>
 #include <stdlib.h>
 
 #include <gsl/gsl_fit.h>
@@ -53,14 +54,23 @@ static double fit_rows(const double *x, const double *y, const size_t *idx, size
 double ver_elastic_slope(const double *delta, const double *P, size_t n, double peak, double delta_peak,
                          double lo, double hi)
 {
-  size_t *idx = malloc((n + 1) * sizeof *idx), m = 0;
+  size_t *idx = calloc(n + 1, sizeof *idx), m = 0;
   if (!idx)
     return NAN;
   for (size_t i = 0; i < n && delta[i] < delta_peak; i++)
     if (P[i] <= hi * peak && P[i] >= lo * peak)
       idx[m++] = i;
-  const double s = fit_rows(delta, P, idx, m);
+  double s = fit_rows(delta, P, idx, m);
   free(idx);
+  /* a rise that crosses the band within too few rows to fit (a curve given at its
+   * corners, the closed form's own): the secant from the last row under the band to the
+   * first over it, the peak's row included */
+  size_t under = n;
+  for (size_t i = 0; !isfinite(s) && i < n && delta[i] <= delta_peak; i++)
+    if (P[i] < lo * peak)
+      under = i;
+    else if (P[i] > hi * peak && under < n && delta[i] > delta[under])
+      s = (P[i] - P[under]) / (delta[i] - delta[under]);
   return s;
 }
 
@@ -340,89 +350,35 @@ double ver_curve_err_bar(const ana_bar *b, const double *delta, const double *P,
   return ver_curve_l2(delta, P, n, delta_end, b->Pmax, bar_load, b, maxdev, points);
 }
 
-/* Distance from (x, y) to the polyline (px, py) of m points. */
-static double poly_dist(const double *px, const double *py, size_t m, double x, double y)
-{
-  double best = INFINITY;
-  for (size_t j = 0; j + 1 < m; j++) {
-    const double ax = px[j], ay = py[j], bx = px[j + 1] - ax, by = py[j + 1] - ay, l2 = bx * bx + by * by;
-    double t = l2 > 0.0 ? ((x - ax) * bx + (y - ay) * by) / l2 : 0.0;
-    t = t < 0.0 ? 0.0 : t > 1.0 ? 1.0 : t;
-    const double dx = x - ax - t * bx, dy = y - ay - t * by;
-    best = fmin(best, dx * dx + dy * dy);
-  }
-  return sqrt(best);
-}
-
-double ver_curve_path(const ana_bar *b, const double *delta, const double *P, size_t n, double *d5)
-{
-  enum { NS = 2000 };          /* points of the softening branch                     */
-  const double ds = 0.002;     /* spacing of the run's points along its polyline     */
-  double dpk, Ppk, px[NS + 3], py[NS + 3];
-  if (d5)
-    *d5 = NAN;
-  if (n == 0 || !(b->Pmax > 0.0))
-    return NAN;
-  ana_bar_softening_point(b, 1.0, &dpk, &Ppk);
-  px[0] = py[0] = 0.0;
-  for (int k = 0; k <= NS; k++) { /* sigma* from 1 to 0 */
-    double d, p;
-    ana_bar_softening_point(b, 1.0 - (double)k / NS, &d, &p);
-    px[k + 1] = d / dpk;
-    py[k + 1] = p / b->Pmax;
-  }
-  px[NS + 2] = px[NS + 1] + 1e3;
-  py[NS + 2] = 0.0;
-  size_t ipk = 0, end = n - 1;
-  for (size_t i = 1; i < n; i++)
-    if (P[i] > P[ipk])
-      ipk = i;
-  for (size_t i = ipk; i < n; i++)
-    if (P[i] <= 0.01 * b->Pmax) {
-      end = i;
-      break;
-    }
-  double s = 0.0, x0 = 0.0, y0 = 0.0;
-  size_t m = 0;
-  for (size_t i = 0; i <= end; i++) {
-    const double x1 = delta[i] / dpk, y1 = P[i] / b->Pmax, len = hypot(x1 - x0, y1 - y0);
-    const int k = (int)ceil(len / ds);
-    for (int j = 1; j <= k; j++) {
-      const double t = (double)j / k, e = poly_dist(px, py, NS + 3, x0 + t * (x1 - x0), y0 + t * (y1 - y0));
-      s += e * e;
-      m++;
-    }
-    if (d5 && i > ipk && isnan(*d5) && P[i] <= 0.05 * b->Pmax && P[i - 1] > 0.05 * b->Pmax) {
-      const double f = (P[i - 1] - 0.05 * b->Pmax) / (P[i - 1] - P[i]);
-      double da, pa;
-      ana_bar_softening_point(b, 0.05 * b->Pmax / Ppk, &da, &pa);
-      *d5 = (delta[i - 1] + f * (delta[i] - delta[i - 1]) - da) / dpk;
-    }
-    x0 = x1;
-    y0 = y1;
-  }
-  return m ? sqrt(s / (double)m) : NAN;
-}
-
 typedef struct {
   const double *d, *P;
   size_t n;
 } ref_rows;
 
-/* The reference rows' load at delta: linear between rows, from (0, 0) to the first. */
+/* The reference rows' load at delta: linear between rows, from (0, 0) to the first.  The
+ * rows' delta never falls (ver_curve_err_curve stops them at a snapback), so the row is
+ * found by bisection: the curve error stays linear in the rows (times their log). */
 static double rows_load(const void *ctx, double delta)
 {
   const ref_rows *q = ctx;
-  double d0 = 0.0, P0 = 0.0;
-  for (size_t i = 0; i < q->n; i++) {
-    if (delta <= q->d[i]) {
-      const double w = q->d[i] > d0 ? (delta - d0) / (q->d[i] - d0) : 1.0;
-      return P0 + w * (q->P[i] - P0);
-    }
-    d0 = q->d[i];
-    P0 = q->P[i];
+  if (q->n == 0)
+    return 0.0;
+  if (delta <= q->d[0]) {
+    const double w = q->d[0] > 0.0 ? delta / q->d[0] : 1.0;
+    return w * q->P[0];
   }
-  return P0;
+  if (!(delta <= q->d[q->n - 1]))
+    return q->P[q->n - 1];
+  size_t lo = 0, hi = q->n - 1; /* d[lo] < delta <= d[hi] */
+  while (hi - lo > 1) {
+    const size_t mid = lo + (hi - lo) / 2;
+    if (delta <= q->d[mid])
+      hi = mid;
+    else
+      lo = mid;
+  }
+  const double w = q->d[hi] > q->d[lo] ? (delta - q->d[lo]) / (q->d[hi] - q->d[lo]) : 1.0;
+  return q->P[lo] + w * (q->P[hi] - q->P[lo]);
 }
 
 double ver_curve_err_curve(const double *rd, const double *rP, size_t rn, const double *delta, const double *P,
@@ -442,6 +398,22 @@ static double wave_load(const void *ctx, double delta)
   return ana_wave_load_at(ctx, delta);
 }
 
+/* The wave solution is built a percent past the window, so that its last row has a
+ * sample beyond it. */
+#define WAVE_PAST 1.01
+
+int ver_curve_wave_size(const ana_bar *b, double speed, double rho, double xg, double thr, double delta_end,
+                        char *why, size_t len)
+{
+  const ana_wave_params wp = {speed, rho, xg, thr};
+  long n;
+  char e[300];
+  if (ana_wave_size(b, &wp, delta_end * WAVE_PAST, &n, e, sizeof e) != ANA_ERANGE)
+    return 0;
+  snprintf(why, len, "%s", e);
+  return 2;
+}
+
 double ver_curve_err_wave(const ana_bar *b, double speed, double rho, double xg, double thr, const double *delta,
                           const double *P, size_t n, double delta_end, double *maxdev, double *peak)
 {
@@ -451,7 +423,7 @@ double ver_curve_err_wave(const ana_bar *b, double speed, double rho, double xg,
     *maxdev = NAN;
   if (peak)
     *peak = NAN;
-  if (ana_wave_init(b, &wp, delta_end * 1.01, &w, NULL, 0) != ANA_OK)
+  if (ana_wave_init(b, &wp, delta_end * WAVE_PAST, &w, NULL, 0) != ANA_OK)
     return NAN;
   if (peak)
     *peak = ana_wave_peak(&w, NULL);

@@ -25,7 +25,9 @@
 int ver_fit_line(const double *x, const double *y, size_t n, double *slope, double *icpt);
 
 /* Elastic slope dP/ddelta: least-squares line through the rows before delta_peak with
- * lo * peak <= P <= hi * peak.  NaN if fewer than 3 rows qualify. */
+ * lo * peak <= P <= hi * peak.  Where fewer than 3 rows qualify, the secant from the last
+ * row under lo * peak to the first over hi * peak (up to the peak's row): a rise that
+ * crosses the band within a row or two; NaN if the rows do not cross it. */
 double ver_elastic_slope(const double *delta, const double *P, size_t n, double peak, double delta_peak,
                          double lo, double hi);
 
@@ -140,7 +142,9 @@ double ver_curve_err_bar(const ana_bar *b, const double *delta, const double *P,
  * the run's polyline from the origin to its first row past the peak with P <= 1 % of
  * Pmax.  *d5 (if not NULL) gets where the run's load first falls to 5 % of Pmax after
  * its peak, less the analytic branch's delta there, over delta_peak (NaN if it never
- * does).  NaN without rows. */
+ * does).  NaN without rows; DBL_MAX where the distance is beyond the doubles.  Linear in
+ * the rows whatever their values: a row longer than 4096 points is sampled at 4096, each
+ * weighing for the points it stands for. */
 double ver_curve_path(const ana_bar *b, const double *delta, const double *P, size_t n, double *d5);
 /* The distance of a run's curve from another run's (the rate's error of an explicit run:
  * its distance from the static run at the same h and ppc): ver_curve_l2 of (delta, P)
@@ -156,10 +160,16 @@ double ver_curve_err_curve(const double *rd, const double *rP, size_t rn, const 
 /* The same against the bar at the run's own grip speed (ana_wave: the 1-D wave solution
  * with the plane as a cohesive line xg from the grip; docs/verification.md "The exact
  * solution at the grip speed"), to delta_end.  NaN where that solution does not apply
- * (alpha other than 90, q other than 1, s0 other than snf) or cannot be built.  *peak (if
+ * (alpha other than 90, q other than 1, s0 other than snf) or cannot be built (larger than
+ * its cap: ver_curve_wave_size says so).  *peak (if
  * not NULL) gets that solution's peak load (NaN where it does not apply). */
 double ver_curve_err_wave(const ana_bar *b, double speed, double rho, double xg, double thr, const double *delta,
                           const double *P, size_t n, double delta_end, double *maxdev, double *peak);
+
+/* 2 with why where that solution applies but would be larger than analytic/ana.h's cap
+ * (ANA_WAVE_MAX_SAMPLES: a large U0 or a slow grip puts its end far out), else 0. */
+int ver_curve_wave_size(const ana_bar *b, double speed, double rho, double xg, double thr, double delta_end,
+                        char *why, size_t len);
 
 /* Where the curve error stops: the analytic end displacement at which lambda reaches the
  * separation threshold thr (eqs. 31, 34) - where the model is told to separate;

@@ -5,6 +5,7 @@
  * the analytic path by h, its fitted order and verdict; and the explicit runs' rate error,
  * measured as the distance of the explicit curve from the static one at the same h and ppc.
  */
+#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -72,9 +73,9 @@ static double path_tol(const rep_case *c)
   return c->bar.p.alpha_deg == 90.0 ? VER_PATH_TOL_90 : VER_PATH_TOL_INCLINED;
 }
 
-static void data_failed(const rep_ctx *r, const char *path)
+static void data_failed(const rep_ctx *r, const char *path, int e)
 {
-  fprintf(stderr, "delam report: %s: cannot write\n", path);
+  fprintf(stderr, "delam report: %s: cannot write: %s\n", path, strerror(e));
   if (r->io_bad)
     (*r->io_bad)++;
 }
@@ -90,7 +91,7 @@ void ver_report_write_static(report *R, FILE *vars)
     snprintf(path, sizeof path, "%s/%s", r->out, name);
     FILE *f = fopen(path, "w");
     if (!f)
-      data_failed(r, path);
+      data_failed(r, path, errno);
     if (f)
       fprintf(f, "h,curve_path,curve_err,abs_diss_err,cpu_s,complete,particles,rate_dist,explicit_err,"
                  "explicit_cpu_s\n");
@@ -115,10 +116,11 @@ void ver_report_write_static(report *R, FILE *vars)
       }
     }
     if (f) { /* a file not written whole is removed: no figure is drawn from part of it */
-      const int bad = ferror(f);
-      if (fclose(f) != 0 || bad) {
+      const int bad = ferror(f), e0 = errno; /* errno of the failed write, if one failed */
+      const int cl = fclose(f), e = cl != 0 ? errno : e0;
+      if (cl != 0 || bad) {
         remove(path);
-        data_failed(r, path);
+        data_failed(r, path, e ? e : EIO);
       }
     }
     rep_fit *ft = &R->sfits[s];

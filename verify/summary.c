@@ -218,7 +218,7 @@ int ver_summary_read(const char *dir, ver_summary_doc *d)
   d->damping_beta = jnum(o, "damping_beta"); /* NaN before time.damping_beta: none */
   d->speed = jnum(o, "speed");     /* NaN from a run before it was written */
   const double ppc = jnum(o, "ppc");
-  d->ppc = isfinite(ppc) ? (int)ppc : 0;
+  d->ppc = ppc >= 1 && ppc <= 1024 ? (int)ppc : 0; /* a scene's range; a value beyond an int is not cast */
   ver_summary *u = &d->u;
   u->complete = cJSON_IsTrue(cJSON_GetObjectItemCaseSensitive(o, "complete"));
   for (size_t i = 0; i < NNUMS; i++) {
@@ -227,10 +227,11 @@ int ver_summary_read(const char *dir, ver_summary_doc *d)
     if (NUMS[i].kind == F_DBL)
       memcpy(p, &v, sizeof v);
     else if (NUMS[i].kind == F_LONG) {
-      const long l = isfinite(v) ? (long)v : 0;
+      /* counts: a value outside what a long holds (a damaged file) reads as 0, not cast */
+      const long l = v > -9e18 && v < 9e18 ? (long)v : 0;
       memcpy(p, &l, sizeof l);
     } else {
-      const size_t z = isfinite(v) && v > 0 ? (size_t)v : 0;
+      const size_t z = v > 0 && v < 9e18 ? (size_t)v : 0;
       memcpy(p, &z, sizeof z);
     }
   }

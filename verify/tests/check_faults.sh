@@ -13,6 +13,11 @@
 #                for the bytes); a step back under dissipation control or from the
 #                static solver (which follows a snapback) is judged; an energy.csv of every 10th row is judged, its D dated by t;
 #                2,000,000 rows are judged within 10 s.
+#   check-summary-*  a summary.json cut short, with text after its object, whose
+#                "complete" is "false", 0 or null, that is a FIFO or a directory, with
+#                scene.ini and without (-1, -0), or missing beside delam's energy.csv
+#                and final.csv alone: exit 2 naming the file and what it holds, on one
+#                line (a newline in the run's error shown as '?': found by make fuzz-check).
 #   writer-*     one writer per output folder: a second run into a folder a first run
 #                is writing exits 2 naming the folder and the first's pid, and touches
 #                nothing (the first's scene.ini still says ppc 4, its summary.json is
@@ -84,13 +89,44 @@ result check-interrupted "$(expect 2 'summary.json says complete: false \(the ru
 cp -r base nosum && rm nosum/summary.json
 chk nosum
 result check-no-summary "$(expect 2 "scene.ini but no summary.json: the run has not finished")"
-cp -r base nosum2 && rm nosum2/scene.ini && echo '{"code": "another", "steps": 12}' >nosum2/summary.json
+# another code's folder: its files without delam's schema lines
+mkdir nosum2 && for f in load.csv energy.csv final.csv; do grep -v '^#' base/$f >nosum2/$f; done
+echo '{"code": "another", "steps": 12}' >nosum2/summary.json
 timeout 60 "$delam" check --scene "$scene" --h 4 --ppc 1 nosum2 >out.txt 2>err.txt
 rc=$?
 result check-foreign-summary "$([ "$rc" = 0 ] || echo "another code's summary.json without 'complete': exit $rc, $(head -c 200 err.txt)")"
 cp -r base badsum && echo 'not json' >badsum/summary.json
 chk badsum
-result check-damaged-summary "$(expect 2 'badsum/summary.json: cannot be read or is not JSON: the run.s record is damaged')"
+result check-damaged-summary "$(expect 2 'badsum/summary.json: not whole JSON \(unexpected text at byte 1 of its 9 bytes\): the run.s record is damaged')"
+# summary.json must be a regular file of one whole JSON object whose "complete" is
+# literally true, with scene.ini or without (the folder is still delam's: its energy.csv
+# and final.csv carry delam's schema lines)
+sumcase() { # sumcase ID KEEP-SCENE-INI WHAT EXPECTED: WHAT is the summary's text, fifo, dir or none
+  rm -rf sc && cp -r base sc && rm sc/summary.json
+  [ "$2" = 1 ] || rm sc/scene.ini
+  case $3 in
+    fifo) mkfifo sc/summary.json ;;
+    dir) mkdir sc/summary.json ;;
+    none) ;;
+    *) printf '%s' "$3" >sc/summary.json ;;
+  esac
+  timeout 10 "$delam" check --scene "$scene" --h 4 sc >out.txt 2>err.txt
+  rc=$?
+  result "check-summary-$1" "$(expect 2 "$4")"
+}
+for ini in 1 0; do
+  sumcase cut-$ini $ini '{"complete": false' 'sc/summary.json: not whole JSON \(it ends before the JSON does, after 18 of its 18 bytes\)'
+  sumcase string-$ini $ini '{"complete": "false"}' 'sc/summary.json: "complete" is "false", not true'
+  sumcase zero-$ini $ini '{"complete": 0}' 'sc/summary.json: "complete" is 0, not true'
+  sumcase null-$ini $ini '{"complete": null}' 'sc/summary.json: "complete" is null, not true'
+  sumcase trailing-$ini $ini '{"complete": true} {' 'sc/summary.json: not whole JSON \(unexpected text at byte 20 of its 20 bytes\)'
+  sumcase fifo-$ini $ini fifo 'sc/summary.json: a FIFO, not a regular file'
+  sumcase dir-$ini $ini dir 'sc/summary.json: a directory, not a regular file'
+done
+sumcase error-newline 1 '{"complete": false, "error": "line one
+line two"}' 'sc/summary.json says complete: false \(the run stopped at delta nan: line one\?line two\)'
+[ "$(wc -l <err.txt)" = 1 ] || result check-summary-one-line "the message has $(wc -l <err.txt) lines"
+sumcase none-0 0 none "sc: delam's files \(energy.csv or final.csv with its schema line\) but no summary.json"
 cp -r base raise
 awk -F, 'BEGIN { OFS = "," } /^[#t]/ { print; next } { if ($2 > 1) $3 = 0.9; print }' base/load.csv >raise/load.csv
 chk raise
@@ -100,14 +136,16 @@ awk -F, 'BEGIN { OFS = "," } /^[#t]/ { print; next } { if (++k == 5000) $2 -= 2.
 chk back
 result check-delta-back "$(expect 2 "back/load.csv: data row 5000: delta 0.5 is below the row before's 2.4995, but the grip only pulls")"
 cp -r back backdiss && sed -i 's/^control = grip/control = dissipation/' backdiss/scene.ini
-chk backdiss
+timeout 60 "$delam" check backdiss >out.txt 2>err.txt
+rc=$?
 why=""
 grep -q 'control = dissipation' backdiss/scene.ini || why="scene.ini has no 'control = dissipation'"
 [ "$rc" = 0 ] || [ "$rc" = 1 ] || why="not judged (exit $rc): $(head -c 200 err.txt)"
 result check-delta-back-dissipation "$why"
 # the static solver's own snapback (fig8: delta moves back from the peak's 0.43 to 0.19)
 "$delam" run "$src/data/scenes/fig8.ini" --h 8 --ppc 4 --solver static --threads 1 --quiet --out staticback >/dev/null 2>&1
-chk staticback
+timeout 60 "$delam" check staticback >out.txt 2>err.txt
+rc=$?
 why=""
 grep -q '^type = static' staticback/scene.ini || why="scene.ini has no 'type = static'"
 awk -F, '/^[#t]/ || !NF { next } { if (n++ && $2 < d - 0.01) back = 1; d = $2 } END { exit !back }' staticback/load.csv ||

@@ -13,6 +13,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 #include <cmocka.h>
 
@@ -298,8 +299,13 @@ static void test_ver_metrics_elastic_slope_by_hand(void **state)
   const double d[5] = {0.05, 0.1, 0.2, 0.3, 0.4}, P[5] = {5, 10, 21, 30, 50};
   assert_rel(ver_elastic_slope(d, P, 5, 50, 0.4, VER_ELASTIC_LO, VER_ELASTIC_HI), 3.725 / 0.036875, 1e-12,
              "elastic slope");
-  /* fewer than 3 rows in the band */
+  /* fewer than 3 rows in the band, and no row under it (5 >= 0.1 x 50) to start a secant */
   assert_true(isnan(ver_elastic_slope(d, P, 5, 50, 0.15, VER_ELASTIC_LO, VER_ELASTIC_HI)));
+  /* a line given at its corners (the closed form's curve: (0, 0), then the peak): the
+   * secant from the last row under 0.1 of the peak to the first over 0.6, 32 / 0.1875 */
+  const double cd[3] = {0.0, 0.1875, 0.2}, cP[3] = {0.0, 32.0, 30.0};
+  assert_rel(ver_elastic_slope(cd, cP, 3, 32.0, 0.1875, VER_ELASTIC_LO, VER_ELASTIC_HI), 32.0 / 0.1875, 1e-15,
+             "secant across the band");
 }
 
 /* Softening slope: peak 32 at delta 0.2, then P = 32 - 171 (delta - 0.2) sampled every
@@ -512,6 +518,122 @@ static void test_ver_metrics_load_after(void **state)
   assert_true(isnan(t) && isnan(c));
 }
 
+/* ver_curve_path as its definition reads, by brute force: the analytic path at 2001
+ * points of sigma* (then P = 0), every segment visited for every point, points every
+ * 0.002 along the run's polyline from the origin to its first row past the peak at or
+ * under 1 % of Pmax.  An independent copy of the documented rule for small inputs. */
+static double path_brute(const ana_bar *b, const double *d, const double *P, size_t n)
+{
+  enum { M = 2004 };
+  static double px[M], py[M];
+  double dpk, Ppk;
+  ana_bar_softening_point(b, 1.0, &dpk, &Ppk);
+  px[0] = py[0] = 0.0;
+  for (int k = 0; k <= 2000; k++) {
+    double x, y;
+    ana_bar_softening_point(b, 1.0 - k / 2000.0, &x, &y);
+    px[k + 1] = x / dpk;
+    py[k + 1] = y / b->Pmax;
+  }
+  px[2002] = px[2001] + 1e3;
+  py[2002] = 0.0;
+  size_t ipk = 0, end = n - 1;
+  for (size_t i = 1; i < n; i++)
+    if (P[i] > P[ipk])
+      ipk = i;
+  for (size_t i = ipk; i < n; i++)
+    if (P[i] <= 0.01 * b->Pmax) {
+      end = i;
+      break;
+    }
+  double s = 0.0, m = 0.0, x0 = 0.0, y0 = 0.0;
+  for (size_t i = 0; i <= end; i++) {
+    const double x1 = d[i] / dpk, y1 = P[i] / b->Pmax;
+    const long k = (long)ceil(hypot(x1 - x0, y1 - y0) / 0.002);
+    for (long j = 1; j <= k; j++) {
+      const double x = x0 + (double)j / (double)k * (x1 - x0), y = y0 + (double)j / (double)k * (y1 - y0);
+      double best = INFINITY;
+      for (int q = 0; q + 1 < 2003; q++) {
+        const double ax = px[q], ay = py[q], bx = px[q + 1] - ax, by = py[q + 1] - ay, l2 = bx * bx + by * by;
+        const double t = l2 > 0 ? fmin(1.0, fmax(0.0, ((x - ax) * bx + (y - ay) * by) / l2)) : 0.0;
+        best = fmin(best, (x - ax - t * bx) * (x - ax - t * bx) + (y - ay - t * by) * (y - ay - t * by));
+      }
+      s += best;
+      m += 1.0;
+    }
+    x0 = x1;
+    y0 = y1;
+  }
+  return sqrt(s / m);
+}
+
+/* curve_path against path_brute on rows that wander about the path (fig6's bar, and
+ * Fig. 8's, which snaps back): the searched distance is the brute-force one. */
+static void test_ver_metrics_curve_path_brute(void **state)
+{
+  (void)state;
+  ana_params p;
+  ana_params_default(&p);
+  for (int bar = 0; bar < 2; bar++) {
+    if (bar) {
+      p.alpha_deg = 60;
+      p.snf = p.s0 = 10;
+      p.stf = 1;
+    }
+    ana_bar b;
+    assert_int_equal(ana_bar_init(&p, &b, NULL, 0), ANA_OK);
+    enum { N = 240 };
+    double d[N], P[N];
+    for (int i = 0; i < N; i++) { /* along sigma*, off the path by up to 8 % of Pmax */
+      double x, y;
+      const double u = (double)i / (N - 1);
+      if (u < 0.3)
+        x = u / 0.3 * b.delta_peak, y = x / b.delta_peak * b.Pmax;
+      else
+        ana_bar_softening_point(&b, 1.0 - (u - 0.3) / 0.7, &x, &y);
+      d[i] = x * (1.0 + 0.05 * sin(7.0 * i));
+      P[i] = y + 0.08 * b.Pmax * sin(3.0 * i) + (i == N / 2 ? 3.0 * b.Pmax : 0.0);
+    }
+    const double want = path_brute(&b, d, P, N), got = ver_curve_path(&b, d, P, N, NULL);
+    assert_true(want > 0.01);
+    assert_rel(got, want, 1e-12, bar ? "fig8's bar" : "fig6's bar");
+  }
+}
+
+/* 2,000,000 rows on fig6's path with one row at P = 1e12 (the sampling's int overflowed
+ * at about 1e9 and left the row out, 8.7e7 took minutes): in under 2 s, the distance of
+ * a spike of height Y = 1e12 / Pmax in normalised units, whose points dominate: the RMS
+ * of y over [0, Y] up and down, Y / sqrt 3 (the rest of the path counts 1 in 1e10). */
+static void test_ver_metrics_curve_path_outlier(void **state)
+{
+  (void)state;
+  ana_params p;
+  ana_params_default(&p);
+  ana_bar b;
+  assert_int_equal(ana_bar_init(&p, &b, NULL, 0), ANA_OK);
+  const size_t n = 2000000;
+  double *d = malloc(n * sizeof *d), *P = malloc(n * sizeof *P);
+  assert_non_null(d);
+  assert_non_null(P);
+  for (size_t i = 0; i < n; i++) {
+    d[i] = (double)(i + 1) * 2.5e-7;
+    P[i] = ana_bar_load_at(&b, d[i]);
+  }
+  P[n / 2] = 1e12;
+  const clock_t t0 = clock();
+  const double e = ver_curve_path(&b, d, P, n, NULL);
+  const double secs = (double)(clock() - t0) / CLOCKS_PER_SEC;
+  assert_rel(e, 1e12 / b.Pmax / sqrt(3.0), 2e-3, "a spike of 1e12");
+  if (!(secs < 2.0))
+    fail_msg("2 M rows took %.2f s", secs);
+  P[n / 2] = 1e300; /* beyond the doubles once squared: as far as can be, never NaN */
+  assert_true(ver_curve_path(&b, d, P, n, NULL) == DBL_MAX);
+  P[n / 2] = ana_bar_load_at(&b, d[n / 2]);
+  assert_true(ver_curve_path(&b, d, P, n, NULL) < 1e-6);
+  free(d);
+  free(P);
+}
+
 int main(void)
 {
   const struct CMUnitTest tests[] = {
@@ -536,6 +658,8 @@ int main(void)
     cmocka_unit_test(test_ver_metrics_gci),
     cmocka_unit_test(test_ver_metrics_value_at_row),
     cmocka_unit_test(test_ver_metrics_load_after),
+    cmocka_unit_test(test_ver_metrics_curve_path_brute),
+    cmocka_unit_test(test_ver_metrics_curve_path_outlier),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
