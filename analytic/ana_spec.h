@@ -131,7 +131,9 @@ typedef struct {
   double P[3], delta[3]; /* peak load and its delta on the three meshes                     */
   double order;          /* observed order of the peak load, log2 of the ratio of differences */
   double P_ext, delta_ext; /* extrapolated with the observed order (2 if not measurable)     */
-  double P_err, delta_err; /* |finest - extrapolated| / extrapolated                        */
+  double P_err, delta_err; /* |finest - extrapolated| / extrapolated: the finest mesh's error */
+  double P_ext_err, delta_ext_err; /* |extrapolated with the observed order - with order 2| /
+                                      extrapolated: how far the extrapolation itself is sure */
 } ana_czm_conv;
 int ana_dcb_czm_converge(const ana_spec *s, const ana_czm_opts *o, ana_czm_conv *out, char *err, int errlen);
 

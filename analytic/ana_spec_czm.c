@@ -8,8 +8,9 @@
  * sec. 3, Model 1 in pure opening: rigid below snf, then snf (1 - (g / gc)^q), gc = U0 / snf,
  * zero past gc).  Each node carries a path parameter u of that local law: u = w while the
  * law is closed (u <= w0 = snf / kf, compression carried by the foundation), u = w0 + g once
- * it has opened.  Then sigma(u) and w(u) are single-valued even where the law's softening is
- * steeper than the foundation (w falls as u grows: a local snap-back).
+ * it has opened.  sigma(u) and w(u) are single-valued; w grows with u unless the law's
+ * softening is steeper than the foundation (kf gc < 2 q snf: a local snap-back, where the
+ * opening at a0 stops ordering the path and the solver refuses).
  *
  * The arm: Euler-Bernoulli (energy EI / 2 w''^2) or Timoshenko, written in the bending
  * and shear parts w = wb + ws (energy EI / 2 wb''^2 + kGA / 2 ws'^2: wb' is the section's
@@ -47,7 +48,6 @@ typedef struct {
   int n, lb, ub;  /* unknowns 4 (N + 1); the system's lower and upper bands   */
   double kf, w0, gc, snf, q, EI, kGA;
   int rigid;
-  int mono;       /* 1: w grows with u (the softening slower than the foundation)   */
   double *x;      /* node positions                                           */
   double *y;      /* (u, theta, M, Q) by node                                 */
   double *w, *dw; /* deflection and dw/du by node                             */
@@ -96,7 +96,6 @@ static int ws_init(czm_ws *w, const ana_spec *s, const ana_czm_opts *o, int n1, 
   w->EI = s->EI;
   w->kGA = s->kGA;
   w->rigid = o->rigid;
-  w->mono = w->kf * w->gc > 2.0 * w->q * w->snf;
   const size_t np = (size_t)w->N + 1, n = (size_t)w->n;
   w->x = calloc(np, sizeof *w->x);
   w->y = calloc(n, sizeof *w->y);
@@ -191,13 +190,12 @@ static double mean_u(const czm_ws *w, double ui, double uj, double (*f)(const cz
  * onset, gc / 2 at separation), and u is linear on each side (exact for q = 1, where u is
  * linear in w in each regime).  Integrating the kink where it is, not by the nodes'
  * trapezoid, keeps the discrete load smooth as the zone's ends cross the cells (with the
- * trapezoid the peak load jittered by 1e-4 from one mesh to the next).  Where the law's
- * softening outruns the foundation (w falls as u grows) the kink has no such place and u
- * is taken linear throughout. */
+ * trapezoid the peak load jittered by 1e-4 from one mesh to the next).  w grows with u
+ * (check_opts refuses a law softening faster than the foundation), so the place is one. */
 static double cell_mean(const czm_ws *w, double ui, double uj, double (*f)(const czm_ws *, double))
 {
   const int ri = regime(w, ui), rj = regime(w, uj);
-  if (ri == rj || !w->mono)
+  if (ri == rj)
     return mean_u(w, ui, uj, f);
   double s, ds, wi, wj, dW;
   law(w, ui, &s, &ds, &wi, &dW);
@@ -391,8 +389,7 @@ static ana_czm_point state_point(czm_ws *w, const ana_spec *s)
   p.U_el = 2.0 * U;
   p.W_law = Wl;
   /* the separated and the opened stretch grow from a0; their ends between nodes where w
-   * crosses its value at the kink (gc / 2, w0), w linear in the cell (u where w is not
-   * monotone in u) */
+   * crosses its value at the kink (gc / 2, w0), w linear in the cell */
   double *end[2] = {&p.tip, &p.front};
   for (int k = 0; k < 2 && !w->rigid; k++) {
     const int reg = k == 0 ? 2 : 1;
@@ -405,8 +402,7 @@ static ana_czm_point state_point(czm_ws *w, const ana_spec *s)
       *end[k] = w->x[w->N];
       continue;
     }
-    const double B = w->mono ? (k == 0 ? 0.5 * w->gc : w->w0) : (k == 0 ? w->w0 + w->gc : w->w0);
-    const double fi = (w->mono ? w->w[i] : y[U_(i)]) - B, fn = (w->mono ? w->w[i + 1] : y[U_(i + 1)]) - B;
+    const double B = k == 0 ? 0.5 * w->gc : w->w0, fi = w->w[i] - B, fn = w->w[i + 1] - B;
     *end[k] = w->x[i] + fmin(1.0, fmax(0.0, fi / (fi - fn))) * (w->x[i + 1] - w->x[i]);
   }
   return p;
@@ -643,6 +639,9 @@ static int check_opts(const ana_spec *s, const ana_czm_opts *o, char *err, int e
     why = "tip_end must be in (a0, L)";
   else if (!isfinite(o->kf))
     why = "kf must be finite";
+  else if (!o->rigid && (o->kf > 0.0 ? o->kf : s->kf) * s->wc_I <= 2.0 * s->p.q * s->p.snf)
+    why = "the law softens faster than the foundation stiffens (kf U0 / snf <= 2 q snf): the "
+          "opening at a0 no longer orders the path";
   if (why && err && errlen > 0)
     snprintf(err, (size_t)errlen, "%s", why);
   return why ? ANA_EINVAL : ANA_OK;
@@ -684,8 +683,9 @@ double ana_czm_load_at(const ana_czm_path *c, double delta, double *tip)
 }
 
 /* Richardson's extrapolation of v[0..2] on meshes h, h / 2, h / 4 with the observed
- * order (2 where the differences do not give one in [0.5, 8]). */
-static double richardson(const double v[3], double *order)
+ * order (2 where the differences do not give one in [0.5, 8]); *spread is its distance
+ * from the extrapolation with order 2. */
+static double richardson(const double v[3], double *order, double *spread)
 {
   const double d1 = v[1] - v[0], d2 = v[2] - v[1];
   double p = 2.0;
@@ -696,7 +696,9 @@ static double richardson(const double v[3], double *order)
   }
   if (order)
     *order = p;
-  return v[2] + d2 / (pow(2.0, p) - 1.0);
+  const double ext = v[2] + d2 / (pow(2.0, p) - 1.0);
+  *spread = fabs(ext - (v[2] + d2 / 3.0));
+  return ext;
 }
 
 int ana_dcb_czm_converge(const ana_spec *s, const ana_czm_opts *o, ana_czm_conv *out, char *err, int errlen)
@@ -716,8 +718,11 @@ int ana_dcb_czm_converge(const ana_spec *s, const ana_czm_opts *o, ana_czm_conv 
     out->delta[m] = c.peak.delta;
     ana_czm_path_free(&c);
   }
-  out->P_ext = richardson(out->P, &out->order);
-  out->delta_ext = richardson(out->delta, NULL);
+  double sp, sd;
+  out->P_ext = richardson(out->P, &out->order, &sp);
+  out->delta_ext = richardson(out->delta, NULL, &sd);
+  out->P_ext_err = sp / fabs(out->P_ext);
+  out->delta_ext_err = sd / fabs(out->delta_ext);
   out->P_err = fabs(out->P[2] - out->P_ext) / fabs(out->P_ext);
   out->delta_err = fabs(out->delta[2] - out->delta_ext) / fabs(out->delta_ext);
   return ANA_OK;
