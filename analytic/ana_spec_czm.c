@@ -373,7 +373,7 @@ static int newton(czm_ws *w, double tau, int *iters)
 static ana_czm_point state_point(czm_ws *w, const ana_spec *s)
 {
   const double *y = w->y;
-  ana_czm_point p = {.P = -y[Q_(0)], .delta = 2.0 * w->w[0], .tip = s->p.a0, .front = s->p.a0};
+  ana_czm_point p = {.P = 0.0 - y[Q_(0)], .delta = 2.0 * w->w[0], .tip = s->p.a0, .front = s->p.a0};
   double U = 0.0, Wl = 0.0; /* one arm's elastic energy; the law's work on both */
   for (int i = 0; i < w->N; i++) {
     const int j = i + 1;
