@@ -254,8 +254,7 @@ static void test_ana_spec_czm_energy(void **state)
   assert_true(i1 > 0 && i2 > i1);
   const double dA = c.pt[i2].tip - c.pt[i1].tip, dW = c.pt[i2].W_law - c.pt[i1].W_law;
   CHECK_REL(dW, s.Gc * dA, 1e-3, "the law's work over the crack growth");
-  const double dU = c.pt[i2].U_el - c.pt[i1].U_el, dWext = W; /* W is the whole path's */
-  (void)dWext;
+  const double dU = c.pt[i2].U_el - c.pt[i1].U_el;
   double Wseg = 0.0;
   for (int i = i1 + 1; i <= i2; i++)
     Wseg += 0.5 * (c.pt[i].P + c.pt[i - 1].P) * (c.pt[i].delta - c.pt[i - 1].delta);
