@@ -6,6 +6,7 @@
 #define DELAM_CMD_H
 
 int ver_cmd_analytic(int argc, char **argv);
+int ver_cmd_analytic_specimen(int argc, char **argv); /* `delam analytic --specimen` */
 int ver_cmd_run(int argc, char **argv);
 int ver_cmd_verify(int argc, char **argv);
 int ver_cmd_report(int argc, char **argv);

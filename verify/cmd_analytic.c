@@ -3,7 +3,7 @@
  * (paper sec. 3.2, eqs. 28-37): r0, g, slopes, snapback, energies, and optionally
  * the load-deflection curve as CSV.  With --speed, the same bar at that grip speed
  * (analytic/ana_wave.c: the exact 1-D wave solution, alpha 90 only) for the peak and the
- * curve.
+ * curve.  With --specimen dcb|els, the specimens' references instead (cmd_analytic_spec.c).
  *
  * Options are parsed by hand (no getopt state): `--name value` or `--name=value`.
  * Every bad option gives one line on stderr naming it and its allowed range, and
@@ -116,6 +116,8 @@ static void print_help(FILE *f)
     if (s->kind != OPT_FLAG)
       fprintf(f, "  %-16s   %s; allowed %s\n", "", def, s->allowed);
   }
+  fprintf(f, "  %-16s %s\n", "--specimen S", "dcb or els: the specimens' references instead of the bar");
+  fprintf(f, "  %-16s   see `delam analytic --specimen dcb --help`\n", "");
   fprintf(f, "\nexit status: 0 ok, 1 the curve file could not be written, 2 bad option\n");
 }
 
@@ -372,6 +374,9 @@ static int print_bar(const an_opts *o, const ana_bar *bar, const ana_wave *wave,
 
 int ver_cmd_analytic(int argc, char **argv)
 {
+  for (int i = 1; i < argc; i++) /* the specimens are their own command */
+    if (!strncmp(argv[i], "--specimen", 10) && (argv[i][10] == '\0' || argv[i][10] == '='))
+      return ver_cmd_analytic_specimen(argc, argv);
   an_opts o;
   const int pa = parse_args(argc, argv, &o);
   if (pa >= 0)
