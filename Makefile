@@ -5,13 +5,14 @@
 #   make fuzz     build the libFuzzer target for the scene parser and run it FUZZ_TIME seconds
 #                 (installs clang and its libFuzzer runtime when missing)
 #   make fuzz-check   the same for delam check's readers (load.csv, summary.json)
+#   make fe-data  rerun the FreeFEM reference scripts of data/fe/ (installs freefem++ when missing)
 BUILD     ?= build
 MESONFLAGS ?=
 DEBS = meson ninja-build pkg-config gcc libgsl-dev libcmocka-dev libinih-dev \
        libcjson-dev libsuitesparse-dev gnuplot-nox parallel
 SUDO = $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-.PHONY: all deps build check check-asan fuzz fuzz-check fuzz-deps report report-full bench docs-keys clean
+.PHONY: all deps build check check-asan fuzz fuzz-check fuzz-deps report report-full bench docs-keys clean fe-data
 
 all: build
 
@@ -111,3 +112,10 @@ docs-keys: build
 
 clean:
 	rm -rf $(BUILD) $(BUILD_ASAN) build-fuzz
+
+# data/fe/: the FreeFEM reference numbers.  Installs freefem++ when missing and reruns the
+# scripts (several minutes); make check reads the stored .dat files and does not need it.
+FE_DEBS = freefem++
+fe-data:
+	@$(MAKE) --no-print-directory deps DEBS="$(FE_DEBS)"
+	data/fe/run.sh
