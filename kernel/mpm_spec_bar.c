@@ -68,6 +68,11 @@ static double bar_dis_full(const mpm_scene *sc)
   return sc->U0 * sc->H / fmax(sa, 1e-3);
 }
 
+static double bar_dis_step_max(const mpm_scene *sc)
+{
+  return 0.1 * bar_dis_full(sc);
+}
+
 /* Once cut, the gripped part's vertical rigid motion: held at the gripped node nearest
  * mid-height (no force: the part is unloaded). */
 static int bar_pin_node(const mpm_sim *s, const int *eq)
@@ -94,6 +99,7 @@ const mpm_specimen_type mpm_spec_bar = {
   .bcs = bar_bcs,
   .line_point = bar_line_point,
   .dis_full = bar_dis_full,
+  .dis_step_max = bar_dis_step_max,
   .precrack = NULL,
   .explicit_iface = 1,
   .seg_cells = 3.0,

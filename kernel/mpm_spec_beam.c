@@ -91,6 +91,11 @@ static double beam_dis_full(const mpm_scene *sc)
   return sc->U0 * (sc->L - sc->a0);
 }
 
+static double beam_dis_step_max(const mpm_scene *sc)
+{
+  return sc->U0 * sc->h;
+}
+
 static int beam_precrack(const mpm_scene *sc, double x, double y)
 {
   (void)y;
@@ -110,6 +115,7 @@ const mpm_specimen_type mpm_spec_dcb = {
   .bcs = dcb_bcs,
   .line_point = beam_line_point,
   .dis_full = beam_dis_full,
+  .dis_step_max = beam_dis_step_max,
   .precrack = beam_precrack,
   .explicit_iface = 0,
   .seg_cells = 0.0,
@@ -122,6 +128,7 @@ const mpm_specimen_type mpm_spec_els = {
   .bcs = els_bcs,
   .line_point = beam_line_point,
   .dis_full = beam_dis_full,
+  .dis_step_max = beam_dis_step_max,
   .precrack = beam_precrack,
   .explicit_iface = 0,
   .seg_cells = 0.0,

@@ -51,6 +51,9 @@ typedef struct mpm_specimen_type {
   /* D's full value: U0 times the line's length the crack may open (the static solver's
    * scale of the dissipation) */
   double (*dis_full)(const mpm_scene *sc);
+  /* the static solver's largest dissipation increment: a tenth of dis_full on the bar;
+   * U0 h on the split beams, so that the rows resolve the front's advance node by node */
+  double (*dis_step_max)(const mpm_scene *sc);
   /* 1 where the line at (x, y) starts open (a pre-crack); NULL: nowhere */
   int (*precrack)(const mpm_scene *sc, double x, double y);
   /* 1: the explicit interface's two fields are laid on the line (mpm_iface.c); 0: the

@@ -123,6 +123,7 @@ mpm_status mpm_static_alloc(mpm_sim *s, mpm_static **out, char *err, size_t errl
   }
   const mpm_scene *sc = &s->sc;
   q->Dref = sc->model != MPM_DCOH_NONE ? mpm_specimen_of(sc)->dis_full(sc) : 1.0;
+  q->Dmax = sc->model != MPM_DCOH_NONE ? mpm_specimen_of(sc)->dis_step_max(sc) : 0.1;
   q->Fref = 1e-3 * fmin(sc->snf, sc->stf) * sc->H;
   q->step_d = 1e-3 * sc->L * fmin(sc->snf, sc->stf) / sc->E; /* the first, elastic, increment */
   q->step_D = 1e-3 * q->Dref;
@@ -474,7 +475,7 @@ static void next_step(mpm_static *q, int iters, int first)
   const mpm_sim *s = q->s;
   const double grow = iters <= MPM_QS_EASY ? 1.5 : iters >= MPM_QS_HARD ? 0.6 : 1.0;
   if (q->mode == MPM_QS_DISSIPATION)
-    q->step_D = fmin(q->step_D * grow, 0.1 * q->Dref);
+    q->step_D = fmin(q->step_D * grow, q->Dmax);
   else if (q->nel > 0 && !first) {
     /* the linear branch: equal steps to the initiation, then the dissipation leads */
     if (--q->nel == 0 && s->sc.model != MPM_DCOH_NONE)

@@ -70,6 +70,7 @@ struct mpm_static {
   /* the control: MPM_QS_* mode, the grip step or the dissipation step */
   int mode;
   double step_d, step_D, Dref, Fref;
+  double Dmax;            /* the largest dissipation increment (the specimen's)         */
   int kick;               /* 1: one small grip increment starts the softening            */
   double cring[100];      /* the control's measure over the last increments (stalls)     */
   int nkick;

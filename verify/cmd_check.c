@@ -33,6 +33,7 @@
 
 #include "build_info.h"
 #include "check_folder.h"
+#include "check_spec.h"
 #include "cmd.h"
 #include "datadir.h"
 #include "foreign.h"
@@ -463,6 +464,8 @@ int ver_cmd_check(int argc, char **argv)
     fprintf(stderr, PROG ": %s\n", err);
     return 2;
   }
+  if (c.vs.sc.specimen != MPM_SPEC_BAR) /* a split beam: its own references */
+    return ver_check_spec(dir, &c.vs, out);
   char aerr[256];
   c.have_ana = ver_scene_bar(&c.vs.sc, &c.ana, aerr, sizeof aerr) == 0;
   const mpm_scene *sc = &c.vs.sc;

@@ -1,0 +1,82 @@
+#!/usr/bin/env bash
+# check_specimens.sh DELAM SRC - the specimens against references the kernel did not make
+# (docs/specimens.md):
+#   held-stiffness  the bar with held grips (fig6, elastic, static, h 4, 4 ppc): P / delta
+#                   within 0.3 % of the FreeFEM stiffness in data/fe/held_bar.dat, for
+#                   L 192, H 32 and L 96, H 48 at nu 0.25 and 0.45;
+#   held-pushback   a45 with held grips on L 96, H 48, nu 0.45 (h 4): exit 1 with the
+#                   reason, summary.json complete: false (its path pushes back);
+#   dcb-h8          the DCB at h 8 passes `delam check` (compliance against data/fe's C(a0),
+#                   the peak against the cohesive beam, the branch against the 2-D LEFM
+#                   branch, D = U0 x growth, the ledger) with the bounds of h = t / 2;
+#   dcb-wrong-law   a DCB run with U0 0.5 whose scene.ini is made to say 0.375: the check
+#                   fails (peak_P, branch): the checks can tell a wrong law;
+#   els-h8          the ELS at h 8: the check passes where data/fe has the ELS table, and
+#                   the unstable growth is traced (delta falls back after the peak).
+# Prints TAP; exits 1 if a check failed.
+set -u
+delam=${1:?usage: check_specimens.sh path/to/delam SRC}
+src=${2:?usage: check_specimens.sh path/to/delam SRC}
+tmp=$(mktemp -d "${TMPDIR:-/tmp}/delam-spec.XXXXXX")
+trap 'rm -rf "$tmp"' EXIT
+n=0 fail=0
+result() {
+  n=$((n + 1))
+  if [ -z "$2" ]; then echo "ok $n - $1"; else fail=$((fail + 1)); echo "not ok $n - $1: $2"; fi
+}
+cd "$tmp"
+export DELAM_SCENES="$src/data/scenes"
+# held grips: the first row is on the elastic line
+why=""
+for c in "192 32 0.25" "192 32 0.45" "96 48 0.25" "96 48 0.45"; do
+  set -- $c
+  ref=$(awk -v L="$1" -v H="$2" -v nu="$3" '!/^#/ && $1 == L && $2 == H && $3 == nu && $4 == "held" {print $5}' \
+    "$src/data/fe/held_bar.dat")
+  "$delam" run fig6 --solver static --h 4 --ppc 4 --threads 1 --quiet --set specimen.grips=held \
+    --set decohesion.model=0 --set bar.L="$1" --set bar.H="$2" --set material.nu="$3" --set run.end_delta=0.01 \
+    --out "held-$1-$3" >/dev/null 2>run.err || { why="$why; L $1 nu $3: exit $? $(head -1 run.err)"; continue; }
+  k=$(awk -F, '!/^#/ && $1 + 0 == 1 {printf "%.9g", $3 / $2}' "held-$1-$3/load.csv")
+  bad=$(awk -v k="$k" -v r="$ref" 'BEGIN {e = k / r - 1; if (!(r > 0) || e > 0.003 || e < -0.003) printf "%g against %s (%.3g)", k, r, e}')
+  [ -z "$bad" ] || why="$why; L $1 H $2 nu $3: $bad"
+done
+result held-stiffness "${why#; }"
+"$delam" run a45 --solver static --h 4 --ppc 4 --threads 1 --quiet --set specimen.grips=held --set bar.L=96 \
+  --set bar.H=48 --set material.nu=0.45 --out push >/dev/null 2>push.err
+rc=$?
+why=""
+[ "$rc" = 1 ] || why="exit $rc, want 1"
+grep -q "pushes back\|would snap dynamically" push.err || why="$why; no reason on stderr: $(head -c 300 push.err)"
+grep -q '"complete":[[:space:]]*false' push/summary.json || why="$why; summary.json does not say complete: false"
+result held-pushback "${why#; }"
+# the DCB at h 8 (about 0.1 s)
+"$delam" run dcb --h 8 --threads 1 --quiet --out dcb8 >/dev/null 2>dcb.err
+rc=$?
+why=""
+[ "$rc" = 0 ] || why="run: exit $rc $(head -1 dcb.err)"
+"$delam" check dcb8 >dcb8.txt 2>&1 || why="$why; check: $(grep -E 'FAIL|delam' dcb8.txt | head -3)"
+for c in compliance peak_P delta_peak branch crack_tip D_growth ledger; do
+  grep -qE "^  $c +pass" dcb8.txt || why="$why; $c not passed"
+done
+result dcb-h8 "${why#; }"
+# a wrong law: run with U0 0.5, judged as the scene with 0.375
+"$delam" run dcb --h 8 --threads 1 --quiet --set decohesion.U0=0.5 --out wrong >/dev/null 2>&1
+sed -i 's/^U0 = .*/U0 = 0.375/' wrong/scene.ini
+"$delam" check wrong >wrong.txt 2>&1
+rc=$?
+why=""
+[ "$rc" = 1 ] || why="exit $rc, want 1 (a failed check)"
+grep -qE "^  peak_P +FAIL" wrong.txt || why="$why; peak_P not failed"
+grep -qE "^  branch +FAIL" wrong.txt || why="$why; branch not failed"
+result dcb-wrong-law "${why#; }"
+# the ELS at h 8
+"$delam" run dcb --h 8 --threads 1 --quiet --set specimen.type=els --set decohesion.snf=10 --set decohesion.stf=1 \
+  --out els8 >/dev/null 2>els.err
+rc=$?
+why=""
+[ "$rc" = 0 ] || why="run: exit $rc $(head -1 els.err)"
+"$delam" check els8 >els8.txt 2>&1 || why="$why; check: $(grep -E 'FAIL|delam' els8.txt | head -3)"
+grep -qE "^  snapback +pass" els8.txt || why="$why; snapback not passed"
+grep -qE "^  gap +pass" els8.txt || why="$why; gap not passed"
+result els-h8 "${why#; }"
+echo "1..$n"
+[ "$fail" = 0 ]
