@@ -27,6 +27,7 @@
 #include "datadir.h"
 #include "foreign.h"
 #include "io.h"
+#include "sweep.h"
 
 #define SPEC_ROWS_MAX 10000000L
 
@@ -136,35 +137,29 @@ static double branch_P(const fe_table *t, double Gc, double d, double alo)
   return sqrt(2.0 * Gc / fe_at(t, t->dC, 0.5 * (lo + hi)));
 }
 
-/* One verdict line: PASS / FAIL, or skip with a reason (err NAN). */
+/* The checks of one run, in order (skipped ones kept with their reason). */
 typedef struct {
-  int n, fail;
-  cJSON *arr;
+  ver_check *chk;
+  int n, max, fail;
 } verdicts;
 
+/* One check: pass / fail (|err| <= tol), or skipped with a reason (err NAN): a skipped
+ * check is kept as a pass with a NaN measurement and its reason, so a listing shows it. */
 static void put(verdicts *v, const char *name, double measured, double ref, double err, double tol, const char *why)
 {
-  const int skip = isnan(err);
-  const int ok = skip || fabs(err) <= tol;
-  if (skip)
-    printf("  %-16s skip: %s\n", name, why);
-  else
-    printf("  %-16s %-4s measured %.6g, reference %.6g, err %+.3g (tol %.3g)%s%s\n", name, ok ? "pass" : "FAIL",
-           measured, ref, err, tol, why && *why ? "; " : "", why ? why : "");
-  cJSON *o = cJSON_CreateObject();
-  cJSON_AddStringToObject(o, "check", name);
-  cJSON_AddStringToObject(o, "verdict", skip ? "skip" : ok ? "pass" : "fail");
-  if (!skip) {
-    cJSON_AddNumberToObject(o, "measured", measured);
-    cJSON_AddNumberToObject(o, "reference", ref);
-    cJSON_AddNumberToObject(o, "err", err);
-    cJSON_AddNumberToObject(o, "tol", tol);
-  }
-  if (why && *why)
-    cJSON_AddStringToObject(o, "note", why);
-  cJSON_AddItemToArray(v->arr, o);
-  v->n++;
-  v->fail += !ok;
+  if (v->n >= v->max)
+    return;
+  ver_check *k = &v->chk[v->n++];
+  memset(k, 0, sizeof *k);
+  k->name = name;
+  k->measured = isnan(err) ? NAN : measured;
+  k->reference = ref;
+  k->error = err;
+  k->rel = 0;
+  k->tol = tol;
+  k->verdict = isnan(err) || fabs(err) <= tol ? VER_PASS : VER_FAIL;
+  snprintf(k->note, sizeof k->note, "%s%.200s", isnan(err) ? "skipped: " : "", why ? why : "");
+  v->fail += k->verdict == VER_FAIL;
 }
 
 /* summary.json's gap_min (NAN when absent). */
@@ -327,14 +322,81 @@ static void judge_els(const spec_run *r, verdicts *v)
       isnan(g) ? "no gap_min in summary.json" : "least normal opening over h");
 }
 
+int ver_spec_judge(const char *dir, const ver_scene *vs, ver_check *chk, int max, int *nchk, char *err, size_t errlen)
+{
+  static spec_run r; /* the FE table is large-ish; one per process */
+  memset(&r, 0, sizeof r);
+  const mpm_scene *sc = r.sc = &vs->sc;
+  r.dir = dir;
+  r.dcb = sc->specimen == MPM_SPEC_DCB;
+  r.t = 0.5 * sc->H;
+  r.h = sc->h;
+  r.Gc = sc->q * sc->U0 / (sc->q + 1.0);
+  char path[1200];
+  static const char *const lnames[] = {"delta", "P_grip", "crack_tip"};
+  static const char *const enames[] = {"W_ext", "SE", "W_coh", "D"};
+  ver_table ld = {0}, en = {0};
+  err[0] = '\0';
+  snprintf(path, sizeof path, "%s/load.csv", dir);
+  if (ver_table_read(path, lnames, 3, 3, &ld, err, errlen)) {
+    if (!err[0])
+      snprintf(err, errlen, "%s: cannot read", path);
+    return 2;
+  }
+  snprintf(path, sizeof path, "%s/energy.csv", dir);
+  if (ver_table_read(path, enames, 4, 4, &en, err, errlen) || en.n != ld.n || ld.n < 2) {
+    if (!err[0])
+      snprintf(err, errlen, "%s: its rows are not load.csv's", path);
+    ver_table_free(&ld);
+    ver_table_free(&en);
+    return 2;
+  }
+  r.d = ld.col[0], r.P = ld.col[1], r.tip = ld.col[2], r.n = ld.n;
+  r.W = en.col[0], r.SE = en.col[1], r.Wc = en.col[2], r.D = en.col[3];
+  for (long i = 1; i < r.n; i++)
+    if (r.P[i] > r.P[r.ipk])
+      r.ipk = i;
+  verdicts v = {chk, 0, max, 0};
+  r.have_fe = fe_read(sc, &r.fe, r.fe_why, sizeof r.fe_why) == 0;
+  /* compliance: the first row is on the linear branch (an eighth of the first
+   * initiation); its error is first order in h (the crack tip's singular field) */
+  const double C = r.d[0] / r.P[0], Cfe = r.have_fe ? fe_at(&r.fe, r.fe.C, sc->a0) : NAN;
+  put(&v, "compliance", C, Cfe, r.have_fe ? C / Cfe - 1.0 : NAN, 0.18 * r.h / r.t, r.have_fe ? "" : r.fe_why);
+  if (r.dcb)
+    judge_peak(&r, &v);
+  judge_branch(&r, &v);
+  judge_growth(&r, &v);
+  if (!r.dcb)
+    judge_els(&r, &v);
+  ver_table_free(&ld);
+  ver_table_free(&en);
+  *nchk = v.n;
+  return 0;
+}
+
 /* check.json: the verdict and each check's line. */
-static int write_json(const char *dir, const char *out, int dcb, verdicts *v)
+static int write_json(const char *dir, const char *out, int dcb, const ver_check *chk, int n, int fail)
 {
   cJSON *root = cJSON_CreateObject();
   cJSON_AddStringToObject(root, "folder", dir);
   cJSON_AddStringToObject(root, "specimen", dcb ? "dcb" : "els");
-  cJSON_AddStringToObject(root, "verdict", v->fail ? "fail" : "pass");
-  cJSON_AddItemToObject(root, "checks", v->arr);
+  cJSON_AddStringToObject(root, "verdict", fail ? "fail" : "pass");
+  cJSON *arr = cJSON_AddArrayToObject(root, "checks");
+  for (int i = 0; i < n; i++) {
+    cJSON *o = cJSON_CreateObject();
+    const int skip = isnan(chk[i].error);
+    cJSON_AddStringToObject(o, "check", chk[i].name);
+    cJSON_AddStringToObject(o, "verdict", skip ? "skip" : chk[i].verdict == VER_FAIL ? "fail" : "pass");
+    if (!skip) {
+      cJSON_AddNumberToObject(o, "measured", chk[i].measured);
+      cJSON_AddNumberToObject(o, "reference", chk[i].reference);
+      cJSON_AddNumberToObject(o, "err", chk[i].error);
+      cJSON_AddNumberToObject(o, "tol", chk[i].tol);
+    }
+    if (chk[i].note[0])
+      cJSON_AddStringToObject(o, "note", chk[i].note);
+    cJSON_AddItemToArray(arr, o);
+  }
   char jpath[1400];
   snprintf(jpath, sizeof jpath, "%s", out ? out : "");
   if (!out)
@@ -355,52 +417,57 @@ static int write_json(const char *dir, const char *out, int dcb, verdicts *v)
 
 int ver_check_spec(const char *dir, const ver_scene *vs, const char *out)
 {
-  static spec_run r; /* the FE table is large-ish; one per process */
-  memset(&r, 0, sizeof r);
-  const mpm_scene *sc = r.sc = &vs->sc;
-  r.dir = dir;
-  r.dcb = sc->specimen == MPM_SPEC_DCB;
-  r.t = 0.5 * sc->H;
-  r.h = sc->h;
-  r.Gc = sc->q * sc->U0 / (sc->q + 1.0);
-  char path[1200], err[1400] = "";
-  static const char *const lnames[] = {"delta", "P_grip", "crack_tip"};
-  static const char *const enames[] = {"W_ext", "SE", "W_coh", "D"};
-  ver_table ld = {0}, en = {0};
-  snprintf(path, sizeof path, "%s/load.csv", dir);
-  if (ver_table_read(path, lnames, 3, 3, &ld, err, sizeof err)) {
-    fprintf(stderr, "delam check: %s\n", err[0] ? err : "load.csv: cannot read");
+  ver_check chk[VER_NCHECK];
+  int n = 0;
+  char err[1400];
+  if (ver_spec_judge(dir, vs, chk, VER_NCHECK, &n, err, sizeof err)) {
+    fprintf(stderr, "delam check: %s\n", err);
     return 2;
   }
-  snprintf(path, sizeof path, "%s/energy.csv", dir);
-  if (ver_table_read(path, enames, 4, 4, &en, err, sizeof err) || en.n != ld.n || ld.n < 2) {
-    fprintf(stderr, "delam check: %s/energy.csv: %s\n", dir, err[0] ? err : "its rows are not load.csv's");
-    ver_table_free(&ld);
-    ver_table_free(&en);
-    return 2;
+  const mpm_scene *sc = &vs->sc;
+  printf("check: %s, %s (a0 %g, h %g = t / %g, %d ppc)\n", dir,
+         sc->specimen == MPM_SPEC_DCB ? "a double cantilever beam" : "an end-loaded split", sc->a0, sc->h, 0.5 * sc->H / sc->h,
+         sc->ppc);
+  int fail = 0;
+  for (int i = 0; i < n; i++) {
+    const ver_check *k = &chk[i];
+    fail += k->verdict == VER_FAIL;
+    if (isnan(k->error))
+      printf("  %-16s skip: %s\n", k->name, k->note + strlen("skipped: "));
+    else
+      printf("  %-16s %-4s measured %.6g, reference %.6g, err %+.3g (tol %.3g)%s%s\n", k->name,
+             k->verdict == VER_FAIL ? "FAIL" : "pass", k->measured, k->reference, k->error, k->tol, k->note[0] ? "; " : "",
+             k->note);
   }
-  r.d = ld.col[0], r.P = ld.col[1], r.tip = ld.col[2], r.n = ld.n;
-  r.W = en.col[0], r.SE = en.col[1], r.Wc = en.col[2], r.D = en.col[3];
-  for (long i = 1; i < r.n; i++)
-    if (r.P[i] > r.P[r.ipk])
-      r.ipk = i;
-  printf("check: %s, a %s (a0 %g, h %g = t / %g, %d ppc)\n", dir, r.dcb ? "double cantilever beam" : "end-loaded split",
-         sc->a0, r.h, r.t / r.h, sc->ppc);
-  verdicts v = {0, 0, cJSON_CreateArray()};
-  r.have_fe = fe_read(sc, &r.fe, r.fe_why, sizeof r.fe_why) == 0;
-  /* compliance: the first row is on the linear branch (an eighth of the first
-   * initiation); its error is first order in h (the crack tip's singular field) */
-  const double C = r.d[0] / r.P[0], Cfe = r.have_fe ? fe_at(&r.fe, r.fe.C, sc->a0) : NAN;
-  put(&v, "compliance", C, Cfe, r.have_fe ? C / Cfe - 1.0 : NAN, 0.18 * r.h / r.t, r.have_fe ? "" : r.fe_why);
-  if (r.dcb)
-    judge_peak(&r, &v);
-  judge_branch(&r, &v);
-  judge_growth(&r, &v);
-  if (!r.dcb)
-    judge_els(&r, &v);
-  printf("check: %s (%d checks)\n", v.fail ? "fail" : "pass", v.n);
-  const int wrc = write_json(dir, out, r.dcb, &v);
-  ver_table_free(&ld);
-  ver_table_free(&en);
-  return wrc ? 1 : v.fail ? 1 : 0;
+  printf("check: %s (%d checks)\n", fail ? "fail" : "pass", n);
+  const int wrc = write_json(dir, out, sc->specimen == MPM_SPEC_DCB, chk, n, fail);
+  return wrc ? 1 : fail ? 1 : 0;
+}
+
+void ver_spec_case(const char *dir, ver_case *c)
+{
+  c->nchk = 0;
+  if (!c->complete) { /* the run itself: its reason, as the bar's cases give it */
+    ver_check *k = &c->chk[c->nchk++];
+    memset(k, 0, sizeof *k);
+    k->name = "run";
+    k->measured = c->exit_code;
+    k->error = 1.0;
+    k->verdict = VER_FAIL;
+    snprintf(k->note, sizeof k->note, "%.250s", c->error[0] ? c->error : "the run did not complete");
+  } else {
+    char err[600];
+    if (ver_spec_judge(dir, &c->vs, c->chk, VER_NCHECK, &c->nchk, err, sizeof err)) {
+      ver_check *k = &c->chk[c->nchk++];
+      memset(k, 0, sizeof *k);
+      k->name = "run";
+      k->error = 1.0;
+      k->verdict = VER_FAIL;
+      snprintf(k->note, sizeof k->note, "%.250s", err);
+    }
+  }
+  c->verdict = VER_PASS;
+  for (int i = 0; i < c->nchk; i++)
+    if (c->chk[i].verdict == VER_FAIL)
+      c->verdict = VER_FAIL;
 }

@@ -16,6 +16,7 @@
 #include "pool.h"
 #include "run.h"
 #include "sweep.h"
+#include "check_spec.h"
 #include "verify.h"
 
 typedef struct {
@@ -133,11 +134,16 @@ static void list_cases(const ver_verify_opts *o, const ver_case *cs, int n)
 }
 
 /* Reads and checks every case and the groups across them; 1 if a check failed. */
-static int check_all(ver_case *cs, int n, ver_cross *x, int *nx)
+static int check_all(const ver_verify_opts *o, ver_case *cs, int n, ver_cross *x, int *nx)
 {
   int rc = 0;
   for (int i = 0; i < n; i++) {
-    ver_policy_case(&cs[i]);
+    if (cs[i].vs.sc.specimen != MPM_SPEC_BAR) { /* a split beam: its own references */
+      char dir[800];
+      ver_case_dir(o, &cs[i], dir, sizeof dir);
+      ver_spec_case(dir, &cs[i]);
+    } else
+      ver_policy_case(&cs[i]);
     for (int j = 0; j < cs[i].nchk; j++)
       ver_sweep_print_check(cs[i].id, &cs[i].chk[j]);
     rc |= cs[i].verdict == VER_FAIL;
@@ -215,7 +221,7 @@ int ver_verify(const ver_verify_opts *o)
   read_cases(o, cs, n, started, stopped);
   static ver_cross x[VER_MAXCROSS];
   int nx;
-  int rc = check_all(cs, n, x, &nx);
+  int rc = check_all(o, cs, n, x, &nx);
   ver_sweep_print_table(cs, n, x, nx);
   const double wall = ver_now_wall() - w0;
   stopped = stopped || ver_pool_caught();
