@@ -225,8 +225,7 @@ int ver_sweep_cases(const ver_verify_opts *o, ver_case **out, int *nout)
       return 2;
     for (int i = 0; i < nq; i++) {
       char path[600];
-      /* the split beam takes the interface alone (mpm_rules.c): not under another preset */
-      if (!strcmp(q[i].scene, "dcb") && o->method && strcmp(o->method, "interface"))
+      if (!strcmp(q[i].scene, "dcb") && o->method && strcmp(o->method, "interface")) /* interface alone */
         continue;
       snprintf(path, sizeof path, "%s/%s.ini", o->scenes, q[i].scene);
       if (ver_case_init(&cs[n], path, q[i].scene, o->method, q[i].h, q[i].ppc, *q[i].v, err, sizeof err)) {
