@@ -242,9 +242,9 @@ void mpm_static_free(mpm_static *q);
 mpm_status mpm_static_step(mpm_static *q, char *err, size_t errlen);
 void mpm_static_stats_get(const mpm_static *q, mpm_static_stats *out);
 
-/* The manufactured solution (mpm_mms.c): a forced axial vibration with its body force,
- * u = A sin(pi X / L) sin(w t), nu = 0, 1 ppc, dt = 0.1 h / 8, on grid h: the RMS
- * particle displacement error over A at t = 10 (*e; MPM_OK or the step's status). */
+/* Manufactured solutions, the RMS particle displacement error over the amplitude on grid h (*e): the step's forced
+ * axial vibration (mpm_mms.c), the static solver's 2-D field (mpm_static_mms.c; *e_node the nodes', unless NULL). */
 mpm_status mpm_mms_error(double h, int scheme, int bc, double *e, char *err, size_t errlen);
+mpm_status mpm_static_mms_error(double h, int shape, int ppc, double *e, double *e_node, char *err, size_t errlen);
 
 #endif

@@ -3,7 +3,8 @@
  * mpm_mms_error; derivation in tests/test_mpm_mms.c and docs/verification.md):
  *   u = A sin(pi X / L) sin(w t), v = 0, plane stress, nu = 0, the bar held in x at
  *   X = 0 and L, body force b_x = A ((pi c / L)^2 - w^2) sin(pi X / L) sin(w t),
- *   A = 0.03, w = 1.5 pi c / L, 1 particle per cell, dt = 0.1 h / 8, error at t = 10.
+ *   A = 0.03, w = 1.5 pi c / L, 1 particle per cell, dt = 0.1 h / 8, error at t = 10
+ *   (the RMS particle displacement error over A); MPM_OK or the failing step's status.
  */
 #include <math.h>
 #include <stdio.h>

@@ -46,6 +46,8 @@ struct mpm_static {
   int *eq;                /* 2 nslot: the unknown of each component, or MPM_DOF_*         */
   double *held;           /* 2 nslot: the value of a held component (MPM_DOF_HELD)        */
   double *coef;           /* 2 nslot: a driven component's value per unit delta, c       */
+  double *fext;           /* 2 nslot: an external force on each component, in R as -fext
+                             (NULL: none; the manufactured solution's body force)       */
   double cmag;            /* |c| of every driven component                               */
   int drv2;               /* 1: a driven component other than x at c < 0 (driven_load)   */
   int nfree;              /* unknowns                                                   */

@@ -2,7 +2,8 @@
  * mpm_static_asm.c - the quasi-static solver's discrete equations (total Lagrangian):
  * each bar particle's stencil at its reference place, the unknowns, and at a trial
  * displacement the particles' constitutive state (secs. 3-4, the same update as the
- * explicit step), the nodal force residual f_int = sum_p V_p B_p^T sigma_p (eq. 3), its
+ * explicit step), the nodal force residual f_int = sum_p V_p B_p^T sigma_p (eq. 3) less
+ * an external force where one is set (fext: the manufactured solution's body force), its
  * tangent K = sum_p V_p B_p^T C_p B_p with C_p the update's algorithmic tangent, and the
  * dissipation D = sum_p U0 min(lambda_p, 1) V_p / Le (eq. 10), and the control's measure,
  * the same sum without the cap (lambda grows on with the opening once separated, eq. 58),
@@ -350,6 +351,9 @@ mpm_status mpm_static_eval(mpm_static *q, int tangent)
       particle_tangent(q, c, m, &in, de, wD > 0.0 && info.path != MPM_DPATH_ELASTIC ? wD : 0.0, k, Ax);
     k += 4 * (size_t)cn * (size_t)cn;
   }
+  for (size_t i = 0; q->fext && i < 2 * ns; i++) /* R = f_int - f_ext */
+    if (q->eq[i] >= 0)
+      q->R[q->eq[i]] -= q->fext[i];
   if (q->iface) { /* the line's law between the split nodes' two slots */
     double Dl = 0.0, Cl = 0.0;
     mpm_static_iface_eval(q, tangent, Ax, &Dl, &Cl);
