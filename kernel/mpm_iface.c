@@ -67,6 +67,7 @@
 #include "mpm_gimp.h"
 #include "mpm_iface.h"
 #include "mpm_phase.h"
+#include "mpm_static.h"
 
 /* quadrature of the line for An and the flaw: points per cell of line */
 #define IFACE_QUAD 200
@@ -535,11 +536,15 @@ void mpm_iface_musl(mpm_sim *s)
 
 int mpm_iface_pieces(const mpm_sim *s)
 {
-  return s->g && s->g->fld && s->g->fld->ifc ? s->g->fld->ifc->nseg : 0;
+  if (s->g && s->g->fld && s->g->fld->ifc)
+    return s->g->fld->ifc->nseg;
+  return s->qs ? mpm_static_iface_npieces(s->qs) : 0; /* the static solver's line alone */
 }
 
 int mpm_iface_piece(const mpm_sim *s, int i, double xy[4], double *lam, int *state)
 {
+  if (!(s->g && s->g->fld && s->g->fld->ifc))
+    return s->qs ? mpm_static_iface_piece(s->qs, i, xy, lam, state) : 0;
   const mpm_iface *f = s->g->fld->ifc;
   const double a = fmax(f->smin + i * f->sw, f->s0), b = fmin(f->smin + (i + 1) * f->sw, f->s1);
   if (!(b > a))

@@ -329,6 +329,7 @@ struct mpm_sim {
   double crack_tip;        /* x of the interface's farthest separated point (NAN: none)  */
   double gap_min;          /* the static interface's least normal opening so far         */
   double line_x, line_y;   /* a point of the interface's line (the specimen's)           */
+  struct mpm_static *qs;   /* the static solver on this sim, or NULL (its line's pieces)  */
   double t;                /* time                                                     */
   long step;               /* steps taken                                              */
   double P_grip, P_fixed;  /* loads (tension positive) of the last step                 */

@@ -67,6 +67,8 @@ void mpm_static_free(mpm_static *q)
 {
   if (!q)
     return;
+  if (q->s && q->s->qs == q)
+    q->s->qs = NULL;
   void *f[] = {q->pid, q->cnt, q->node, q->N, q->Gx, q->Gy, q->eq, q->held, q->coef, q->map, q->Un, q->Ut, q->R, q->kfd,
                q->ga, q->x1, q->x2, q->du, q->pdir, q->tst, q->tw, q->tpath, q->fext};
   for (size_t i = 0; i < sizeof f / sizeof f[0]; i++)
@@ -128,6 +130,7 @@ mpm_status mpm_static_alloc(mpm_sim *s, mpm_static **out, char *err, size_t errl
   q->step_d = 1e-3 * sc->L * fmin(sc->snf, sc->stf) / sc->E; /* the first, elastic, increment */
   q->step_D = 1e-3 * q->Dref;
   q->mode = MPM_QS_GRIP;
+  s->qs = q;
   /* a static bar has no velocity: the explicit run's starting field is not its */
   for (size_t k = 0; k < s->p->n; k++)
     s->p->vx[k] = s->p->vy[k] = 0.0;

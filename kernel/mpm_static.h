@@ -121,6 +121,11 @@ int mpm_static_seg_law(const mpm_material *m, const mpm_dstate *in, const double
 size_t mpm_static_iface_pattern(mpm_static *q, int *ti, int *tj, size_t k, size_t *m);
 size_t mpm_static_iface_nz(const mpm_static *q); /* how many entries that is            */
 void mpm_static_iface_free(mpm_static *q);
+/* The line's pieces for pictures (mpm.h mpm_iface_pieces): one per segment of a line
+ * along x (the split beams), the segment's node share, its lambda and state (0 stuck,
+ * 1 softening, 2 open: separated or a pre-crack); 0 pieces on an inclined line. */
+int mpm_static_iface_npieces(const mpm_static *q);
+int mpm_static_iface_piece(const mpm_static *q, int i, double xy[4], double *lam, int *state);
 
 /* mpm_static_asm.c: the stencils and unknowns (setup), the trial state of every particle
  * from Ut with the residual, tangent and the dissipation's gradient (eval). */

@@ -674,3 +674,22 @@ int mpm_static_iface_sever(mpm_static *q)
   q->s->cut = 1;
   return n;
 }
+
+int mpm_static_iface_npieces(const mpm_static *q)
+{
+  return q->iface && !(fabs(q->imat.nx) > 1e-12) ? q->nseg : 0;
+}
+
+int mpm_static_iface_piece(const mpm_static *q, int i, double xy[4], double *lam, int *state)
+{
+  const mpm_sim *s = q->s;
+  if (i < 0 || i >= mpm_static_iface_npieces(q) || isnan(q->segx[i]) || !(q->pA[i] > 0.0))
+    return 0;
+  const double h = s->sc.h, x = q->segx[i];
+  xy[0] = fmax(x - 0.5 * h, 0.0);
+  xy[2] = fmin(x + 0.5 * h, s->sc.L);
+  xy[1] = xy[3] = s->line_y;
+  *lam = q->spre[i] ? 0.0 : q->pst[i].lam;
+  *state = q->spre[i] || q->pst[i].sep ? 2 : q->pst[i].lam > 0.0 ? 1 : 0;
+  return 1;
+}
