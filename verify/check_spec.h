@@ -21,4 +21,9 @@ int ver_check_spec(const char *dir, const ver_scene *vs, const char *out);
  * checks (a failed run is one failed check, "run") and verdict. */
 void ver_spec_case(const char *dir, ver_case *c);
 
+/* verify's cross-case checks of the split beams in cs (3 grids in ratio 2 at one ppc):
+ * the compliance's order, the DCB's peak's Richardson limit against the cohesive beam;
+ * at most room into x, returns how many. */
+int ver_spec_cross(const ver_case *cs, int n, ver_cross *x, int room);
+
 #endif

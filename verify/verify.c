@@ -149,6 +149,7 @@ static int check_all(const ver_verify_opts *o, ver_case *cs, int n, ver_cross *x
     rc |= cs[i].verdict == VER_FAIL;
   }
   *nx = ver_policy_cross(cs, n, x);
+  *nx += ver_spec_cross(cs, n, x + *nx, VER_MAXCROSS - *nx);
   *nx += ver_mms_cross(x + *nx, VER_MAXCROSS - *nx);
   for (int i = 0; i < *nx; i++) {
     char id[160];
