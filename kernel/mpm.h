@@ -23,7 +23,8 @@ typedef enum {
   MPM_ENOTFINITE, /* a NaN or infinity appeared in the state              */
   MPM_EDOMAIN,    /* a particle left the grid                            */
   MPM_EIO,        /* a file could not be written                         */
-  MPM_EINTR       /* stopped by a signal                                 */
+  MPM_EINTR,      /* stopped by a signal                                 */
+  MPM_ESTALL      /* the static solver found no equilibrium path onward   */
 } mpm_status;
 
 const char *mpm_strerror(mpm_status s);
@@ -100,8 +101,7 @@ typedef struct {
   int solver;            /* MPM_SOLVER_*                                               */
 } mpm_scene;
 
-/* The particles' starting velocity (no wave from the grip): -speed (L - x) / L on the
- * bar, the grip's -speed left of it, 0 right of it. */
+/* Starting velocity (no wave): -speed (L - x) / L on the bar, -speed left, 0 right. */
 static inline double mpm_scene_start_vx(const mpm_scene *sc, double x)
 {
   return x <= 0.0 ? -sc->speed : x >= sc->L ? 0.0 : -sc->speed * (sc->L - x) / sc->L;

@@ -28,6 +28,7 @@ const char *mpm_strerror(mpm_status s)
   case MPM_EDOMAIN: return "particle left the grid";
   case MPM_EIO: return "i/o error";
   case MPM_EINTR: return "interrupted";
+  case MPM_ESTALL: return "no equilibrium path onward";
   }
   return "unknown status";
 }

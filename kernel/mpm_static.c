@@ -62,6 +62,7 @@
 #define MPM_QS_CMIN 1e-12 /* of U0 H / sin a: less dissipated is nothing (rounding)     */
 #define MPM_QS_NEL 8      /* equal increments of the linear branch up to the first initiation */
 #define MPM_QS_PUSH 0.01  /* of the peak: an interface's load below minus this stops the run */
+#define MPM_QS_LEDGER 1e-4 /* of the largest W_ext: W_ext - SE - W_coh beyond this stops the run */
 
 void mpm_static_free(mpm_static *q)
 {
@@ -490,6 +491,40 @@ static void next_step(mpm_static *q, int iters, int first)
     q->step_d = fmax(s->sc.end_delta - q->dn, 1e-12 * s->sc.end_delta);
 }
 
+/* After an increment is committed: its path still one of equilibria (the ledger) and not
+ * one a test would leave by a snap (the push-back); MPM_ESTALL and the reason if not. */
+static mpm_status path_sound(mpm_static *q, char *err, size_t errlen)
+{
+  const mpm_sim *s = q->s;
+  /* the ledger at every increment: W_ext (the trapezoid of P d delta) against SE +
+   * W_coh, within MPM_QS_LEDGER of the largest W_ext so far (every bar scene's static
+   * run keeps it below 1e-6): a path that leaves it is not one of equilibria */
+  mpm_energy e;
+  mpm_sim_energy(s, &e);
+  q->Wmax = fmax(q->Wmax, fabs(e.W_ext));
+  if (fabs(e.W_ext - e.SE - e.W_coh) > MPM_QS_LEDGER * q->Wmax && q->Wmax > 0.0) {
+    snprintf(err, errlen, "static solver: the work done, %.9g, and the energy stored and spent, SE %.9g + W_coh "
+             "%.9g, part by %.3g of the largest work at delta = %.9g, increment %ld (allowed %g)", e.W_ext, e.SE,
+             e.W_coh, fabs(e.W_ext - e.SE - e.W_coh) / q->Wmax, q->dn, s->step, MPM_QS_LEDGER);
+    return MPM_ESTALL;
+  }
+  /* an interface's equilibrium path along which the specimen pushes back on its
+   * loading, P below -MPM_QS_PUSH of the peak (held grips on an inclined crack:
+   * segments unload with their opening kept while the control moves delta back):
+   * every state is in equilibrium, but a test under displacement control leaves such
+   * a path by a dynamic snap, which no quasi-static path shows; the run stops and
+   * says so.  (A free band's last particles take the load to -3 % of the peak near
+   * separation, test_mpm_static: the band's own error, not a snap; not judged here.) */
+  if (q->iface && s->P_grip < -MPM_QS_PUSH * s->P_peak) {
+    snprintf(err, errlen, "static solver: the equilibrium path takes the load to %.6g (%.3g of the peak %.6g) at "
+             "delta = %.9g, increment %ld: a test under displacement control would snap dynamically before this "
+             "point, which a quasi-static path cannot follow (docs/static.md, \"Where it stops\"); the explicit "
+             "solver runs it", s->P_grip, s->P_grip / s->P_peak, s->P_peak, q->dn, s->step);
+    return MPM_ESTALL;
+  }
+  return MPM_OK;
+}
+
 mpm_status mpm_static_step(mpm_static *q, char *err, size_t errlen)
 {
   mpm_sim *s = q->s;
@@ -545,22 +580,11 @@ mpm_status mpm_static_step(mpm_static *q, char *err, size_t errlen)
                  "advanced by less than %g of its scale over the last %d increments (docs/static.md, \"Where it "
                  "stops\")", q->dn, s->P_grip, grip_stalls ? "grip" : "dissipation",
                  grip_stalls ? 1e-9 : MPM_QS_STALL_C, grip_stalls ? 1 : MPM_QS_STALL);
-        return MPM_ENOTFINITE;
+        return MPM_ESTALL;
       }
-      /* an interface's equilibrium path along which the specimen pushes back on its
-       * loading, P below -MPM_QS_PUSH of the peak (held grips on an inclined crack:
-       * segments unload with their opening kept while the control moves delta back):
-       * every state is in equilibrium, but a test under displacement control leaves such
-       * a path by a dynamic snap, which no quasi-static path shows; the run stops and
-       * says so.  (A free band's last particles take the load to -3 % of the peak near
-       * separation, test_mpm_static: the band's own error, not a snap; not judged here.) */
-      if (q->iface && s->P_grip < -MPM_QS_PUSH * s->P_peak) {
-        snprintf(err, errlen, "static solver: the equilibrium path takes the load to %.6g (%.3g of the peak %.6g) at "
-                 "delta = %.9g, increment %ld: a test under displacement control would snap dynamically before this "
-                 "point, which a quasi-static path cannot follow (docs/static.md, \"Where it stops\"); the explicit "
-                 "solver runs it", s->P_grip, s->P_grip / s->P_peak, s->P_peak, q->dn, s->step);
-        return MPM_ENOTFINITE;
-      }
+      const mpm_status ps = path_sound(q, err, errlen);
+      if (ps != MPM_OK)
+        return ps;
       /* a grip increment that dissipated, before the cut: softening resumed after an
        * elastic stretch (a segment of the line separated and the rest unloaded; the load
        * climbs back to their strength): the dissipation leads again through the next
@@ -588,5 +612,5 @@ mpm_status mpm_static_step(mpm_static *q, char *err, size_t errlen)
   }
   snprintf(err, errlen, "static solver: no equilibrium found after %d smaller increments at delta = %.9g (increment "
            "%ld, %s control)", MPM_QS_MAXCUT, q->dn, s->step + 1, q->mode == MPM_QS_GRIP ? "grip" : "dissipation");
-  return MPM_ENOTFINITE;
+  return MPM_ESTALL;
 }
