@@ -256,14 +256,14 @@ static void check_words(const ver_check *k, char *buf, size_t len)
     snprintf(buf, len, "%.2f %%", 100.0 * k->error);
   else if (!strcmp(k->name, "ledger") || !strcmp(k->name, "gap") || !strcmp(k->name, "crack_tip"))
     snprintf(buf, len, "%.2g", k->measured);
-  else if (!strcmp(k->name, "snapback"))
+  else if (!strcmp(k->name, "delta_fall"))
     snprintf(buf, len, "%.2f %%", 100.0 * k->measured);
   else /* no "-0.00 %" for an error at rounding */
     snprintf(buf, len, "%+.2f %%", fabs(k->error) < 5e-5 ? 0.0 : 100.0 * k->error);
 }
 
 /* From case c's load.csv: where delta falls back after the peak, from the row of its
- * largest value to the least after it (the check "snapback"'s fall), the crack tip then
+ * largest value to the least after it (the check delta_fall's), the crack tip then
  * ("from x = X to Y while delta fell from D1 to D2", or "none"); and how far the
  * separated tip trails the 2-D LEFM branch's crack length at the same delta where the
  * front first reaches the middle of the branch check's window (a0 + 2 t to L - 3 t),
@@ -423,7 +423,7 @@ void ver_report_spec_vars(report *R)
         run_vars(R, key, c, &f);
         continue;
       }
-      static const char *const names[] = {"compliance", "peak_P", "branch", "D_growth", "snapback", "verdict",
+      static const char *const names[] = {"compliance", "peak_P", "branch", "D_growth", "delta_fall", "verdict",
                                           "peak", "peak_vs_lefm", "snap", "lag"};
       for (size_t j = 0; j < sizeof names / sizeof names[0]; j++) {
         snprintf(v, sizeof v, "spec:%s:%s", key, names[j]);
