@@ -31,14 +31,7 @@
 
 #define SPEC_ROWS_MAX 10000000L
 
-/* One FE table: C(a) and C'(a), ascending a. */
-typedef struct {
-  int n;
-  double a[64], C[64], dC[64];
-} fe_table;
-
-/* data/fe/<dcb|els>[_H<H>][_nu045].dat for the scene, or -1 with the reason. */
-static int fe_read(const mpm_scene *sc, fe_table *t, char *why, size_t wl)
+int ver_spec_fe_read(const mpm_scene *sc, ver_fe_table *t, char *why, size_t wl)
 {
   const char *sd = ver_scene_dir();
   if (!sd) {
@@ -96,8 +89,8 @@ static int fe_read(const mpm_scene *sc, fe_table *t, char *why, size_t wl)
   return 0;
 }
 
-/* Cubic through the 4 table points nearest a (C is smooth in a): y at a; NAN outside. */
-static double fe_at(const fe_table *t, const double *y, double a)
+/* Cubic through the 4 table points nearest a (C is smooth in a). */
+double ver_spec_fe_at(const ver_fe_table *t, const double *y, double a)
 {
   if (!(a >= t->a[0] && a <= t->a[t->n - 1]))
     return NAN;
@@ -122,7 +115,7 @@ static double fe_at(const fe_table *t, const double *y, double a)
  * delta increasing with a (the DCB; the ELS past its turn, where the rows with the front
  * past a0 + 2 t lie), solved for a by bisection on the stretch where it rises; NAN
  * outside. */
-static double branch_P(const fe_table *t, double Gc, double d, double alo)
+static double branch_P(const ver_fe_table *t, double Gc, double d, double alo)
 {
   /* from where delta(a) is least on and past alo: the ELS's branch falls in delta up to
    * its turn near 0.55 L (the unstable growth) and rises after it */
@@ -136,17 +129,18 @@ static double branch_P(const fe_table *t, double Gc, double d, double alo)
       }
     }
   double hi = t->a[t->n - 1];
-  const double Plo = sqrt(2.0 * Gc / fe_at(t, t->dC, lo)), Phi = sqrt(2.0 * Gc / fe_at(t, t->dC, hi));
-  if (!(d >= fe_at(t, t->C, lo) * Plo && d <= fe_at(t, t->C, hi) * Phi))
+  const double Plo = sqrt(2.0 * Gc / ver_spec_fe_at(t, t->dC, lo));
+  const double Phi = sqrt(2.0 * Gc / ver_spec_fe_at(t, t->dC, hi));
+  if (!(d >= ver_spec_fe_at(t, t->C, lo) * Plo && d <= ver_spec_fe_at(t, t->C, hi) * Phi))
     return NAN;
   for (int it = 0; it < 80; it++) {
-    const double m = 0.5 * (lo + hi), Pm = sqrt(2.0 * Gc / fe_at(t, t->dC, m));
-    if (fe_at(t, t->C, m) * Pm < d)
+    const double m = 0.5 * (lo + hi), Pm = sqrt(2.0 * Gc / ver_spec_fe_at(t, t->dC, m));
+    if (ver_spec_fe_at(t, t->C, m) * Pm < d)
       lo = m;
     else
       hi = m;
   }
-  return sqrt(2.0 * Gc / fe_at(t, t->dC, 0.5 * (lo + hi)));
+  return sqrt(2.0 * Gc / ver_spec_fe_at(t, t->dC, 0.5 * (lo + hi)));
 }
 
 /* The checks of one run, in order (skipped ones kept with their reason). */
@@ -205,7 +199,7 @@ typedef struct {
   double t, h, Gc;
   long n, ipk;
   const double *d, *P, *tip, *W, *SE, *Wc, *D;
-  fe_table fe;
+  ver_fe_table fe;
   int have_fe;
   char fe_why[600];
 } spec_run;
@@ -370,11 +364,11 @@ int ver_spec_judge(const char *dir, const ver_scene *vs, ver_check *chk, int max
     if (r.P[i] > r.P[r.ipk])
       r.ipk = i;
   verdicts v = {chk, 0, max, 0};
-  r.have_fe = fe_read(sc, &r.fe, r.fe_why, sizeof r.fe_why) == 0;
+  r.have_fe = ver_spec_fe_read(sc, &r.fe, r.fe_why, sizeof r.fe_why) == 0;
   /* compliance: the first row is on the linear branch (an eighth of the first
    * initiation); its error is about first order in h (the crack tip's singular field):
    * 4 ppc stiffer, -0.17 to -0.14 h / t; 1 ppc softer, +0.23 h / t at h = t / 4 */
-  const double C = r.d[0] / r.P[0], Cfe = r.have_fe ? fe_at(&r.fe, r.fe.C, sc->a0) : NAN;
+  const double C = r.d[0] / r.P[0], Cfe = r.have_fe ? ver_spec_fe_at(&r.fe, r.fe.C, sc->a0) : NAN;
   put(&v, "compliance", C, Cfe, r.have_fe ? C / Cfe - 1.0 : NAN, 0.25 * r.h / r.t, r.have_fe ? "" : r.fe_why);
   if (r.dcb)
     judge_peak(&r, &v);

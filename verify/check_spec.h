@@ -8,6 +8,19 @@
 #include "sweep.h"
 #include "scene.h"
 
+/* One table of data/fe: the 2-D finite-element compliance C(a) and C'(a) (by the J
+ * integral), ascending a, scaled to the scene's E (the tables' is 1024). */
+typedef struct {
+  int n;
+  double a[64], C[64], dC[64];
+} ver_fe_table;
+/* data/fe/<dcb|els>[_H<H>][_nu045].dat for the scene's specimen, L, H and nu; 0, or -1
+ * with the reason in why. */
+int ver_spec_fe_read(const mpm_scene *sc, ver_fe_table *t, char *why, size_t wl);
+/* y (t->C or t->dC) at a, by the cubic through the 4 table points nearest a (C is smooth
+ * in a); NAN outside the table. */
+double ver_spec_fe_at(const ver_fe_table *t, const double *y, double a);
+
 /* The checks of DIR, a run of the DCB or ELS (vs its scene), into chk (at most max, *n
  * of them; a check that cannot be made is a pass with error NaN and the reason in its
  * note).  0, or 2 with the reason in err when the folder's files cannot be read. */
