@@ -293,9 +293,29 @@ static int increment(mpm_static *q, int *iters)
   return 0;
 }
 
+/* The softening particles that reach their strength within 1e-9 of the first (scale k:
+ * the linear increment times k meets F = 0, eq. 23). */
+static long tied_at_initiation(const mpm_static *q, double k)
+{
+  const mpm_sim *s = q->s;
+  long n = 0;
+  for (size_t c = 0; c < q->np; c++) {
+    const mpm_material *m = &s->mat[s->p->mat[q->pid[c]]];
+    if (m->model == MPM_DCOH_NONE)
+      continue;
+    const double se = mpm_dcoh_F(m, q->tst[c].sxx, q->tst[c].syy, q->tst[c].sxy, 0.0) + 1.0;
+    n += se > 0.0 && 1.0 / se <= k * (1.0 + 1e-9);
+  }
+  return n;
+}
+
 /* The linear first increment scaled to 1 / MPM_QS_NEL of the first initiation (F = 0,
- * eq. 23); the grip's step is set to the rest's share. */
-static void scale_to_initiation(mpm_static *q)
+ * eq. 23); the grip's step is set to the rest's share.  MPM_ESTALL where more particles
+ * than a cell holds reach their strength together (a uniform stress without a flaw): the
+ * uniform state bifurcates there, every band is a branch and the uniform softening one is
+ * unstable (fig6 without its flaw followed it to D = 13 U0 H); the run stops and says how
+ * to choose the branch. */
+static mpm_status scale_to_initiation(mpm_static *q, char *err, size_t errlen)
 {
   const mpm_sim *s = q->s;
   double kmin = INFINITY;
@@ -307,6 +327,14 @@ static void scale_to_initiation(mpm_static *q)
     if (se > 0.0)
       kmin = fmin(kmin, 1.0 / se);
   }
+  const long tied = isfinite(kmin) ? tied_at_initiation(q, kmin) : 0;
+  if (tied > s->sc.ppc) {
+    snprintf(err, errlen, "static solver: %ld softening particles reach their strength together at delta = %.9g: "
+             "the uniform state bifurcates there (each band is a branch, the uniform softening is unstable); give "
+             "the bar a flaw to choose the branch (imperfection.snf_factor below 1) or use decohesion.path = "
+             "interface", tied, q->dt * kmin);
+    return MPM_ESTALL;
+  }
   for (int pi = 0; pi < q->npair; pi++) { /* the interface's ties */
     const mpm_dstate *o = &q->ptr[pi];
     const double se = mpm_dcoh_F(&q->imat, o->sxx, o->syy, o->sxy, 0.0) + 1.0;
@@ -314,7 +342,7 @@ static void scale_to_initiation(mpm_static *q)
       kmin = fmin(kmin, 1.0 / se);
   }
   if (!(kmin > 1.0) || !isfinite(kmin))
-    return;
+    return MPM_OK;
   const double k = kmin * (1.0 - 1e-12) / MPM_QS_NEL;
   for (size_t i = 0; i < 2 * q->nslot; i++)
     if (q->eq[i] >= 0)
@@ -323,6 +351,7 @@ static void scale_to_initiation(mpm_static *q)
   q->step_d = q->dt;
   q->nel = MPM_QS_NEL - 1;
   mpm_static_eval(q, 1);
+  return MPM_OK;
 }
 
 /* Makes the trial state the committed one: particles, displacements, loads, energies. */
@@ -559,8 +588,9 @@ mpm_status mpm_static_step(mpm_static *q, char *err, size_t errlen)
     }
     if (r == 1) {
       const int first = s->step == 0;
-      if (first && q->mode == MPM_QS_GRIP)
-        scale_to_initiation(q);
+      const mpm_status si = first && q->mode == MPM_QS_GRIP ? scale_to_initiation(q, err, errlen) : MPM_OK;
+      if (si != MPM_OK)
+        return si;
       const double Cprev = q->Cn;
       commit(q);
       const int grip_stalls = (q->mode == MPM_QS_GRIP && q->nel == 0 && q->step_d < 1e-9 * fmax(q->dn, 1e-300)) ||
