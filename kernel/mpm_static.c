@@ -129,6 +129,10 @@ mpm_status mpm_static_alloc(mpm_sim *s, mpm_static **out, char *err, size_t errl
   q->Dmax = sc->model != MPM_DCOH_NONE ? mpm_specimen_of(sc)->dis_step_max(sc) : 0.1;
   q->Fref = 1e-3 * fmin(sc->snf, sc->stf) * sc->H;
   q->step_d = 1e-3 * sc->L * fmin(sc->snf, sc->stf) / sc->E; /* the first, elastic, increment */
+  if (sc->model == MPM_DCOH_NONE) { /* no strength to scale by: the run's own stretch */
+    q->Fref = 1e-3 * sc->E * sc->H * sc->end_delta / sc->L;
+    q->step_d = sc->end_delta / MPM_QS_NEL;
+  }
   q->step_D = 1e-3 * q->Dref;
   q->mode = MPM_QS_GRIP;
   s->qs = q;

@@ -266,6 +266,15 @@ static void judge_branch(const spec_run *r, verdicts *v)
     nb++;
   }
   char why[700];
+  double tipmax = -INFINITY;
+  for (long i = 0; i < r->n; i++)
+    tipmax = fmax(tipmax, r->tip[i]);
+  if (!(tipmax > sc->a0 + 2.0 * t)) { /* no propagation traced: the question not answered */
+    snprintf(why, sizeof why, "the front never passed a0 + 2 t = %g (reached %g): no propagation to judge",
+             sc->a0 + 2.0 * t, tipmax);
+    put(v, "branch", tipmax, sc->a0 + 2.0 * t, 1.0, 0.0, why);
+    return;
+  }
   snprintf(why, sizeof why, "%s", r->have_fe ? "no row with the front 2 t past a0 on the table's branch" : r->fe_why);
   if (nb)
     snprintf(why, sizeof why, "RMS over %ld rows with the front in (a0 + 2 t, L - 3 t]; largest %.3g", nb, emax);
@@ -331,6 +340,8 @@ static void judge_els(const spec_run *r, verdicts *v)
 
 int ver_spec_judge(const char *dir, const ver_scene *vs, ver_check *chk, int max, int *nchk, char *err, size_t errlen)
 {
+  if (vs->sc.grips == MPM_GRIPS_HELD) /* the held bar: check_held.c */
+    return ver_held_judge(dir, vs, chk, max, nchk, err, errlen);
   static spec_run r; /* the FE table is large-ish; one per process */
   memset(&r, 0, sizeof r);
   const mpm_scene *sc = r.sc = &vs->sc;
@@ -387,7 +398,7 @@ static int write_json(const char *dir, const char *out, int dcb, const ver_check
 {
   cJSON *root = cJSON_CreateObject();
   cJSON_AddStringToObject(root, "folder", dir);
-  cJSON_AddStringToObject(root, "specimen", dcb ? "dcb" : "els");
+  cJSON_AddStringToObject(root, "specimen", dcb < 0 ? "held bar" : dcb ? "dcb" : "els");
   cJSON_AddStringToObject(root, "verdict", fail ? "fail" : "pass");
   cJSON *arr = cJSON_AddArrayToObject(root, "checks");
   for (int i = 0; i < n; i++) {
@@ -433,9 +444,13 @@ int ver_check_spec(const char *dir, const ver_scene *vs, const char *out)
     return 2;
   }
   const mpm_scene *sc = &vs->sc;
-  printf("check: %s, %s (a0 %g, h %g = t / %g, %d ppc)\n", dir,
-         sc->specimen == MPM_SPEC_DCB ? "a double cantilever beam" : "an end-loaded split", sc->a0, sc->h, 0.5 * sc->H / sc->h,
-         sc->ppc);
+  if (sc->grips == MPM_GRIPS_HELD)
+    printf("check: %s, the bar held by wedge grips (L %g, H %g, nu %g, h %g, %d ppc)\n", dir, sc->L, sc->H, sc->nu, sc->h,
+           sc->ppc);
+  else
+    printf("check: %s, %s (a0 %g, h %g = t / %g, %d ppc)\n", dir,
+           sc->specimen == MPM_SPEC_DCB ? "a double cantilever beam" : "an end-loaded split", sc->a0, sc->h,
+           0.5 * sc->H / sc->h, sc->ppc);
   int fail = 0;
   for (int i = 0; i < n; i++) {
     const ver_check *k = &chk[i];
@@ -448,7 +463,7 @@ int ver_check_spec(const char *dir, const ver_scene *vs, const char *out)
              k->note);
   }
   printf("check: %s (%d checks)\n", fail ? "fail" : "pass", n);
-  const int wrc = write_json(dir, out, sc->specimen == MPM_SPEC_DCB, chk, n, fail);
+  const int wrc = write_json(dir, out, sc->grips == MPM_GRIPS_HELD ? -1 : sc->specimen == MPM_SPEC_DCB, chk, n, fail);
   return wrc ? 1 : fail ? 1 : 0;
 }
 
@@ -494,11 +509,14 @@ int ver_spec_cross(const ver_case *cs, int n, ver_cross *x, int room)
   int m = 0;
   for (int i = 0; i < n && m + 2 <= room; i++) {
     const ver_case *a = &cs[i], *b = NULL, *c = NULL;
-    if (a->vs.sc.specimen == MPM_SPEC_BAR || !a->complete)
+    const int held = a->vs.sc.grips == MPM_GRIPS_HELD;
+    const char *cn = held ? "stiffness" : "compliance";
+    if ((a->vs.sc.specimen == MPM_SPEC_BAR && !held) || !a->complete)
       continue;
     for (int j = 0; j < n; j++) { /* 2 h and 4 h of the same scene, variant and ppc */
       const ver_case *o = &cs[j];
-      if (o->vs.sc.specimen != a->vs.sc.specimen || !o->complete || strcmp(o->scene, a->scene) || o->ppc != a->ppc ||
+      if (o->vs.sc.specimen != a->vs.sc.specimen || o->vs.sc.grips != a->vs.sc.grips || !o->complete ||
+          strcmp(o->scene, a->scene) || o->ppc != a->ppc ||
           strcmp(o->var.suffix, a->var.suffix))
         continue;
       b = fabs(o->h - 2.0 * a->h) < 1e-9 * a->h ? o : b;
@@ -510,31 +528,32 @@ int ver_spec_cross(const ver_case *cs, int n, ver_cross *x, int room)
     /* the compliance's order of convergence to the FE value (about 1: the tip's field) */
     ver_cross *q = &x[m++];
     memset(q, 0, sizeof *q);
-    snprintf(q->name, sizeof q->name, "compliance_order");
+    snprintf(q->name, sizeof q->name, "%s_order", cn);
     snprintf(q->scene, sizeof q->scene, "%s%s%s", a->scene, a->var.suffix[0] ? "-" : "", a->var.suffix);
     snprintf(q->over, sizeof q->over, "h");
     q->fixed = a->ppc;
     double e[3];
     for (int k = 0; k < 3; k++) {
       q->x[k] = g3[k]->h;
-      const double C = case_measure(g3[k], "compliance");
+      const double C = case_measure(g3[k], cn);
       double Cfe = NAN;
       for (int j = 0; j < g3[k]->nchk; j++)
-        if (!strcmp(g3[k]->chk[j].name, "compliance"))
+        if (!strcmp(g3[k]->chk[j].name, cn))
           Cfe = g3[k]->chk[j].reference;
       q->y[k] = e[k] = fabs(C / Cfe - 1.0);
       snprintf(q->ids[k], sizeof q->ids[0], "%s", g3[k]->id);
     }
     q->n = 3;
     ver_check *k = &q->chk;
-    k->name = "compliance_order";
+    k->name = held ? "stiffness_order" : "compliance_order";
     k->measured = log2(e[1] / e[0]);
     k->reference = 1.0;
     k->error = k->measured - 1.0;
     k->tol = 0.5;
     k->verdict = fabs(k->error) <= k->tol ? VER_PASS : VER_FAIL;
-    snprintf(k->note, sizeof k->note, "log2 of the compliance's error against data/fe at h %g over h %g (%.3g, %.3g; "
-             "at 4 h %.3g): about first order, the crack tip's singular field", b->h, a->h, e[1], e[0], e[2]);
+    snprintf(k->note, sizeof k->note, "log2 of the %s's error against data/fe at h %g over h %g (%.3g, %.3g; at 4 h "
+             "%.3g): about first order, the %s singular field", cn, b->h, a->h, e[1], e[0], e[2],
+             held ? "grips' corners'" : "crack tip's");
     if (a->vs.sc.specimen != MPM_SPEC_DCB)
       continue;
     /* the peak's Richardson limit (first order, the nodes' release) against the beam */

@@ -39,4 +39,8 @@ void ver_spec_case(const char *dir, ver_case *c);
  * at most room into x, returns how many. */
 int ver_spec_cross(const ver_case *cs, int n, ver_cross *x, int room);
 
+/* The bar held by wedge grips (check_held.c): its stiffness against data/fe's and the
+ * ledger, as ver_spec_judge. */
+int ver_held_judge(const char *dir, const ver_scene *vs, ver_check *chk, int max, int *n, char *err, size_t errlen);
+
 #endif

@@ -464,7 +464,7 @@ int ver_cmd_check(int argc, char **argv)
     fprintf(stderr, PROG ": %s\n", err);
     return 2;
   }
-  if (c.vs.sc.specimen != MPM_SPEC_BAR) /* a split beam: its own references */
+  if (c.vs.sc.specimen != MPM_SPEC_BAR || c.vs.sc.grips == MPM_GRIPS_HELD) /* its own references */
     return ver_check_spec(dir, &c.vs, out);
   char aerr[256];
   c.have_ana = ver_scene_bar(&c.vs.sc, &c.ana, aerr, sizeof aerr) == 0;

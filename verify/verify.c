@@ -138,7 +138,7 @@ static int check_all(const ver_verify_opts *o, ver_case *cs, int n, ver_cross *x
 {
   int rc = 0;
   for (int i = 0; i < n; i++) {
-    if (cs[i].vs.sc.specimen != MPM_SPEC_BAR) { /* a split beam: its own references */
+    if (cs[i].vs.sc.specimen != MPM_SPEC_BAR || cs[i].vs.sc.grips == MPM_GRIPS_HELD) { /* its own references */
       char dir[800];
       ver_case_dir(o, &cs[i], dir, sizeof dir);
       ver_spec_case(dir, &cs[i]);
