@@ -9,7 +9,7 @@
 BUILD     ?= build
 MESONFLAGS ?=
 DEBS = meson ninja-build pkg-config gcc libgsl-dev libcmocka-dev libinih-dev \
-       libcjson-dev libsuitesparse-dev gnuplot-nox parallel
+       libcjson-dev libsuitesparse-dev gnuplot-nox parallel python3-vtk9
 SUDO = $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
 .PHONY: all deps build check check-asan fuzz fuzz-check fuzz-deps report report-full bench docs-keys clean fe-data
