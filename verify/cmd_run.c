@@ -30,7 +30,7 @@ static void usage(FILE *f)
     "$DELAM_SCENES, ./data/scenes, or the installed or source tree's), and writes\n"
     "load.csv, energy.csv, particle\n"
     "snapshots (CSV and VTK XML .vtp, with snapshots.pvd for ParaView), final.csv/.vtp\n"
-    "and summary.json.\n\n"
+    "and summary.json; `delam plot DIR` draws the folder.\n\n"
     "options:\n"
     "  --out DIR         output folder (default out/<scene>-h<h>-ppc<n>)\n"
     "  --h H             grid spacing; dt is scaled with it unless --dt is given\n"

@@ -92,7 +92,8 @@ static int prepare_outdir(const char *dir, int *lock, char *err, size_t errlen)
     if (!strncmp(n, "snap-d", 6) || !strncmp(n, "final.", 6) || !strncmp(n, "final-line.", 11) ||
         !strcmp(n, "snapshots.pvd") ||
         !strcmp(n, "summary.json") || !strcmp(n, "load.csv") || !strcmp(n, "energy.csv") ||
-        !strcmp(n, "scene.ini") || !strcmp(n, "check.json") || (len > 4 && !strcmp(n + len - 4, ".tmp"))) {
+        !strcmp(n, "scene.ini") || !strcmp(n, "check.json") || !strcmp(n, "plot.png") ||
+        (len > 4 && !strcmp(n + len - 4, ".tmp"))) {
       char old[1400];
       snprintf(old, sizeof old, "%s/%s", dir, n);
       remove(old);
@@ -432,8 +433,8 @@ static int write_pvd(const run_state *r, const char *dir, char *bad)
   if (!f)
     return -1;
   const int line = mpm_iface_pieces(r->s) > 0;
-  fputs("<?xml version=\"1.0\"?>\n<!-- delam snapshots.pvd schema 2: time is the end displacement delta -->\n"
-        "<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n", f);
+  fprintf(f, "<?xml version=\"1.0\"?>\n<!-- delam snapshots.pvd schema %d: time is the end displacement delta -->\n"
+          "<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n", VER_SCHEMA_PVD);
   for (int i = 0; i < r->vs->nsnap; i++)
     if (r->snap_done[i]) {
       const double d = r->vs->snap[i];
