@@ -30,6 +30,12 @@ int ver_spec_judge(const char *dir, const ver_scene *vs, ver_check *chk, int max
  * out).  0 pass, 1 a check failed, 2 the folder's files cannot be read. */
 int ver_check_spec(const char *dir, const ver_scene *vs, const char *out);
 
+/* The 2-D LEFM branch the check holds the run to (docs/specimens.md), for a plot: at a0
+ * and at data/fe's crack lengths past it, a, delta = C(a) P and P = sqrt(2 G_c / C'(a))
+ * with G_c = q U0 / (q + 1) and the table's C scaled by 1024 / E; at most max points.
+ * The count, or -1 with why (no table for the scene's L, H, nu, or a0 outside it). */
+int ver_spec_branch(const mpm_scene *sc, double *a, double *d, double *P, int max, char *why, size_t wl);
+
 /* verify's case of a split beam (c->vs.sc.specimen dcb or els), run into dir: its
  * checks (a failed run is one failed check, "run") and verdict. */
 void ver_spec_case(const char *dir, ver_case *c);

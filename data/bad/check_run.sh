@@ -72,7 +72,7 @@ for k in 1 2; do
     echo "# run $k failed"
 done
 why=""
-for f in load.csv energy.csv final.csv final.vtk snap-d0.050.csv; do
+for f in load.csv energy.csv final.csv final.vtp snap-d0.050.csv snap-d0.050.vtp snapshots.pvd; do
   cmp -s "$tmp/det1/$f" "$tmp/det2/$f" || why="$why $f differs or is missing;"
 done
 timings='"(wall_s|cpu_s|updates_per_s)"'
