@@ -145,8 +145,8 @@ static double branch_P(const ver_fe_table *t, double Gc, double d, double alo)
 
 int ver_spec_branch(const mpm_scene *sc, double *a, double *d, double *P, int max, char *why, size_t wl)
 {
-  static fe_table t; /* one per process, as the judge's */
-  if (fe_read(sc, &t, why, wl))
+  static ver_fe_table t; /* one per process, as the judge's */
+  if (ver_spec_fe_read(sc, &t, why, wl))
     return -1;
   if (!(sc->a0 >= t.a[0] && sc->a0 <= t.a[t.n - 1])) {
     snprintf(why, wl, "data/fe's crack lengths are %g to %g, a0 is %g", t.a[0], t.a[t.n - 1], sc->a0);
@@ -159,8 +159,8 @@ int ver_spec_branch(const mpm_scene *sc, double *a, double *d, double *P, int ma
     if (i >= 0 && !(ai > sc->a0))
       continue;
     a[k] = ai;
-    P[k] = sqrt(2.0 * Gc / (i < 0 ? fe_at(&t, t.dC, ai) : t.dC[i]));
-    d[k] = (i < 0 ? fe_at(&t, t.C, ai) : t.C[i]) * P[k];
+    P[k] = sqrt(2.0 * Gc / (i < 0 ? ver_spec_fe_at(&t, t.dC, ai) : t.dC[i]));
+    d[k] = (i < 0 ? ver_spec_fe_at(&t, t.C, ai) : t.C[i]) * P[k];
     k++;
   }
   return k;
