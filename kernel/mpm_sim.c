@@ -327,25 +327,6 @@ static mpm_status mark_paths(mpm_sim *s, const mpm_scene *sc, const mpm_layout *
   return MPM_OK;
 }
 
-static void place_head(mpm_sim *s, const mpm_scene *sc, const mpm_layout *l)
-{
-  mpm_particles *p = s->p;
-  const double d = l->h / l->n1, mp = s->mat[MPM_MAT_BAR].mp;
-  const int n1 = l->n1, cy = l->cy;
-  const size_t nbar = l->nbar, nhead = l->nhead;
-  /* The head: the same lattice continued MPM_HEAD_CELLS cells beyond x = 0, moving with
-   * the grip. */
-  size_t k = nbar;
-  for (int j = 0; nhead && j < cy * n1; j++)
-    for (int i = -l->headc * n1; i < 0; i++, k++) {
-      p->x[k] = p->x0[k] = (i + 0.5) * d;
-      p->y[k] = p->y0[k] = (j + 0.5) * d;
-      p->vx[k] = mpm_scene_start_vx(sc, p->x[k]); /* the head: the grip's speed */
-      p->m[k] = mp;
-      p->V[k] = d * d;
-      p->mat[k] = MPM_MAT_HEAD;
-    }
-}
 
 /* Fails with MPM_ENOMEM and a message. */
 static mpm_status nomem(mpm_sim *s, const char *what, char *err, size_t errlen)
@@ -384,7 +365,8 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
     mpm_sim_free(s);
     return st;
   }
-  place_head(s, sc, &l);
+  if (spec->place_head)
+    spec->place_head(s, &l);
   s->grid_ox0 = s->g->ox;
   s->nbc = spec->bcs(s, &l, s->bc);
   s->crack_tip = spec->precrack ? sc->a0 : NAN;

@@ -43,6 +43,8 @@ typedef struct mpm_specimen_type {
   /* the layout's cells left of x = 0 beyond the margin (the grip's travel), and of them
    * those the rigid head's particles fill (the bar's loading machine) */
   void (*left_cells)(const mpm_scene *sc, int *left, int *head);
+  /* the head's particles after the body's (NULL: none) */
+  void (*place_head)(mpm_sim *s, const mpm_layout *l);
   /* the constrained components into out (at most the count with out NULL); returns how
    * many.  The explicit step and the static solver take them in this order. */
   int (*bcs)(const mpm_sim *s, const mpm_layout *l, mpm_bc *out);
