@@ -101,10 +101,10 @@ typedef struct {
   int solver;            /* MPM_SOLVER_*                                               */
 } mpm_scene;
 
-/* Starting velocity (no wave): -speed (L - x) / L on the bar, -speed left, 0 right. */
+/* Starting velocity (no wave): -speed (L - x) / L on the bar, -speed left, 0 right; beams 0. */
 static inline double mpm_scene_start_vx(const mpm_scene *sc, double x)
 {
-  return x <= 0.0 ? -sc->speed : x >= sc->L ? 0.0 : -sc->speed * (sc->L - x) / sc->L;
+  return sc->specimen != MPM_SPEC_BAR ? 0.0 : x <= 0.0 ? -sc->speed : x >= sc->L ? 0.0 : -sc->speed * (sc->L - x) / sc->L;
 }
 /* decohesion.path = line: the half-width of the strip that may soften, h (|sin a| +
  * |cos a|) / 2 (the cells the line at alpha crosses) + path_reach h. */

@@ -19,6 +19,20 @@ static void bar_left_cells(const mpm_scene *sc, int *left, int *head)
   *head = sc->head == MPM_HEAD_NONE ? 0 : MPM_HEAD_CELLS;
 }
 
+static int bar_rise_cells(const mpm_scene *sc)
+{
+  (void)sc;
+  return 0;
+}
+
+/* -speed (L - x) / L along the bar (mpm.h) */
+static void bar_start_velocity(const mpm_scene *sc, double x, double y, double *vx, double *vy)
+{
+  (void)y;
+  *vx = mpm_scene_start_vx(sc, x);
+  *vy = 0.0;
+}
+
 /* The head: stress-free particles of the bar's density beyond x = 0 (MPM_MAT_HEAD). */
 static void bar_place_head(mpm_sim *s, const mpm_layout *l)
 {
@@ -53,7 +67,7 @@ static int bar_bcs(const mpm_sim *s, const mpm_layout *l, mpm_bc *out)
 #define PUT(i, j, cmp, cc, fx)                                                                         \
   do {                                                                                             \
     if (out)                                                                                       \
-      out[n] = (mpm_bc){(int)mpm_grid_node(g, (i), (j) + l->pad), (cmp), (fx), MPM_BC_ANY, (cc)};  \
+      out[n] = (mpm_bc){(int)mpm_grid_node(g, (i), (j) + l->padv), (cmp), (fx), MPM_BC_ANY, (cc)};  \
     n++;                                                                                           \
   } while (0)
   for (int i = grip0; i <= l->padl; i++)
@@ -118,6 +132,8 @@ const mpm_specimen_type mpm_spec_bar = {
   .name = "bar",
   .left_cells = bar_left_cells,
   .place_head = bar_place_head,
+  .start_velocity = bar_start_velocity,
+  .rise_cells = bar_rise_cells,
   .bcs = bar_bcs,
   .line_point = bar_line_point,
   .dis_full = bar_dis_full,
