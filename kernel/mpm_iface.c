@@ -179,7 +179,10 @@ static void merge_slivers(const mpm_sim *s, mpm_iface *f, double amin)
    * slivers left, the uGIMP tails beyond the bar, hold no line */
   for (int b = 0; b < f->nseg; b++)
     f->owner[b] = b;
-  for (int b = 0; b < f->nseg; b++)
+  /* a segment a node (the split beams): no neighbour's share to join; the node behind the
+   * crack tip, whose uGIMP weight reaches the bonded line by a particle's half-width,
+   * stays on the pre-crack (joined to the tip's, it bonded the crack h shorter) */
+  for (int b = 0; !f->stick_onset && b < f->nseg; b++)
     if (f->A[b] > 0.0 && f->A[b] < amin) {
       const int lo = b > 0 ? b - 1 : b + 1, hi = b + 1 < f->nseg ? b + 1 : b - 1;
       const int to = f->A[lo] > f->A[hi] ? lo : hi;

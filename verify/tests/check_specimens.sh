@@ -9,6 +9,7 @@
 #   dcb-h8          the DCB at h 8 passes `delam check` (compliance against data/fe's C(a0),
 #                   the peak against the cohesive beam, the branch against the 2-D LEFM
 #                   branch, D = U0 x growth, the ledger) with the bounds of h = t / 2;
+#   dcb-explicit    the DCB's explicit peak within 2 % of the static solver's (h 8);
 #   dcb-wrong-law   a DCB run with U0 0.5 whose scene.ini is made to say 0.375: the check
 #                   fails (peak_P, branch): the checks can tell a wrong law;
 #   els-h8          the ELS at h 8 passes `delam check` (compliance and branch against
@@ -69,6 +70,18 @@ why=""
 grep -qE "^  peak_P +FAIL" wrong.txt || why="$why; peak_P not failed"
 grep -qE "^  branch +FAIL" wrong.txt || why="$why; branch not failed"
 result dcb-wrong-law "${why#; }"
+# the DCB explicitly against the static solver at h 8, to delta 5 (past the peak): the
+# peaks within 2 % (a second and a half)
+"$delam" run dcb --h 8 --solver explicit --until 5 --threads 1 --quiet --out dcbx >/dev/null 2>dcbx.err
+rc=$?
+"$delam" run dcb --h 8 --until 5 --threads 1 --quiet --out dcbs >/dev/null 2>&1
+why=""
+[ "$rc" = 0 ] || why="explicit run: exit $rc $(head -1 dcbx.err)"
+px=$(sed -n 's/^[[:space:]]*"peak_P":[[:space:]]*\([^,]*\),.*/\1/p' dcbx/summary.json)
+ps=$(sed -n 's/^[[:space:]]*"peak_P":[[:space:]]*\([^,]*\),.*/\1/p' dcbs/summary.json)
+bad=$(awk -v x="$px" -v s="$ps" 'BEGIN {e = x / s - 1; if (!(s > 0) || e > 0.02 || e < -0.02) printf "explicit %s against static %s (%.3g)", x, s, e}')
+[ -z "$bad" ] || why="$why; $bad"
+result dcb-explicit "${why#; }"
 # the ELS at h 8
 "$delam" run dcb --h 8 --threads 1 --quiet --set specimen.type=els --set decohesion.snf=10 --set decohesion.stf=1 \
   --out els8 >/dev/null 2>els.err
