@@ -340,7 +340,7 @@ static void check_band(ver_case *c, const case_class *q)
   if (sc->solver == MPM_SOLVER_STATIC && snap)
     return; /* P(delta) has two values on a snapback: curve_path judges the path */
   k = add_check(c, "curve_l2", c->curve_l2, 0.0, 0);
-  k->tol = ppc1 ? 0.04 : 0.03;
+  k->tol = ppc1 ? VER_CURVE_TOL_PPC1 : VER_CURVE_TOL;
   if (!a90 || lep || snap)
     known(k, 0.0, 0.35);
   snprintf(k->note, sizeof k->note, "RMS of P - P_ana(delta) / Pmax over rows up to lambda = %g or the peak "
@@ -353,7 +353,7 @@ static void check_band(ver_case *c, const case_class *q)
    * quasi-static curve itself is 0.0157 from it at the paper's speed 0.001. */
   if (sc->path == MPM_PATH_IFACE && isfinite(c->curve_wave) && sc->solver != MPM_SOLVER_STATIC) {
     k = add_check(c, "curve_wave", c->curve_wave, 0.0, 0);
-    k->tol = 0.01;
+    k->tol = VER_WAVE_TOL;
     snprintf(k->note, sizeof k->note, "RMS of P - P_wave(delta) / Pmax, the exact 1-D solution at grip speed %g "
              "(the plane at x %g), over the same rows", sc->speed, sc->imp_x);
   }

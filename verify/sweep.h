@@ -69,6 +69,8 @@ typedef struct {
                                 load falls to 5 % of the peak (ver_curve_path); NaN otherwise */
   double curve_wave; /* the curve error against the bar at the run's grip speed (ver_case_wave) */
   double wave_peak;  /* that solution's peak load (ver_case_wave; NaN where it does not apply) */
+  double rate_floor; /* that solution's own curve error against the quasi-static bar over the
+                        same rows (the rate's error at this speed; ver_case_wave)      */
   double D_diffuse;  /* dissipation outside the band, over U0 x area (ver_diffuse_share) */
   double P_after;    /* largest |P| past separation, over the peak (ver_load_after)       */
   double P_after_t, P_after_c; /* its largest tension and compression, over the peak   */
@@ -96,7 +98,8 @@ int ver_case_a90(const ver_case *c);
 
 /* The exact solution at the case's own grip speed (ver_curve_err_wave, the plane at
  * imperfection.x from the grip): c->curve_wave, the load-curve error against it over the
- * same rows as curve_l2, and c->wave_peak, its peak; NaN where that solution does not
+ * same rows as curve_l2, c->wave_peak, its peak, and c->rate_floor, its own distance from
+ * the quasi-static curve over those rows; NaN where that solution does not
  * apply (not alpha 90, q 1, s0 = snf) or without an analytic bar. */
 void ver_case_wave(ver_case *c, const double *delta, const double *P, size_t n);
 
