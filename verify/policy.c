@@ -223,13 +223,27 @@ static void check_energy(ver_case *c, const case_class *q)
    * the ledger), over W_ext: the part of W_booked the W_ext check above lets pass, judged
    * here on its own, with the energy tolerance.  The damper's (L_damp: a file's damped
    * release), the loading head's (W_head), the contact's and the debris' are the scene's
-   * own and not counted.  Measured in --full: at most 0.018 but fig6 at h 1, 1 ppc, 0.031
-   * (USL's loss at one particle per cell on the stretched grid, docs/verification.md). */
+   * own and not counted.
+   * USL at one particle per cell with softening particles at 90 deg (fig6.ini, the
+   * paper's method; inclined, its one field couples the cut parts, docs/methods.md):
+   * the crack's velocity jump lies inside one cell's stencil, where one particle a side
+   * cannot carry it; the nodes there hold what the particles do not, and each step loses
+   * it, half in the projection (L_flip), half in the integration (L_scheme).  The steps
+   * grow as 1 / h, and the loss with them: of W_ext, 0.0008, 0.0027, 0.0115, 0.0206 by
+   * separation at h 8, 4, 2, 1, and after it the grip pulls the loose part through those
+   * nodes (under 2 % of the peak: load_after_sep) at the same cost: 0.0009, 0.0042,
+   * 0.018, 0.031 at the end (0.2 past separation).  At 4 and 9 ppc at most 0.0008.
+   * Known-limit to 0.05, above h 1's 0.031: it grows as h falls, so a finer grid, a
+   * longer run past separation or a lossier step can pass that bound and fail. */
   if (isfinite(c->W_scheme) && c->W_ext_final > 0.0) {
     k = add_check(c, "scheme_loss", c->W_scheme / c->W_ext_final, 0.0, 0);
     k->tol = VER_ENERGY_TOL;
+    const int usl1 = a90 && q->ppc1 && c->vs.sc.scheme == MPM_SCHEME_USL && c->vs.sc.path != MPM_PATH_IFACE;
+    if (usl1)
+      known(k, 0.0, 0.05);
     snprintf(k->note, sizeof k->note, "the discretisation's own loss at the end (L_bc + L_flip + L_scheme = %.4g) "
-             "over W_ext", c->W_scheme);
+             "over W_ext%s", c->W_scheme, usl1 ? "; USL, 1 ppc, a band: the crack's jump inside one cell's stencil "
+             "is lost each step, growing as h falls: known-limit to 0.05" : "");
   }
 
   /* Inclined scenes: after the band has failed, the single-valued velocity of a cell
