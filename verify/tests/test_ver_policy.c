@@ -171,6 +171,13 @@ static void test_ver_policy_inclined_known_limit(void **state)
   assert_int_equal(c.verdict, VER_KNOWN);
   /* D at +400 % is past the bound: fail */
   assert_int_equal(d_verdict(&c, 5.0), VER_FAIL);
+  /* on the interface no particle softens: the line dissipates U0 x its area at every
+   * angle, and 5 % more (a law off by 5 %) fails */
+  c.vs.sc.path = MPM_PATH_IFACE;
+  assert_int_equal(d_verdict(&c, 1.05), VER_FAIL);
+  assert_int_equal(d_verdict(&c, 1.0 + 1e-8), VER_PASS);
+  c.vs.sc.path = MPM_PATH_FREE;
+  assert_int_equal(d_verdict(&c, 1.05), VER_KNOWN);
   /* an angle off by 7 deg fails (5 deg tolerance, no known-limit at 1 ppc) with 8
    * cells across the bar; so does 12 off; with 4 (h 8) it is known-limit (up to
    * 30 deg), 32 off fails */
