@@ -8,8 +8,11 @@
 #   make fe-data  rerun the FreeFEM reference scripts of data/fe/ (installs freefem++ when missing)
 BUILD     ?= build
 MESONFLAGS ?=
+# A/B: either package will do, A is installed when neither is.  VTK's Python module
+# (test vtk-readback) comes with python3-vtk9 or with ParaView's python3-paraview, which
+# Debian 12 lets not be installed together: installing one removes the other.
 DEBS = meson ninja-build pkg-config gcc libgsl-dev libcmocka-dev libinih-dev \
-       libcjson-dev libsuitesparse-dev gnuplot-nox parallel
+       libcjson-dev libsuitesparse-dev gnuplot-nox parallel python3-vtk9/python3-paraview
 SUDO = $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
 .PHONY: all deps build check check-asan fuzz fuzz-check fuzz-deps report report-full bench docs-keys clean fe-data
@@ -19,7 +22,10 @@ all: build
 # Installs only the Debian packages that are missing, and says which.
 deps:
 	@missing=""; for p in $(DEBS); do \
-	  dpkg-query -W -f='$${Status}' $$p 2>/dev/null | grep -q 'install ok installed' || missing="$$missing $$p"; \
+	  ok=""; for a in $$(echo $$p | tr / ' '); do \
+	    dpkg-query -W -f='$${Status}' $$a 2>/dev/null | grep -q 'install ok installed' && ok=1; \
+	  done; \
+	  [ -n "$$ok" ] || missing="$$missing $${p%%/*}"; \
 	done; \
 	if [ -n "$$missing" ]; then \
 	  echo "make deps: installing from Debian:$$missing"; \

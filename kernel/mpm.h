@@ -23,7 +23,8 @@ typedef enum {
   MPM_ENOTFINITE, /* a NaN or infinity appeared in the state              */
   MPM_EDOMAIN,    /* a particle left the grid                            */
   MPM_EIO,        /* a file could not be written                         */
-  MPM_EINTR       /* stopped by a signal                                 */
+  MPM_EINTR,      /* stopped by a signal                                 */
+  MPM_ESTALL      /* the static solver found no equilibrium path onward   */
 } mpm_status;
 
 const char *mpm_strerror(mpm_status s);
@@ -100,11 +101,10 @@ typedef struct {
   int solver;            /* MPM_SOLVER_*                                               */
 } mpm_scene;
 
-/* The particles' starting velocity (no wave from the grip): -speed (L - x) / L on the
- * bar, the grip's -speed left of it, 0 right of it. */
+/* Starting velocity (no wave): -speed (L - x) / L on the bar, -speed left, 0 right; beams 0. */
 static inline double mpm_scene_start_vx(const mpm_scene *sc, double x)
 {
-  return x <= 0.0 ? -sc->speed : x >= sc->L ? 0.0 : -sc->speed * (sc->L - x) / sc->L;
+  return sc->specimen != MPM_SPEC_BAR ? 0.0 : x <= 0.0 ? -sc->speed : x >= sc->L ? 0.0 : -sc->speed * (sc->L - x) / sc->L;
 }
 /* decohesion.path = line: the half-width of the strip that may soften, h (|sin a| +
  * |cos a|) / 2 (the cells the line at alpha crosses) + path_reach h. */

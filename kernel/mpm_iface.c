@@ -206,6 +206,18 @@ static void strengths(const mpm_scene *sc, mpm_iface *f, const double *lf, doubl
   }
 }
 
+/* A split beam's pre-crack (mpm_specimen.h): the segments whose centre lies on it are
+ * open from the start, lambda 0 (they spend nothing: faces in contact only). */
+static void precrack(const mpm_sim *s, mpm_iface *f)
+{
+  const mpm_specimen_type *spec = mpm_specimen_of(&s->sc);
+  for (int b = 0; spec->precrack && b < f->nseg; b++) {
+    const double sc = f->smin + (b + 0.5) * f->sw;
+    if (spec->precrack(&s->sc, f->lx + sc * f->tx, f->ly + sc * f->ty))
+      f->state[b] = MPM_SEG_OPEN;
+  }
+}
+
 mpm_iface *mpm_iface_alloc(mpm_sim *s, double lx, double ly)
 {
   const mpm_scene *sc = &s->sc;
@@ -224,12 +236,16 @@ mpm_iface *mpm_iface_alloc(mpm_sim *s, double lx, double ly)
   f->ny = fl->ny;
   f->tx = ca;
   f->ty = sa;
-  /* the line on the bar: y from 0 to H (mpm_scene_check: sin a > 0 and it stays in x) */
-  const double s0 = -ly / sa, s1 = (sc->H - ly) / sa;
+  /* the line on the bar: y from 0 to H (mpm_scene_check: sin a > 0 and it stays in x);
+   * a split beam's along x, from x = 0 to L (the pre-crack included: its nodes split),
+   * one segment a node (centred on it), whose stick traction starts its softening */
+  const int along_x = sc->specimen != MPM_SPEC_BAR;
+  const double s0 = along_x ? -lx / ca : -ly / sa, s1 = along_x ? (sc->L - lx) / ca : (sc->H - ly) / sa;
   f->s0 = s0;
   f->s1 = s1;
-  f->sw = MPM_IFACE_SEG * h;
-  f->smin = s0 - 4.0 * h;
+  f->sw = along_x ? h : MPM_IFACE_SEG * h;
+  f->smin = along_x ? s0 - 4.5 * h : s0 - 4.0 * h;
+  f->stick_onset = along_x;
   f->nseg = (int)ceil((s1 - s0 + 8.0 * h) / f->sw) + 1;
   const size_t ns = (size_t)f->nseg;
   f->seg = malloc(nn * sizeof(int));
@@ -251,7 +267,7 @@ mpm_iface *mpm_iface_alloc(mpm_sim *s, double lx, double ly)
     mpm_iface_free(f);
     return NULL;
   }
-  line_weights(s, f, s0, s1);
+  line_weights(s, f, along_x ? fmax(s0, 0.0) : s0, s1); /* a beam's bonded line: from a0 */
   if (!split_nodes(s, f)) {
     free(lf);
     mpm_iface_free(f);
@@ -265,6 +281,7 @@ mpm_iface *mpm_iface_alloc(mpm_sim *s, double lx, double ly)
   flaw_lengths(s, f, s0, s1, lf);
   strengths(sc, f, lf, amin);
   free(lf);
+  precrack(s, f);
   return f;
 }
 
@@ -382,12 +399,27 @@ static void advance(mpm_sim *s, mpm_iface *f)
                                                 * separated particle reaches it by its opening) */
         f->state[b] = MPM_SEG_OPEN;
         f->lam[b] = 1.0;
+        /* the crack's front: the farthest end of an opened segment (NAN on the bar) */
+        if (isfinite(s->crack_tip))
+          s->crack_tip = fmax(s->crack_tip, f->lx + (f->smin + (b + 1) * f->sw) * f->tx);
       }
     }
     open &= f->state[b] == MPM_SEG_OPEN;
   }
   if (open)
     s->cut = 1;
+}
+
+/* stick_onset (the split beams): a stuck segment whose stick traction reaches the
+ * strength (eq. 23 at lambda 0) softens from this step: the impulse the line carries at a
+ * crack tip, where the particles' stresses about a node average the tip's field with the
+ * free faces behind it (docs/findings.md, "The DCB explicitly") */
+static void stick_onset(mpm_iface *f, double dt)
+{
+  for (int b = 0; f->stick_onset && b < f->nseg; b++)
+    if (f->state[b] == MPM_SEG_STUCK && f->A[b] > 0.0 &&
+        eff(f->Tn[b] / (dt * f->A[b]), f->Tt[b] / (dt * f->A[b]), f->snf[b], f->stf[b]) >= 1.0)
+      f->state[b] = MPM_SEG_SOFT;
 }
 
 void mpm_iface_grid(mpm_sim *s)
@@ -419,6 +451,7 @@ void mpm_iface_grid(mpm_sim *s)
     f->Tt[f->seg[k]] += f->jx[k] * tx + f->jy[k] * ty;
     f->Ab[f->seg[k]] += f->An[k];
   }
+  stick_onset(f, dt);
   /* a softening segment sticks whole this step when its mean traction is inside the
    * surface se <= 1 - lambda */
   for (int b = 0; b < f->nseg; b++) {

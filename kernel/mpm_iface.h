@@ -21,6 +21,8 @@ struct mpm_iface {
   double nx, ny, tx, ty;   /* its normal (sin a, -cos a) and direction (cos a, sin a)    */
   double on;               /* a reference centre within this of the line lies on it     */
   int share;               /* decohesion.share: MPM_SHARE_STICK or MPM_SHARE_LINE        */
+  int stick_onset;         /* 1: a stuck segment softens once its stick traction reaches
+                              the strength (the split beams; mpm_iface_grid)            */
   double smin, sw;         /* the first segment's start along the line, and the length  */
   double s0, s1;           /* the line on the bar: from y = 0 to y = H, along it         */
   int *owner;              /* per segment's place on the line: the segment it joined     */

@@ -61,14 +61,14 @@ static const char *specimen_rules(const mpm_scene *sc, char *err, size_t len)
   }
   if (sc->specimen == MPM_SPEC_BAR)
     return NULL;
-  /* the split beams: the interface along y = H / 2 on a node row, statically */
+  /* the split beams: the interface along y = H / 2 on a node row */
   const double rows = 0.5 * sc->H / sc->h;
-  if (sc->solver != MPM_SOLVER_STATIC || !sc->model || sc->path != MPM_PATH_IFACE || sc->alpha_deg != 0.0 ||
-      fabs(rows - round(rows)) > 1e-9 * rows) {
-    snprintf(err, len, "specimen.type: %s needs solver.type = static, decohesion.path = interface with model 1, "
-             "alpha = 0 and H / 2 on a node row (here: solver %s, path %s, model %d, alpha %g, H / 2 / h = %g)",
-             W(sc->specimen, SPEC), sc->solver == MPM_SOLVER_STATIC ? "static" : "explicit", W(sc->path, PATH),
-             sc->model, sc->alpha_deg, rows);
+  if (!sc->model || sc->path != MPM_PATH_IFACE || sc->alpha_deg != 0.0 || fabs(rows - round(rows)) > 1e-9 * rows ||
+      (sc->solver == MPM_SOLVER_EXPLICIT && sc->specimen != MPM_SPEC_DCB)) {
+    snprintf(err, len, "specimen.type: %s needs decohesion.path = interface with model 1, alpha = 0, H / 2 on a node "
+             "row, and solver.type = static unless it is the dcb (here: solver %s, path %s, model %d, alpha %g, H / 2 / "
+             "h = %g)", W(sc->specimen, SPEC), sc->solver == MPM_SOLVER_STATIC ? "static" : "explicit",
+             W(sc->path, PATH), sc->model, sc->alpha_deg, rows);
     return "specimen.type";
   }
   if (!(sc->a0 > 0.0 && sc->a0 < sc->L)) {

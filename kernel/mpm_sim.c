@@ -28,6 +28,7 @@ const char *mpm_strerror(mpm_status s)
   case MPM_EDOMAIN: return "particle left the grid";
   case MPM_EIO: return "i/o error";
   case MPM_EINTR: return "interrupted";
+  case MPM_ESTALL: return "no equilibrium path onward";
   }
   return "unknown status";
 }
@@ -148,6 +149,7 @@ static mpm_layout layout_of(const mpm_scene *sc)
   int left;
   mpm_specimen_of(sc)->left_cells(sc, &left, &l.headc);
   l.padl = l.pad + left;
+  l.padv = l.pad + mpm_specimen_of(sc)->rise_cells(sc);
   l.n1 = (int)lround(sqrt((double)sc->ppc));
   l.nbar = (size_t)l.cx * (size_t)l.cy * (size_t)sc->ppc;
   l.nhead = (size_t)l.headc * (size_t)l.cy * (size_t)sc->ppc;
@@ -160,7 +162,7 @@ static int alloc_arrays(mpm_sim *s, const mpm_scene *sc, const mpm_layout *l, in
 {
   const int cy = l->cy;
   const size_t nhead = l->nhead, np = l->np;
-  s->g = mpm_grid_alloc(l->padl + l->cx + l->pad, cy + 2 * l->pad, -l->padl * l->h, -l->pad * l->h, l->h);
+  s->g = mpm_grid_alloc(l->padl + l->cx + l->pad, cy + 2 * l->padv, -l->padl * l->h, -l->padv * l->h, l->h);
   s->nbc = s->g ? mpm_specimen_of(sc)->bcs(s, l, NULL) : 0;
   mpm_threads_init(&s->thr, nthreads, np);
   s->nthreads = s->thr.use;
@@ -265,7 +267,7 @@ static size_t place_bar(mpm_sim *s, const mpm_scene *sc, const mpm_layout *l)
     for (int i = 0; i < cx * n1; i++, k++) {
       p->x[k] = p->x0[k] = (i + 0.5) * d;
       p->y[k] = p->y0[k] = (j + 0.5) * d;
-      p->vx[k] = mpm_scene_start_vx(sc, p->x[k]);
+      mpm_specimen_of(sc)->start_velocity(sc, p->x[k], p->y[k], &p->vx[k], &p->vy[k]);
       if (sc->vib_mode > 0) /* free vibration: mode m of the bar held at both ends */
         p->vx[k] += sc->vib_amp * sin(sc->vib_mode * 3.14159265358979323846 * p->x[k] / sc->L);
       p->m[k] = mp;
@@ -326,25 +328,6 @@ static mpm_status mark_paths(mpm_sim *s, const mpm_scene *sc, const mpm_layout *
   return MPM_OK;
 }
 
-static void place_head(mpm_sim *s, const mpm_scene *sc, const mpm_layout *l)
-{
-  mpm_particles *p = s->p;
-  const double d = l->h / l->n1, mp = s->mat[MPM_MAT_BAR].mp;
-  const int n1 = l->n1, cy = l->cy;
-  const size_t nbar = l->nbar, nhead = l->nhead;
-  /* The head: the same lattice continued MPM_HEAD_CELLS cells beyond x = 0, moving with
-   * the grip. */
-  size_t k = nbar;
-  for (int j = 0; nhead && j < cy * n1; j++)
-    for (int i = -l->headc * n1; i < 0; i++, k++) {
-      p->x[k] = p->x0[k] = (i + 0.5) * d;
-      p->y[k] = p->y0[k] = (j + 0.5) * d;
-      p->vx[k] = mpm_scene_start_vx(sc, p->x[k]); /* the head: the grip's speed */
-      p->m[k] = mp;
-      p->V[k] = d * d;
-      p->mat[k] = MPM_MAT_HEAD;
-    }
-}
 
 /* Fails with MPM_ENOMEM and a message. */
 static mpm_status nomem(mpm_sim *s, const char *what, char *err, size_t errlen)
@@ -383,13 +366,22 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
     mpm_sim_free(s);
     return st;
   }
-  place_head(s, sc, &l);
+  if (spec->place_head)
+    spec->place_head(s, &l);
   s->grid_ox0 = s->g->ox;
   s->nbc = spec->bcs(s, &l, s->bc);
+  /* the explicit step holds a node's one velocity: a condition on one side of the line
+   * (the split beams' node on the line at an arm's end) is left out, the node is free */
+  for (int i = 0, j = 0; sc->solver == MPM_SOLVER_EXPLICIT && i < s->nbc; i++) {
+    if (s->bc[i].side == MPM_BC_ANY)
+      s->bc[j++] = s->bc[i];
+    if (i == s->nbc - 1)
+      s->nbc = j;
+  }
   s->crack_tip = spec->precrack ? sc->a0 : NAN;
   s->gap_min = INFINITY;
   spec->line_point(s, imp, &s->line_x, &s->line_y);
-  if (sc->model && sc->path == MPM_PATH_IFACE && spec->explicit_iface &&
+  if (sc->model && sc->path == MPM_PATH_IFACE && (spec->explicit_iface || sc->solver == MPM_SOLVER_EXPLICIT) &&
       !(s->g->fld->ifc = mpm_iface_alloc(s, s->line_x, s->line_y)))
     return nomem(s, "the interface's arrays", err, errlen);
   if (sc->damping > 0.0 && !(s->damp = mpm_damping_alloc(s)))

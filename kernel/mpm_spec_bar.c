@@ -19,6 +19,41 @@ static void bar_left_cells(const mpm_scene *sc, int *left, int *head)
   *head = sc->head == MPM_HEAD_NONE ? 0 : MPM_HEAD_CELLS;
 }
 
+static int bar_rise_cells(const mpm_scene *sc)
+{
+  (void)sc;
+  return 0;
+}
+
+/* -speed (L - x) / L along the bar (mpm.h) */
+static void bar_start_velocity(const mpm_scene *sc, double x, double y, double *vx, double *vy)
+{
+  (void)y;
+  *vx = mpm_scene_start_vx(sc, x);
+  *vy = 0.0;
+}
+
+/* The head: stress-free particles of the bar's density beyond x = 0 (MPM_MAT_HEAD). */
+static void bar_place_head(mpm_sim *s, const mpm_layout *l)
+{
+  const mpm_scene *sc = &s->sc;
+  mpm_particles *p = s->p;
+  const double d = l->h / l->n1, mp = s->mat[MPM_MAT_BAR].mp;
+  const int n1 = l->n1, cy = l->cy;
+  const size_t nbar = l->nbar, nhead = l->nhead;
+  /* the same lattice continued over the head's cells beyond x = 0, moving with the grip */
+  size_t k = nbar;
+  for (int j = 0; nhead && j < cy * n1; j++)
+    for (int i = -l->headc * n1; i < 0; i++, k++) {
+      p->x[k] = p->x0[k] = (i + 0.5) * d;
+      p->y[k] = p->y0[k] = (j + 0.5) * d;
+      p->vx[k] = mpm_scene_start_vx(sc, p->x[k]); /* the head: the grip's speed */
+      p->m[k] = mp;
+      p->V[k] = d * d;
+      p->mat[k] = MPM_MAT_HEAD;
+    }
+}
+
 /* Every node column from the head's travel to x = 0 is gripped in x (rows 0..H); the
  * column x = L is held in x (uGIMP: the column beyond it too, which the bar's last
  * particles reach: the support is a wall, like the head on the left), its mid-height
@@ -32,7 +67,7 @@ static int bar_bcs(const mpm_sim *s, const mpm_layout *l, mpm_bc *out)
 #define PUT(i, j, cmp, cc, fx)                                                                         \
   do {                                                                                             \
     if (out)                                                                                       \
-      out[n] = (mpm_bc){(int)mpm_grid_node(g, (i), (j) + l->pad), (cmp), (fx), MPM_BC_ANY, (cc)};  \
+      out[n] = (mpm_bc){(int)mpm_grid_node(g, (i), (j) + l->padv), (cmp), (fx), MPM_BC_ANY, (cc)};  \
     n++;                                                                                           \
   } while (0)
   for (int i = grip0; i <= l->padl; i++)
@@ -96,6 +131,9 @@ static int bar_pin_node(const mpm_sim *s, const int *eq)
 const mpm_specimen_type mpm_spec_bar = {
   .name = "bar",
   .left_cells = bar_left_cells,
+  .place_head = bar_place_head,
+  .start_velocity = bar_start_velocity,
+  .rise_cells = bar_rise_cells,
   .bcs = bar_bcs,
   .line_point = bar_line_point,
   .dis_full = bar_dis_full,

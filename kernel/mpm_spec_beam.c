@@ -38,7 +38,7 @@ static int arm_faces(const mpm_sim *s, const mpm_layout *l, double c_lo, double 
   const int mid = l->cy / 2;
   for (int c = face_cols(&s->sc) - 1; c >= 0; c--)
     for (int j = 0; j <= l->cy; j++) {
-      const int node = (int)mpm_grid_node(g, l->padl - c, j + l->pad);
+      const int node = (int)mpm_grid_node(g, l->padl - c, j + l->padv);
       if (j <= mid) {
         if (out)
           out[n] = (mpm_bc){node, 1, 0, j == mid ? MPM_BC_FAR : MPM_BC_ANY, c_lo};
@@ -56,7 +56,7 @@ static int arm_faces(const mpm_sim *s, const mpm_layout *l, double c_lo, double 
 static int dcb_bcs(const mpm_sim *s, const mpm_layout *l, mpm_bc *out)
 {
   int n = arm_faces(s, l, -0.5, 0.5, out, 0);
-  const int pin = (int)mpm_grid_node(s->g, l->padl + l->cx, l->cy / 2 + l->pad);
+  const int pin = (int)mpm_grid_node(s->g, l->padl + l->cx, l->cy / 2 + l->padv);
   for (int cmp = 0; cmp < 2; cmp++) {
     if (out)
       out[n] = (mpm_bc){pin, (uint8_t)cmp, (uint8_t)(cmp == 0), MPM_BC_ANY, 0.0};
@@ -72,7 +72,7 @@ static int els_bcs(const mpm_sim *s, const mpm_layout *l, mpm_bc *out)
     for (int j = 0; j <= l->cy; j++)
       for (int cmp = 0; cmp < 2; cmp++) {
         if (out)
-          out[n] = (mpm_bc){(int)mpm_grid_node(s->g, l->padl + l->cx + c, j + l->pad), (uint8_t)cmp,
+          out[n] = (mpm_bc){(int)mpm_grid_node(s->g, l->padl + l->cx + c, j + l->padv), (uint8_t)cmp,
                             (uint8_t)(cmp == 0), MPM_BC_ANY, 0.0};
         n++;
       }
@@ -96,6 +96,25 @@ static double beam_dis_step_max(const mpm_scene *sc)
   return sc->U0 * sc->h;
 }
 
+/* The DCB's arms as cantilevers clamped at the pre-crack's tip, each end moving at
+ * +-speed / 2: v_y = +-(speed / 2) (1 - x / a0)^2 (2 + x / a0) / 2 for x < a0 (the
+ * deflection of an end-loaded cantilever over its end's), 0 beyond; the ELS's both arms
+ * the same way at +speed (explicit runs: the DCB's) */
+static void beam_start_velocity(const mpm_scene *sc, double x, double y, double *vx, double *vy)
+{
+  const double r = x < sc->a0 ? 1.0 - x / sc->a0 : 0.0, shape = 0.5 * r * r * (3.0 - r);
+  const double c = sc->specimen == MPM_SPEC_DCB ? (y < 0.5 * sc->H ? -0.5 : 0.5) : 1.0;
+  *vx = 0.0;
+  *vy = c * sc->speed * shape;
+}
+
+/* the arms' ends travel delta / 2 (DCB) or delta (ELS) in y, to end_delta */
+static int beam_rise_cells(const mpm_scene *sc)
+{
+  const double rise = sc->specimen == MPM_SPEC_DCB ? 0.5 * sc->end_delta : sc->end_delta;
+  return (int)ceil(rise / sc->h - 1e-9);
+}
+
 static int beam_precrack(const mpm_scene *sc, double x, double y)
 {
   (void)y;
@@ -116,6 +135,8 @@ const mpm_specimen_type mpm_spec_dcb = {
   .line_point = beam_line_point,
   .dis_full = beam_dis_full,
   .dis_step_max = beam_dis_step_max,
+  .start_velocity = beam_start_velocity,
+  .rise_cells = beam_rise_cells,
   .precrack = beam_precrack,
   .explicit_iface = 0,
   .seg_cells = 0.0,
@@ -129,6 +150,8 @@ const mpm_specimen_type mpm_spec_els = {
   .line_point = beam_line_point,
   .dis_full = beam_dis_full,
   .dis_step_max = beam_dis_step_max,
+  .start_velocity = beam_start_velocity,
+  .rise_cells = beam_rise_cells,
   .precrack = beam_precrack,
   .explicit_iface = 0,
   .seg_cells = 0.0,

@@ -18,6 +18,7 @@ typedef struct {
   double h;
   int cx, cy;       /* the body's cells in x and y                                     */
   int pad, padl;    /* empty cells around it; on the left (the head's travel besides)  */
+  int padv;         /* empty cells below and above it (pad, and the arms' travel)      */
   int n1;           /* particles per cell along x and y                               */
   int headc;        /* cells of the rigid head beyond x = 0 (0: none)                 */
   size_t nbar, nhead, np; /* the body's particles, the head's, all                     */
@@ -43,6 +44,13 @@ typedef struct mpm_specimen_type {
   /* the layout's cells left of x = 0 beyond the margin (the grip's travel), and of them
    * those the rigid head's particles fill (the bar's loading machine) */
   void (*left_cells)(const mpm_scene *sc, int *left, int *head);
+  /* the steady velocity of the loading at reference (x, y), the body's start (no wave
+   * from the loaded ends: the explicit step) */
+  void (*start_velocity)(const mpm_scene *sc, double x, double y, double *vx, double *vy);
+  /* cells below and above the body beyond the margin, for its ends' travel in y */
+  int (*rise_cells)(const mpm_scene *sc);
+  /* the head's particles after the body's (NULL: none) */
+  void (*place_head)(mpm_sim *s, const mpm_layout *l);
   /* the constrained components into out (at most the count with out NULL); returns how
    * many.  The explicit step and the static solver take them in this order. */
   int (*bcs)(const mpm_sim *s, const mpm_layout *l, mpm_bc *out);

@@ -62,6 +62,7 @@
 #define MPM_QS_CMIN 1e-12 /* of U0 H / sin a: less dissipated is nothing (rounding)     */
 #define MPM_QS_NEL 8      /* equal increments of the linear branch up to the first initiation */
 #define MPM_QS_PUSH 0.01  /* of the peak: an interface's load below minus this stops the run */
+#define MPM_QS_LEDGER 1e-4 /* of the largest W_ext: W_ext - SE - W_coh beyond this stops the run */
 
 void mpm_static_free(mpm_static *q)
 {
@@ -128,6 +129,10 @@ mpm_status mpm_static_alloc(mpm_sim *s, mpm_static **out, char *err, size_t errl
   q->Dmax = sc->model != MPM_DCOH_NONE ? mpm_specimen_of(sc)->dis_step_max(sc) : 0.1;
   q->Fref = 1e-3 * fmin(sc->snf, sc->stf) * sc->H;
   q->step_d = 1e-3 * sc->L * fmin(sc->snf, sc->stf) / sc->E; /* the first, elastic, increment */
+  if (sc->model == MPM_DCOH_NONE) { /* no strength to scale by: the run's own stretch */
+    q->Fref = 1e-3 * sc->E * sc->H * sc->end_delta / sc->L;
+    q->step_d = sc->end_delta / MPM_QS_NEL;
+  }
   q->step_D = 1e-3 * q->Dref;
   q->mode = MPM_QS_GRIP;
   s->qs = q;
@@ -292,9 +297,29 @@ static int increment(mpm_static *q, int *iters)
   return 0;
 }
 
+/* The softening particles that reach their strength within 1e-9 of the first (scale k:
+ * the linear increment times k meets F = 0, eq. 23). */
+static long tied_at_initiation(const mpm_static *q, double k)
+{
+  const mpm_sim *s = q->s;
+  long n = 0;
+  for (size_t c = 0; c < q->np; c++) {
+    const mpm_material *m = &s->mat[s->p->mat[q->pid[c]]];
+    if (m->model == MPM_DCOH_NONE)
+      continue;
+    const double se = mpm_dcoh_F(m, q->tst[c].sxx, q->tst[c].syy, q->tst[c].sxy, 0.0) + 1.0;
+    n += se > 0.0 && 1.0 / se <= k * (1.0 + 1e-9);
+  }
+  return n;
+}
+
 /* The linear first increment scaled to 1 / MPM_QS_NEL of the first initiation (F = 0,
- * eq. 23); the grip's step is set to the rest's share. */
-static void scale_to_initiation(mpm_static *q)
+ * eq. 23); the grip's step is set to the rest's share.  MPM_ESTALL where more particles
+ * than a cell holds reach their strength together (a uniform stress without a flaw): the
+ * uniform state bifurcates there, every band is a branch and the uniform softening one is
+ * unstable (fig6 without its flaw followed it to D = 13 U0 H); the run stops and says how
+ * to choose the branch. */
+static mpm_status scale_to_initiation(mpm_static *q, char *err, size_t errlen)
 {
   const mpm_sim *s = q->s;
   double kmin = INFINITY;
@@ -306,6 +331,14 @@ static void scale_to_initiation(mpm_static *q)
     if (se > 0.0)
       kmin = fmin(kmin, 1.0 / se);
   }
+  const long tied = isfinite(kmin) ? tied_at_initiation(q, kmin) : 0;
+  if (tied > s->sc.ppc) {
+    snprintf(err, errlen, "static solver: %ld softening particles reach their strength together at delta = %.9g: "
+             "the uniform state bifurcates there (each band is a branch, the uniform softening is unstable); give "
+             "the bar a flaw to choose the branch (imperfection.snf_factor below 1) or use decohesion.path = "
+             "interface", tied, q->dt * kmin);
+    return MPM_ESTALL;
+  }
   for (int pi = 0; pi < q->npair; pi++) { /* the interface's ties */
     const mpm_dstate *o = &q->ptr[pi];
     const double se = mpm_dcoh_F(&q->imat, o->sxx, o->syy, o->sxy, 0.0) + 1.0;
@@ -313,7 +346,7 @@ static void scale_to_initiation(mpm_static *q)
       kmin = fmin(kmin, 1.0 / se);
   }
   if (!(kmin > 1.0) || !isfinite(kmin))
-    return;
+    return MPM_OK;
   const double k = kmin * (1.0 - 1e-12) / MPM_QS_NEL;
   for (size_t i = 0; i < 2 * q->nslot; i++)
     if (q->eq[i] >= 0)
@@ -322,6 +355,7 @@ static void scale_to_initiation(mpm_static *q)
   q->step_d = q->dt;
   q->nel = MPM_QS_NEL - 1;
   mpm_static_eval(q, 1);
+  return MPM_OK;
 }
 
 /* Makes the trial state the committed one: particles, displacements, loads, energies. */
@@ -490,6 +524,40 @@ static void next_step(mpm_static *q, int iters, int first)
     q->step_d = fmax(s->sc.end_delta - q->dn, 1e-12 * s->sc.end_delta);
 }
 
+/* After an increment is committed: its path still one of equilibria (the ledger) and not
+ * one a test would leave by a snap (the push-back); MPM_ESTALL and the reason if not. */
+static mpm_status path_sound(mpm_static *q, char *err, size_t errlen)
+{
+  const mpm_sim *s = q->s;
+  /* the ledger at every increment: W_ext (the trapezoid of P d delta) against SE +
+   * W_coh, within MPM_QS_LEDGER of the largest W_ext so far (every bar scene's static
+   * run keeps it below 1e-6): a path that leaves it is not one of equilibria */
+  mpm_energy e;
+  mpm_sim_energy(s, &e);
+  q->Wmax = fmax(q->Wmax, fabs(e.W_ext));
+  if (fabs(e.W_ext - e.SE - e.W_coh) > MPM_QS_LEDGER * q->Wmax && q->Wmax > 0.0) {
+    snprintf(err, errlen, "static solver: the work done, %.9g, and the energy stored and spent, SE %.9g + W_coh "
+             "%.9g, part by %.3g of the largest work at delta = %.9g, increment %ld (allowed %g)", e.W_ext, e.SE,
+             e.W_coh, fabs(e.W_ext - e.SE - e.W_coh) / q->Wmax, q->dn, s->step, MPM_QS_LEDGER);
+    return MPM_ESTALL;
+  }
+  /* an interface's equilibrium path along which the specimen pushes back on its
+   * loading, P below -MPM_QS_PUSH of the peak (held grips on an inclined crack:
+   * segments unload with their opening kept while the control moves delta back):
+   * every state is in equilibrium, but a test under displacement control leaves such
+   * a path by a dynamic snap, which no quasi-static path shows; the run stops and
+   * says so.  (A free band's last particles take the load to -3 % of the peak near
+   * separation, test_mpm_static: the band's own error, not a snap; not judged here.) */
+  if (q->iface && s->P_grip < -MPM_QS_PUSH * s->P_peak) {
+    snprintf(err, errlen, "static solver: the equilibrium path takes the load to %.6g (%.3g of the peak %.6g) at "
+             "delta = %.9g, increment %ld: a test under displacement control would snap dynamically before this "
+             "point, which a quasi-static path cannot follow (docs/static.md, \"Where it stops\"); the explicit "
+             "solver runs it", s->P_grip, s->P_grip / s->P_peak, s->P_peak, q->dn, s->step);
+    return MPM_ESTALL;
+  }
+  return MPM_OK;
+}
+
 mpm_status mpm_static_step(mpm_static *q, char *err, size_t errlen)
 {
   mpm_sim *s = q->s;
@@ -524,8 +592,9 @@ mpm_status mpm_static_step(mpm_static *q, char *err, size_t errlen)
     }
     if (r == 1) {
       const int first = s->step == 0;
-      if (first && q->mode == MPM_QS_GRIP)
-        scale_to_initiation(q);
+      const mpm_status si = first && q->mode == MPM_QS_GRIP ? scale_to_initiation(q, err, errlen) : MPM_OK;
+      if (si != MPM_OK)
+        return si;
       const double Cprev = q->Cn;
       commit(q);
       const int grip_stalls = (q->mode == MPM_QS_GRIP && q->nel == 0 && q->step_d < 1e-9 * fmax(q->dn, 1e-300)) ||
@@ -545,22 +614,11 @@ mpm_status mpm_static_step(mpm_static *q, char *err, size_t errlen)
                  "advanced by less than %g of its scale over the last %d increments (docs/static.md, \"Where it "
                  "stops\")", q->dn, s->P_grip, grip_stalls ? "grip" : "dissipation",
                  grip_stalls ? 1e-9 : MPM_QS_STALL_C, grip_stalls ? 1 : MPM_QS_STALL);
-        return MPM_ENOTFINITE;
+        return MPM_ESTALL;
       }
-      /* an interface's equilibrium path along which the specimen pushes back on its
-       * loading, P below -MPM_QS_PUSH of the peak (held grips on an inclined crack:
-       * segments unload with their opening kept while the control moves delta back):
-       * every state is in equilibrium, but a test under displacement control leaves such
-       * a path by a dynamic snap, which no quasi-static path shows; the run stops and
-       * says so.  (A free band's last particles take the load to -3 % of the peak near
-       * separation, test_mpm_static: the band's own error, not a snap; not judged here.) */
-      if (q->iface && s->P_grip < -MPM_QS_PUSH * s->P_peak) {
-        snprintf(err, errlen, "static solver: the equilibrium path takes the load to %.6g (%.3g of the peak %.6g) at "
-                 "delta = %.9g, increment %ld: a test under displacement control would snap dynamically before this "
-                 "point, which a quasi-static path cannot follow (docs/static.md, \"Where it stops\"); the explicit "
-                 "solver runs it", s->P_grip, s->P_grip / s->P_peak, s->P_peak, q->dn, s->step);
-        return MPM_ENOTFINITE;
-      }
+      const mpm_status ps = path_sound(q, err, errlen);
+      if (ps != MPM_OK)
+        return ps;
       /* a grip increment that dissipated, before the cut: softening resumed after an
        * elastic stretch (a segment of the line separated and the rest unloaded; the load
        * climbs back to their strength): the dissipation leads again through the next
@@ -588,5 +646,5 @@ mpm_status mpm_static_step(mpm_static *q, char *err, size_t errlen)
   }
   snprintf(err, errlen, "static solver: no equilibrium found after %d smaller increments at delta = %.9g (increment "
            "%ld, %s control)", MPM_QS_MAXCUT, q->dn, s->step + 1, q->mode == MPM_QS_GRIP ? "grip" : "dissipation");
-  return MPM_ENOTFINITE;
+  return MPM_ESTALL;
 }

@@ -73,6 +73,7 @@ struct mpm_static {
   int mode;
   double step_d, step_D, Dref, Fref;
   double Dmax;            /* the largest dissipation increment (the specimen's)         */
+  double Wmax;            /* the largest external work so far (the ledger's scale)       */
   int kick;               /* 1: one small grip increment starts the softening            */
   double cring[100];      /* the control's measure over the last increments (stalls)     */
   int nkick;

@@ -12,5 +12,6 @@ int ver_cmd_verify(int argc, char **argv);
 int ver_cmd_report(int argc, char **argv);
 int ver_cmd_bench(int argc, char **argv);
 int ver_cmd_check(int argc, char **argv);
+int ver_cmd_plot(int argc, char **argv);
 
 #endif

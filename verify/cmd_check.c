@@ -76,6 +76,10 @@ static void usage(FILE *f)
     "                    the folder, else the scene's)\n"
     "  --set S.K=V       set a key of the scene, as for delam run (repeatable)\n"
     "  --particles FILE  the final particle CSV (default DIR/final.csv when present)\n"
+    "  --columns MAP     another code's load.csv header: delta=NAME,P_grip=NAME (either or\n"
+    "                    both; the other keeps its own name)\n"
+    "  --sign S          1 (default) or -1: the load is read times S (a file with\n"
+    "                    compression positive)\n"
     "  --out FILE        where check.json goes (default DIR/check.json)\n"
     "  --help            this text\n"
     "Not judged (exit 2): a folder of delam's (a scene.ini, or energy.csv or final.csv\n"
@@ -243,12 +247,33 @@ typedef struct {
   const char *scene, *dir, *out, *pfile, *method, *sets[VER_MAX_OVER];
   int nset;
   double h, ppc;
+  char col_delta[64], col_P[64]; /* --columns: the header's names of delta and P_grip */
+  double sign;                   /* --sign: the load is read times this             */
 } check_opts;
+
+/* --columns delta=NAME,P_grip=NAME into o; 0, or 2 with a message. */
+static int columns_opt(const char *v, check_opts *o)
+{
+  char buf[200];
+  snprintf(buf, sizeof buf, "%s", v);
+  for (char *tok = strtok(buf, ","); tok; tok = strtok(NULL, ",")) {
+    char *eq = strchr(tok, '=');
+    char *dst = eq && !strncmp(tok, "delta=", 6) ? o->col_delta : eq && !strncmp(tok, "P_grip=", 7) ? o->col_P : NULL;
+    if (!dst || !eq[1] || strlen(eq + 1) >= 64) {
+      fprintf(stderr, PROG ": --columns '%s': each item is delta=NAME or P_grip=NAME (a header name, under 64 "
+              "characters)\n", v);
+      return 2;
+    }
+    snprintf(dst, 64, "%s", eq + 1);
+  }
+  return 0;
+}
 
 /* Reads the options into o; 0, 1 (--help given) or 2 (bad usage). */
 static int check_args(int argc, char **argv, check_opts *o)
 {
   memset(o, 0, sizeof *o);
+  o->sign = 1.0;
   for (int i = 1; i < argc; i++) {
     const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
     int r = 0;
@@ -267,6 +292,20 @@ static int check_args(int argc, char **argv, check_opts *o)
       else if (!strcmp(a, "--method")) o->method = v;
       else if (o->nset < VER_MAX_OVER) o->sets[o->nset++] = v;
       else { fprintf(stderr, PROG ": more than %d --set\n", VER_MAX_OVER); return 2; }
+      i++;
+    } else if (!strcmp(a, "--columns") || !strcmp(a, "--sign")) {
+      if (!v) {
+        fprintf(stderr, PROG ": %s needs a value (see delam check --help)\n", a);
+        return 2;
+      }
+      if (!strcmp(a, "--columns"))
+        r = columns_opt(v, o);
+      else if (!strcmp(v, "1") || !strcmp(v, "-1"))
+        o->sign = atof(v);
+      else {
+        fprintf(stderr, PROG ": --sign '%s': 1 or -1\n", v);
+        return 2;
+      }
       i++;
     } else if (!strcmp(a, "--h")) { r = num_opt(a, v, &o->h); i++; }
     else if (!strcmp(a, "--ppc")) { r = num_opt(a, v, &o->ppc); i++; }
@@ -408,10 +447,12 @@ static void free_inputs(check_inputs *in)
 
 /* Reads DIR's files (after ver_check_finished) and checks that they agree (inputs_agree).  0,
  * or 2 with the file and the reason in err (nothing left allocated). */
-static int read_inputs(const char *dir, const char *pfile, const ver_scene *vs, check_inputs *in, char *err,
+static int read_inputs(const char *dir, const check_opts *o, const ver_scene *vs, check_inputs *in, char *err,
                        size_t errlen)
 {
-  static const char *const lnames[] = {"delta", "P_grip", "P_fixed", "t"};
+  const char *pfile = o->pfile;
+  const char *const lnames[] = {o->col_delta[0] ? o->col_delta : "delta", o->col_P[0] ? o->col_P : "P_grip", "P_fixed",
+                                "t"};
   static const char *const enames[] = {"W_ext", "KE",       "SE",     "W_coh",    "D",
                                        "L_bc",  "L_flip",   "L_scheme", "W_head", "L_contact", "L_debris", "L_damp", "t"};
   static const char *const pnames[] = {"x0", "y0", "lambda"};
@@ -421,8 +462,14 @@ static int read_inputs(const char *dir, const char *pfile, const ver_scene *vs, 
   int r = ver_table_read(path, lnames, 4, 2, &in->ld, err, errlen);
   if (r == 1)
     snprintf(err, errlen, "%s: no such file (the load-deflection curve is required)", path);
+  if (r == 2 && strstr(err, "has no column")) /* another code's names: say how to map them */
+    snprintf(err + strlen(err), errlen - strlen(err), "; another code's columns: --columns delta=NAME,P_grip=NAME");
   if (r)
     return 2;
+  for (long i = 0; i < in->ld.n; i++) /* --sign: a file with compression positive */
+    for (int c = 1; c < 3; c++)
+      if (in->ld.col[c])
+        in->ld.col[c][i] *= o->sign;
   snprintf(path, sizeof path, "%s/energy.csv", dir);
   r = ver_table_read(path, enames, 13, 5, &in->en, err, errlen);
   in->have_en = r == 0;
@@ -450,7 +497,7 @@ int ver_cmd_check(int argc, char **argv)
   const int pa = check_args(argc, argv, &o);
   if (pa)
     return pa == 1 ? 0 : 2;
-  const char *dir = o.dir, *out = o.out, *pfile = o.pfile;
+  const char *dir = o.dir, *out = o.out;
   if (!dir) {
     fprintf(stderr, PROG ": needs a run folder (usage: delam check [--scene SCENE] DIR)\n");
     return 2;
@@ -464,7 +511,7 @@ int ver_cmd_check(int argc, char **argv)
     fprintf(stderr, PROG ": %s\n", err);
     return 2;
   }
-  if (c.vs.sc.specimen != MPM_SPEC_BAR) /* a split beam: its own references */
+  if (c.vs.sc.specimen != MPM_SPEC_BAR || c.vs.sc.grips == MPM_GRIPS_HELD) /* its own references */
     return ver_check_spec(dir, &c.vs, out);
   char aerr[256];
   c.have_ana = ver_scene_bar(&c.vs.sc, &c.ana, aerr, sizeof aerr) == 0;
@@ -481,7 +528,7 @@ int ver_cmd_check(int argc, char **argv)
   snprintf(c.id, sizeof c.id, "%.100s", dir);
 
   check_inputs in;
-  if (read_inputs(dir, pfile, &c.vs, &in, err, sizeof err)) {
+  if (read_inputs(dir, &o, &c.vs, &in, err, sizeof err)) {
     fprintf(stderr, PROG ": %s\n", err);
     return 2;
   }
@@ -507,6 +554,14 @@ int ver_cmd_check(int argc, char **argv)
   check_skips sk;
   skip_degenerate(&c, &sk);
   print_verdict(label, &c, &sk, &info, have_en, have_pt);
+  double pmin = 0.0, pmax = 0.0;
+  for (long i = 0; i < ld->n; i++) {
+    pmin = fmin(pmin, ld->col[1][i]);
+    pmax = fmax(pmax, ld->col[1][i]);
+  }
+  if (-pmin > pmax) /* tension is positive here */
+    printf("check: the load is mostly negative (least %g, largest %g): a file with compression positive? "
+           "--sign -1 reads it the other way\n", pmin, pmax);
   const int rc = c.verdict == VER_FAIL ? 1 : 0;
   char jpath[1400];
   snprintf(jpath, sizeof jpath, "%s", out ? out : "");

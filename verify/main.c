@@ -1,5 +1,5 @@
 /*
- * main.c - `delam`: dispatch to the subcommands (analytic, run, verify, report, bench, check).
+ * main.c - `delam`: dispatch to the subcommands (analytic, run, verify, report, bench, check, plot).
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -32,6 +32,7 @@ static const struct {
   {"report", ver_cmd_report, "figures and the report (reports/out/)"},
   {"bench", ver_cmd_bench, "kernel speed: particle-updates per second and time split"},
   {"check", ver_cmd_check, "judge a run folder written by any code against a scene's checks"},
+  {"plot", ver_cmd_plot, "draw one run folder: load curve and reference, crack front, energy ledger"},
 };
 
 static void usage(FILE *f)
@@ -92,6 +93,6 @@ int main(int argc, char **argv)
       free(args);
       return rc;
     }
-  fprintf(stderr, "delam: unknown command '%s' (allowed: analytic, run, verify, report, bench, check)\n", argv[1]);
+  fprintf(stderr, "delam: unknown command '%s' (allowed: analytic, run, verify, report, bench, check, plot)\n", argv[1]);
   return 2;
 }

@@ -67,9 +67,9 @@ static int policy_gci(const ver_case *cs, int n, ver_cross *x, int room)
   int m = 0;
   for (int i = 0; i < n; i++) {
     const ver_case *a = &cs[i], *b = NULL, *c = NULL;
-    /* the bars only: a split beam (dcb, docs/specimens.md) has its own checks and no
-     * separation of a bar to converge (its delta_sep is NaN) */
-    if (a->var.set || !a->complete || ver_case_a90(a) || a->vs.sc.specimen != MPM_SPEC_BAR)
+    /* the paper's bar only: a split beam or a held bar (docs/specimens.md) has its own
+     * checks and no separation of a bar to converge (its delta_sep is NaN) */
+    if (a->var.set || !a->complete || ver_case_a90(a) || a->vs.sc.specimen != MPM_SPEC_BAR || a->vs.sc.grips)
       continue;
     int finest = 1; /* a is the finest h of its scene and ppc with 2 h and 4 h present */
     for (int j = 0; j < n; j++) {

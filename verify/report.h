@@ -2,7 +2,8 @@
  * report.h - private to `delam report`: the cases the figures need (report_cases.c),
  * how they are run (report_run.c), what is measured from them (report_data.c), the
  * plot data and gnuplot (report_plot.c), the checks and the paper's numbers
- * (report_judge.c), the text (report_text.c, templates in reports/text/) and the one
+ * (report_judge.c), the quasi-static solver's runs (report_qs.c, report_static.c), the split
+ * beams (report_spec.c), the text (report_text.c, templates in reports/text/) and the one
  * document model rendered to REPORT.md and index.html (report_doc.c).
  */
 #ifndef DELAM_REPORT_H
@@ -35,6 +36,7 @@ enum {
   REP_STATIC = 1024, /* the sweep scenes with the quasi-static solver (report_static.c)          */
   REP_QS = 4096,    /* a snapback scene on the quasi-static solver (report_qs.c)                  */
   REP_QS3 = 8192,   /* one of Fig. 3's nine bars on the quasi-static solver (report_qs.c; tag 3 i + j) */
+  REP_SPEC = 16384, /* a split beam on its file's static solver (report_spec.c; tag 0 DCB, 1 ELS)      */
 };
 
 /* Outcome of a time-step sweep point. */
@@ -170,6 +172,10 @@ void ver_report_build_cases(report *R);
 /* Fig. 3's bars: q = rep_fig3_q[i], g = rep_fig3_g[j] (alpha 90, r0 1, L = E U0 / g). */
 extern const double rep_fig3_q[3], rep_fig3_g[3];
 int ver_report_fig3_bar(int i, int j, ana_bar *b);
+/* OUT/data/NAME for writing (NULL, said and counted in r->io_bad, if it cannot be); its
+ * close removes a file not written whole and counts it. */
+FILE *ver_report_open_data(const rep_ctx *r, const char *name);
+void ver_report_close_data(const rep_ctx *r, FILE *f, const char *name);
 /* OUT/data/: plot data, vars.gp, and a copy of each run's files (nothing links out). */
 void ver_report_write_data(report *R);
 /* Time-step sweep: REP_STABLE, REP_NOISY or REP_BLOWN against the smallest-dt error. */
@@ -244,6 +250,16 @@ void ver_report_qs_cases(rep_ctx *r);
 void ver_report_qs_write(const rep_ctx *r, FILE *vars);
 /* Their placeholders (qs_<scene>:para, fig3k:*). */
 void ver_report_qs_vars(report *R);
+
+/* report_spec.c: the split beams (docs/specimens.md), the DCB and the ELS at h 4 and 2,
+ * 4 ppc, static (REP_SPEC), against data/fe, beam theory and the DCB's cohesive beam. */
+void ver_report_spec_cases(rep_ctx *r);
+/* OUT/data/spec-*.csv (the references' curves) and their vars (spec_*). */
+void ver_report_spec_write(const rep_ctx *r, FILE *vars);
+/* The placeholders spec:<dcb|els>_h<h>:<check> (delam check's numbers) and spec:<dcb|els>:*. */
+void ver_report_spec_vars(report *R);
+/* Their table in the document (the figure's section). */
+void ver_report_spec_table(report *R);
 
 /* report_data.c */
 /* Reads summary.json of c->dir into *c; 0 if read. */

@@ -296,6 +296,8 @@ void ver_report_build_cases(report *R)
   }
   /* the quasi-static solver: the snapback scenes and Fig. 3's bars (report_qs.c) */
   ver_report_qs_cases(r);
+  /* the split beams, static by their file (report_spec.c) */
+  ver_report_spec_cases(r);
 }
 
 const rep_case *ver_report_first(const rep_ctx *r, int role, const char *scene)

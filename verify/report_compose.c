@@ -138,6 +138,8 @@ static void fig_table(report *R, const char *name)
     table_role(R, REP_SCHEME);
   else if (!strcmp(name, "separation"))
     table_role(R, REP_SEP);
+  else if (!strcmp(name, "specimens"))
+    ver_report_spec_table(R);
 }
 
 /* One figure's section from reports/text/<name>.md. */

@@ -78,6 +78,8 @@ static int scene_bar(const rep_ctx *r, const rep_case *c, ana_bar *bar, double *
   for (int j = 0; j < c->nset; j++)
     if (ver_scene_set(&vs, c->set[j], err, sizeof err) != 0)
       return -1;
+  if (vs.sc.specimen != MPM_SPEC_BAR) /* a split beam: its references are report_spec.c's */
+    return -1;
   *rho = vs.sc.rho;
   *imp_x = vs.sc.imp_x;
   return ver_scene_bar(&vs.sc, bar, err, sizeof err) == 0 ? 0 : -1;

@@ -25,7 +25,7 @@ static void data_failed(const rep_ctx *r, const char *path, int e)
     (*r->io_bad)++;
 }
 
-static FILE *open_data(const rep_ctx *r, const char *name)
+FILE *ver_report_open_data(const rep_ctx *r, const char *name)
 {
   char p[REP_PATH + 96];
   snprintf(p, sizeof p, "%s/data/%s", r->out, name);
@@ -35,9 +35,9 @@ static FILE *open_data(const rep_ctx *r, const char *name)
   return f;
 }
 
-/* Closes a file of open_data; one that could not be written whole (a full disk) is
+/* Closes a file of ver_report_open_data; one that could not be written whole (a full disk) is
  * removed and counted, so that no figure is drawn from part of it. */
-static void close_data(const rep_ctx *r, FILE *f, const char *name)
+void ver_report_close_data(const rep_ctx *r, FILE *f, const char *name)
 {
   char p[REP_PATH + 96];
   snprintf(p, sizeof p, "%s/data/%s", r->out, name);
@@ -89,13 +89,13 @@ static void write_ana_curve(const rep_ctx *r, const char *name, const ana_bar *b
   enum { NPT = 2001 };
   static double d[NPT], P[NPT];
   const int k = ana_bar_curve(b, delta_end, NPT, d, P);
-  FILE *f = open_data(r, name);
+  FILE *f = ver_report_open_data(r, name);
   if (!f)
     return;
   fprintf(f, "delta,P\n");
   for (int i = 0; i < k; i++)
     fprintf(f, "%.10g,%.10g\n", d[i], P[i]);
-  close_data(r, f, name);
+  ver_report_close_data(r, f, name);
 }
 
 /* The figure "rate": the exact solution at the grip speed of iface90.ini's bar (Fig. 6's)
@@ -115,16 +115,16 @@ static void write_rate(const rep_ctx *r, FILE *vars)
   const ana_wave_params wp = ver_report_wave_params(w);
   ana_wave a;
   if (ana_wave_init(&w->bar, &wp, 0.6, &a, err, sizeof err) == ANA_OK) {
-    FILE *f = open_data(r, "wave.csv");
+    FILE *f = ver_report_open_data(r, "wave.csv");
     if (f) {
       fprintf(f, "delta,P\n");
       for (int i = 0; i <= 1200; i++)
         fprintf(f, "%.10g,%.10g\n", 0.0005 * i, ana_wave_load_at(&a, 0.0005 * i));
-      close_data(r, f, "wave.csv");
+      ver_report_close_data(r, f, "wave.csv");
     }
     ana_wave_free(&a);
   }
-  FILE *f = open_data(r, "rate.dat");
+  FILE *f = ver_report_open_data(r, "rate.dat");
   if (f)
     fprintf(f, "# h fig6_static fig6_exact iface90_static iface90_exact\n");
   for (double h = 8; h >= 1; h /= 2) {
@@ -135,7 +135,7 @@ static void write_rate(const rep_ctx *r, FILE *vars)
     fprintf(vars, "rate_fig6_h%g = \"%s\"\nrate_iface_h%g = \"%s\"\n", h, p ? p->id : "", h, q ? q->id : "");
   }
   if (f)
-    close_data(r, f, "rate.dat");
+    ver_report_close_data(r, f, "rate.dat");
 }
 
 /* Fig. 3: sigma* against E e_ave / r0 for q = 0.8, 1, 1.2 and g = 0.75, 1.25, 2 (L chosen
@@ -164,13 +164,13 @@ static void write_fig3(const rep_ctx *r, FILE *vars)
       const int k = ana_bar_curve(&b, 2.6 * b.r0 * p.L / p.E, NPT, d, P);
       char name[64];
       snprintf(name, sizeof name, "fig3-q%g-g%g.csv", rep_fig3_q[i], rep_fig3_g[j]);
-      FILE *f = open_data(r, name);
+      FILE *f = ver_report_open_data(r, name);
       if (!f)
         continue;
       fprintf(f, "estar,sstar\n");
       for (int m = 0; m < k; m++)
         fprintf(f, "%.10g,%.10g\n", d[m] / p.L * p.E / b.r0, P[m] / b.Pmax);
-      close_data(r, f, name);
+      ver_report_close_data(r, f, name);
       fprintf(vars, "f3_snap_%d_%d = %d\n", i, j, b.snapback);
     }
 }
@@ -188,7 +188,7 @@ static void write_method_sweep(const rep_ctx *r, const char *scene, int role, co
       if (!(c->role & role) || c->tag != 1 || strcmp(c->scene, scene) || c->h != h || !c->have ||
           !isfinite(c->curve_err))
         continue;
-      if (!f && !(f = open_data(r, name)))
+      if (!f && !(f = ver_report_open_data(r, name)))
         return;
       if (ftell(f) == 0)
         fprintf(f, "h,curve_err,abs_diss_err,cpu_s,complete,particles\n");
@@ -196,7 +196,7 @@ static void write_method_sweep(const rep_ctx *r, const char *scene, int role, co
               c->particles);
     }
   if (f)
-    close_data(r, f, name);
+    ver_report_close_data(r, f, name);
 }
 
 static void write_sweeps(const rep_ctx *r, rep_fit *fits, FILE *vars)
@@ -211,7 +211,7 @@ static void write_sweeps(const rep_ctx *r, rep_fit *fits, FILE *vars)
     for (int ppc = 1; ppc <= 9; ppc += ppc == 1 ? 3 : 5) {
       char name[64];
       snprintf(name, sizeof name, "sweep-%s-ppc%d.dat", rep_sweep_scene[s], ppc);
-      FILE *f = open_data(r, name);
+      FILE *f = ver_report_open_data(r, name);
       if (!f)
         continue;
       fprintf(f, "h,curve_err,abs_diss_err,cpu_s,complete,particles\n");
@@ -236,7 +236,7 @@ static void write_sweeps(const rep_ctx *r, rep_fit *fits, FILE *vars)
           }
         }
       }
-      close_data(r, f, name);
+      ver_report_close_data(r, f, name);
       if (ppc == 1) {
         rep_fit *cf = &fits[s];
         cf->n = n;
@@ -277,7 +277,7 @@ double ver_report_stab_base(const rep_ctx *r)
 
 static void write_stab(const rep_ctx *r, FILE *vars)
 {
-  FILE *f = open_data(r, "stab.dat");
+  FILE *f = ver_report_open_data(r, "stab.dat");
   if (!f)
     return;
   fprintf(f, "dt_ratio,dt,outcome,curve_err,delta_reached\n"); /* outcome: 0 stable, 1 noisy, 2 blown up */
@@ -295,7 +295,7 @@ static void write_stab(const rep_ctx *r, FILE *vars)
       rep_str_printf(&labs, "%s%.2f", labs.n ? " " : "", c->tag);
     }
   }
-  close_data(r, f, "stab.dat");
+  ver_report_close_data(r, f, "stab.dat");
   fprintf(vars, "stab_ids = \"%s\"\nstab_labs = \"%s\"\n", ids.s ? ids.s : "", labs.s ? labs.s : "");
   free(ids.s);
   free(labs.s);
@@ -358,7 +358,7 @@ void ver_report_write_data(report *R)
   char p[REP_PATH + 32];
   snprintf(p, sizeof p, "%s/data", r->out);
   ver_mkdir_p(p);
-  FILE *vars = open_data(r, "vars.gp");
+  FILE *vars = ver_report_open_data(r, "vars.gp");
   if (!vars)
     return;
   fprintf(vars, "# written by delam report\n");
@@ -381,6 +381,7 @@ void ver_report_write_data(report *R)
   }
   write_fig3(r, vars);
   ver_report_qs_write(r, vars);
+  ver_report_spec_write(r, vars);
   write_sweeps(r, R->fits, vars);
   ver_report_write_static(R, vars);
   write_stab(r, vars);
@@ -425,7 +426,7 @@ void ver_report_write_data(report *R)
       write_note(vars, key, c);
     }
   }
-  close_data(r, vars, "vars.gp");
+  ver_report_close_data(r, vars, "vars.gp");
 }
 
 /* 1 if the figure file ends as a whole one does: its last 64 bytes hold end (a PNG's

@@ -15,21 +15,26 @@
 #include "report.h"
 
 /* The figures, in order; "scheme" only where time.scheme=musl exists, "rate" only where
- * the scene folder has iface90.ini (its cases, REP_WAVE). */
+ * the scene folder has iface90.ini (its cases, REP_WAVE), "specimens" only where it has
+ * dcb.ini (REP_SPEC). */
 static const char *const FIGS[] = {"fig3", "fig6a", "fig6b", "fig6c", "fig7a", "fig7b", "fig7c", "fig7d",
                                    "fig8a", "fig8b", "fig8c", "energy", "conv", "rate", "workprec", "stab",
-                                   "snapback", "separation", "scheme"};
+                                   "snapback", "separation", "scheme", "specimens"};
 
 void ver_report_plan_figs(report *R)
 {
   R->nfig = 0;
-  int wave = 0;
-  for (int k = 0; k < R->r.n; k++)
+  int wave = 0, spec = 0;
+  for (int k = 0; k < R->r.n; k++) {
     wave |= (R->r.c[k].role & REP_WAVE) != 0;
+    spec |= (R->r.c[k].role & REP_SPEC) != 0;
+  }
   for (size_t i = 0; i < sizeof FIGS / sizeof FIGS[0] && R->nfig < REP_MAX_FIGS; i++) {
     if (!strcmp(FIGS[i], "scheme") && !R->r.have_musl)
       continue;
     if (!strcmp(FIGS[i], "rate") && !wave)
+      continue;
+    if (!strcmp(FIGS[i], "specimens") && !spec)
       continue;
     rep_fig *f = &R->fig[R->nfig++];
     snprintf(f->name, sizeof f->name, "%s", FIGS[i]);
@@ -387,4 +392,5 @@ void ver_report_set_vars(report *R)
   rate_vars(R);
   ver_report_static_vars(R);
   ver_report_qs_vars(R);
+  ver_report_spec_vars(R);
 }

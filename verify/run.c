@@ -92,7 +92,8 @@ static int prepare_outdir(const char *dir, int *lock, char *err, size_t errlen)
     if (!strncmp(n, "snap-d", 6) || !strncmp(n, "final.", 6) || !strncmp(n, "final-line.", 11) ||
         !strcmp(n, "snapshots.pvd") ||
         !strcmp(n, "summary.json") || !strcmp(n, "load.csv") || !strcmp(n, "energy.csv") ||
-        !strcmp(n, "scene.ini") || !strcmp(n, "check.json") || (len > 4 && !strcmp(n + len - 4, ".tmp"))) {
+        !strcmp(n, "scene.ini") || !strcmp(n, "check.json") || !strcmp(n, "plot.png") ||
+        (len > 4 && !strcmp(n + len - 4, ".tmp"))) {
       char old[1400];
       snprintf(old, sizeof old, "%s/%s", dir, n);
       remove(old);
@@ -417,12 +418,9 @@ static int run_loop(run_state *r, ver_summary *u, double w0, char *err, size_t e
   return rc;
 }
 
-/* The files of a run whose loop ended with rc (err holds its reason if rc): load.csv,
- * energy.csv and the final particles, then summary.json last, written even where the
- * others failed, so that the folder says the run did not finish.  The run's status,
- * 1 if a file could not be written (err names it and why). */
-/* snapshots.pvd: the snapshots written, as one ParaView time series (time = delta), and
- * the interface's line files beside them where there are any. */
+/* snapshots.pvd: the snapshots written, as one ParaView time series (time = delta):
+ * part 0 the particles' .vtp, part 1 the line's where there is one (VTK's collection
+ * reader reads only VTK XML files, hence .vtp; docs/output-formats.md). */
 static int write_pvd(const run_state *r, const char *dir, char *bad)
 {
   int any = 0;
@@ -435,19 +433,23 @@ static int write_pvd(const run_state *r, const char *dir, char *bad)
   if (!f)
     return -1;
   const int line = mpm_iface_pieces(r->s) > 0;
-  fputs("<?xml version=\"1.0\"?>\n<!-- delam snapshots.pvd schema 1: time is the end displacement delta -->\n"
-        "<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n", f);
+  fprintf(f, "<?xml version=\"1.0\"?>\n<!-- delam snapshots.pvd schema %d: time is the end displacement delta -->\n"
+          "<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n", VER_SCHEMA_PVD);
   for (int i = 0; i < r->vs->nsnap; i++)
     if (r->snap_done[i]) {
-      fprintf(f, "<DataSet timestep=\"%.6g\" part=\"0\" file=\"snap-d%.3f.vtk\"/>\n", r->vs->snap[i], r->vs->snap[i]);
+      const double d = r->vs->snap[i];
+      fprintf(f, "<DataSet timestep=\"%.6g\" part=\"0\" name=\"particles\" file=\"snap-d%.3f.vtp\"/>\n", d, d);
       if (line)
-        fprintf(f, "<DataSet timestep=\"%.6g\" part=\"1\" file=\"snap-d%.3f-line.vtk\"/>\n", r->vs->snap[i],
-                r->vs->snap[i]);
+        fprintf(f, "<DataSet timestep=\"%.6g\" part=\"1\" name=\"line\" file=\"snap-d%.3f-line.vtp\"/>\n", d, d);
     }
   fputs("</Collection>\n</VTKFile>\n", f);
   return ver_run_commit(f, tmp, bad);
 }
 
+/* The files of a run whose loop ended with rc (err holds its reason if rc): load.csv,
+ * energy.csv and the final particles, then summary.json last, written even where the
+ * others failed, so that the folder says the run did not finish.  The run's status,
+ * 1 if a file could not be written (err names it and why). */
 static int write_results(run_state *r, ver_summary *u, int rc, char *err, size_t errlen)
 {
   const char *dir = r->o->outdir;

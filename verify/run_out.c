@@ -1,7 +1,7 @@
 /*
  * run_out.c - the files of one run (run.c): load.csv and energy.csv, the particle
- * snapshots as CSV and legacy VTK, and the interface's line pieces, each written under a
- * temporary name and renamed into place when complete (docs/output-formats.md).
+ * snapshots as CSV and VTK XML PolyData (.vtp), and the line's pieces, each written under
+ * a temporary name and renamed into place when complete (docs/output-formats.md).
  */
 #include <errno.h>
 #include <math.h>
@@ -38,8 +38,59 @@ int ver_run_commit(FILE *f, const char *tmp, char *bad)
   return -1;
 }
 
-/* decohesion.path = interface: the line's pieces with their segment's lambda and state,
- * <stem>-line.csv (docs/output-formats.md); nothing for the other paths. */
+/* VTK XML (ParaView's .pvd reads only these; docs/output-formats.md): the file's
+ * opening up to the Piece, whose counts the caller gives. */
+static void vtp_head(FILE *f, const char *what, int schema, const char *stem, double t, size_t npts, size_t nverts,
+                     size_t nlines)
+{
+  fprintf(f, "<?xml version=\"1.0\"?>\n<!-- delam %s schema %d %s t=%.9g -->\n"
+          "<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
+          "<PolyData>\n<Piece NumberOfPoints=\"%zu\" NumberOfVerts=\"%zu\" NumberOfLines=\"%zu\" "
+          "NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n", what, schema, stem, t, npts, nverts, nlines);
+}
+
+/* A cell block (Verts or Lines) of n cells of k consecutive points each. */
+static void vtp_cells(FILE *f, const char *block, size_t n, size_t k)
+{
+  fprintf(f, "<%s>\n<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n", block);
+  for (size_t i = 0; i < n * k; i++)
+    fprintf(f, "%zu\n", i);
+  fprintf(f, "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n");
+  for (size_t i = 1; i <= n; i++)
+    fprintf(f, "%zu\n", i * k);
+  fprintf(f, "</DataArray>\n</%s>\n", block);
+}
+
+/* The line's pieces (xa ya xb yb lambda state, m of them) as <stem>-line.vtp: one line
+ * cell per piece, lambda and state as cell data, in reference coordinates. */
+static int write_line_vtp(const mpm_sim *s, const double *xy, int m, const char *dir, const char *stem, char *bad)
+{
+  char tmp[1100], name[128];
+  snprintf(name, sizeof name, "%s-line.vtp", stem);
+  FILE *f = ver_run_open_tmp(dir, name, tmp, sizeof tmp, bad);
+  if (!f)
+    return -1;
+  mpm_sim_info in;
+  mpm_sim_info_get(s, &in);
+  vtp_head(f, "line.vtp", VER_SCHEMA_LINE, stem, in.t, 2 * (size_t)m, 0, (size_t)m);
+  fputs("<CellData Scalars=\"lambda\">\n<DataArray type=\"Float64\" Name=\"lambda\" format=\"ascii\">\n", f);
+  for (int i = 0; i < m; i++)
+    fprintf(f, "%.9g\n", xy[6 * i + 4]);
+  fputs("</DataArray>\n<DataArray type=\"Int32\" Name=\"state\" format=\"ascii\">\n", f);
+  for (int i = 0; i < m; i++)
+    fprintf(f, "%d\n", (int)xy[6 * i + 5]);
+  fputs("</DataArray>\n</CellData>\n<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n", f);
+  for (int i = 0; i < m; i++)
+    fprintf(f, "%.9g %.9g 0\n%.9g %.9g 0\n", xy[6 * i], xy[6 * i + 1], xy[6 * i + 2], xy[6 * i + 3]);
+  fputs("</DataArray>\n</Points>\n", f);
+  vtp_cells(f, "Lines", (size_t)m, 2);
+  fputs("</Piece>\n</PolyData>\n</VTKFile>\n", f);
+  return ver_run_commit(f, tmp, bad);
+}
+
+/* decohesion.path = interface (and the split beams' line): the line's pieces with their
+ * segment's lambda and state, <stem>-line.csv and .vtp (docs/output-formats.md);
+ * nothing where there is no line. */
 static int write_line(const mpm_sim *s, const char *dir, const char *stem, char *bad)
 {
   const int n = mpm_iface_pieces(s);
@@ -66,34 +117,69 @@ static int write_line(const mpm_sim *s, const char *dir, const char *stem, char 
       }
     }
   }
-  if (ver_run_commit(f, tmp, bad)) {
-    free(xy);
-    return -1;
-  }
-  /* The same pieces as legacy VTK polydata, one line cell each, for ParaView. */
-  snprintf(name, sizeof name, "%s-line.vtk", stem);
-  if (!xy) /* no memory for the VTK copy: the CSV is written, the VTK left out */
-    return 0;
-  if (!(f = ver_run_open_tmp(dir, name, tmp, sizeof tmp, bad))) {
-    free(xy);
-    return -1;
-  }
-  mpm_sim_info in;
-  mpm_sim_info_get(s, &in);
-  fprintf(f, "# vtk DataFile Version 3.0\ndelam line.vtk schema %d %s t=%g\nASCII\nDATASET POLYDATA\nPOINTS %d double\n",
-          VER_SCHEMA_LINE, stem, in.t, 2 * m);
-  for (int i = 0; i < m; i++)
-    fprintf(f, "%.9g %.9g 0\n%.9g %.9g 0\n", xy[6 * i], xy[6 * i + 1], xy[6 * i + 2], xy[6 * i + 3]);
-  fprintf(f, "LINES %d %d\n", m, 3 * m);
-  for (int i = 0; i < m; i++)
-    fprintf(f, "2 %d %d\n", 2 * i, 2 * i + 1);
-  fprintf(f, "CELL_DATA %d\nSCALARS lambda double 1\nLOOKUP_TABLE default\n", m);
-  for (int i = 0; i < m; i++)
-    fprintf(f, "%.9g\n", xy[6 * i + 4]);
-  fprintf(f, "SCALARS state int 1\nLOOKUP_TABLE default\n");
-  for (int i = 0; i < m; i++)
-    fprintf(f, "%d\n", (int)xy[6 * i + 5]);
+  /* no memory for the VTK copy: the CSV is written, the .vtp left out */
+  const int rc = ver_run_commit(f, tmp, bad) ? -1 : xy ? write_line_vtp(s, xy, m, dir, stem, bad) : 0;
   free(xy);
+  return rc;
+}
+
+/* The particle columns of <stem>.csv after x, y (which are the points of the .vtp). */
+enum { P_X0, P_Y0, P_UX, P_UY, P_LAM, P_SXX, P_SYY, P_SXY, P_UPN, P_UPT, P_SEP, P_WCOH, P_DIS, P_NCOL };
+static const char *const pcol_name[P_NCOL] = {"x0",  "y0",  "ux",  "uy",  "lambda", "sxx", "syy",
+                                              "sxy", "upn", "upt", "sep", "wcoh",   "dis"};
+
+static double pcol(const mpm_particle_view *p, size_t k, int c)
+{
+  switch (c) {
+  case P_X0: return p->x0[k];
+  case P_Y0: return p->y0[k];
+  case P_UX: return p->x[k] - p->x0[k];
+  case P_UY: return p->y[k] - p->y0[k];
+  case P_LAM: return p->lam[k];
+  case P_SXX: return p->sxx[k];
+  case P_SYY: return p->syy[k];
+  case P_SXY: return p->sxy[k];
+  case P_UPN: return p->upn[k];
+  case P_UPT: return p->upt[k];
+  case P_SEP: return p->sep[k];
+  case P_WCOH: return p->wcoh[k];
+  default: return p->dis[k];
+  }
+}
+
+/* <stem>.vtp: the bar's particles (not the head's) at their current positions, one
+ * vertex each; point data: the displacement as a 3-vector (Warp By Vector) and every
+ * column of <stem>.csv but x, y under its CSV name. */
+static int write_particles_vtp(const mpm_particle_view *p, double t, const char *dir, const char *stem, char *bad)
+{
+  char tmp[1100], name[128];
+  snprintf(name, sizeof name, "%s.vtp", stem);
+  FILE *f = ver_run_open_tmp(dir, name, tmp, sizeof tmp, bad);
+  if (!f)
+    return -1;
+  const size_t nb = p->n - p->nhead; /* the bar's particles; the head is the machine */
+  vtp_head(f, "particles.vtp", VER_SCHEMA_PARTICLES, stem, t, nb, nb, 0);
+  fputs("<PointData Scalars=\"lambda\" Vectors=\"displacement\">\n"
+        "<DataArray type=\"Float64\" Name=\"displacement\" NumberOfComponents=\"3\" format=\"ascii\">\n", f);
+  for (size_t k = 0; k < p->n; k++)
+    if (p->mat[k] != MPM_MAT_HEAD)
+      fprintf(f, "%.9g %.9g 0\n", p->x[k] - p->x0[k], p->y[k] - p->y0[k]);
+  fputs("</DataArray>\n", f);
+  for (int c = 0; c < P_NCOL; c++) {
+    fprintf(f, "<DataArray type=\"%s\" Name=\"%s\" format=\"ascii\">\n", c == P_SEP ? "Int32" : "Float64",
+            pcol_name[c]);
+    for (size_t k = 0; k < p->n; k++)
+      if (p->mat[k] != MPM_MAT_HEAD)
+        fprintf(f, "%.9g\n", pcol(p, k, c));
+    fputs("</DataArray>\n", f);
+  }
+  fputs("</PointData>\n<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n", f);
+  for (size_t k = 0; k < p->n; k++)
+    if (p->mat[k] != MPM_MAT_HEAD)
+      fprintf(f, "%.9g %.9g 0\n", p->x[k], p->y[k]);
+  fputs("</DataArray>\n</Points>\n", f);
+  vtp_cells(f, "Verts", nb, 1);
+  fputs("</Piece>\n</PolyData>\n</VTKFile>\n", f);
   return ver_run_commit(f, tmp, bad);
 }
 
@@ -116,34 +202,7 @@ int ver_run_write_snapshot(const mpm_sim *s, const char *dir, const char *stem, 
       fprintf(f, "%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%d,%.9g,%.9g\n", p->x0[k], p->y0[k],
             p->x[k], p->y[k], p->x[k] - p->x0[k], p->y[k] - p->y0[k], p->lam[k], p->sxx[k], p->syy[k],
             p->sxy[k], p->upn[k], p->upt[k], p->sep[k], p->wcoh[k], p->dis[k]);
-  if (ver_run_commit(f, tmp, bad))
-    return -1;
-  /* Legacy VTK polydata, one vertex per particle, for ParaView. */
-  snprintf(name, sizeof name, "%s.vtk", stem);
-  if (!(f = ver_run_open_tmp(dir, name, tmp, sizeof tmp, bad)))
-    return -1;
-  const size_t nb = p->n - p->nhead; /* the bar's particles; the head is the machine */
-  fprintf(f, "# vtk DataFile Version 3.0\ndelam particles.vtk schema %d %s t=%g\nASCII\nDATASET POLYDATA\nPOINTS %zu double\n",
-          VER_SCHEMA_PARTICLES, stem, in.t, nb);
-  for (size_t k = 0; k < p->n; k++)
-    if (p->mat[k] != MPM_MAT_HEAD)
-      fprintf(f, "%.9g %.9g 0\n", p->x[k], p->y[k]);
-  fprintf(f, "VERTICES %zu %zu\n", nb, 2 * nb);
-  for (size_t k = 0; k < nb; k++)
-    fprintf(f, "1 %zu\n", k);
-  fprintf(f, "POINT_DATA %zu\nVECTORS displacement double\n", nb);
-  for (size_t k = 0; k < p->n; k++)
-    if (p->mat[k] != MPM_MAT_HEAD)
-      fprintf(f, "%.9g %.9g 0\n", p->x[k] - p->x0[k], p->y[k] - p->y0[k]);
-  const char *fields[] = {"lambda", "sxx", "syy", "sxy"};
-  const double *arrs[] = {p->lam, p->sxx, p->syy, p->sxy};
-  for (int q = 0; q < 4; q++) {
-    fprintf(f, "SCALARS %s double 1\nLOOKUP_TABLE default\n", fields[q]);
-    for (size_t k = 0; k < p->n; k++)
-      if (p->mat[k] != MPM_MAT_HEAD)
-        fprintf(f, "%.9g\n", arrs[q][k]);
-  }
-  if (ver_run_commit(f, tmp, bad))
+  if (ver_run_commit(f, tmp, bad) || write_particles_vtp(p, in.t, dir, stem, bad))
     return -1;
   return write_line(s, dir, stem, bad);
 }

@@ -23,8 +23,8 @@ typedef struct {
  * Either, failing, says which file and why in bad (VER_RUN_BAD bytes), errno kept. */
 FILE *ver_run_open_tmp(const char *dir, const char *name, char *tmp, size_t len, char *bad);
 int ver_run_commit(FILE *f, const char *tmp, char *bad);
-/* <stem>.csv and <stem>.vtk of the bar's particles, and the interface's <stem>-line.csv
- * and .vtk where there is one; 0, or -1 with bad. */
+/* <stem>.csv and <stem>.vtp of the bar's particles, and the line's <stem>-line.csv and
+ * .vtp where there is one (the interface, the split beams); 0, or -1 with bad. */
 int ver_run_write_snapshot(const mpm_sim *s, const char *dir, const char *stem, char *bad);
 /* load.csv and energy.csv of the n rows; 0, or -1 with bad. */
 int ver_run_write_rows(const ver_run_row *r, long n, const char *dir, char *bad);

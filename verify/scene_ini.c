@@ -22,6 +22,15 @@ void ver_scene_fmt_num(double v, char *buf, size_t len)
   for (int prec = 1; prec <= 17; prec++) {
     snprintf(buf, len, "%.*g", prec, v);
     if (strtod(buf, NULL) == v)
+      break;
+  }
+  /* as a person writes it: no exponent between 1e-4 and 1e15 (90, not 9e+01) */
+  const double a = fabs(v);
+  if (!strchr(buf, 'e') || !(a >= 1e-4 && a < 1e15))
+    return;
+  for (int dec = 0; dec <= 20; dec++) {
+    snprintf(buf, len, "%.*f", dec, v);
+    if (strtod(buf, NULL) == v)
       return;
   }
 }

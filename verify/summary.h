@@ -61,7 +61,7 @@ double ver_summary_scheme_loss(const ver_summary *u);
 
 /* Schema versions of the files a run writes (docs/output-formats.md); each file says
  * its own: summary.json "schema", a first comment line in the CSV files and scene.ini,
- * the title line of the VTK files.  Raised when a column or key changes meaning or
+ * a comment before the root element of the VTK files and snapshots.pvd.  Raised when a column or key changes meaning or
  * goes away (new keys and columns may join without a raise). */
 #define VER_SCHEMA_SUMMARY 1
 #define VER_SCHEMA_LOAD 1
@@ -69,6 +69,7 @@ double ver_summary_scheme_loss(const ver_summary *u);
                                taken out of L_scheme (two velocity fields) */
 #define VER_SCHEMA_PARTICLES 1
 #define VER_SCHEMA_LINE 1 /* <snapshot>-line.csv: decohesion.path = interface */
+#define VER_SCHEMA_PVD 2 /* snapshots.pvd; 2: its DataSets are .vtp (1: legacy .vtk) */
 #define VER_SCHEMA_VERIFY 3     /* verify.json and verify.csv                       */
 #define VER_SCHEMA_CHECK 1      /* check.json                                        */
 /* scene.ini: VER_SCHEMA_SCENE in scene.h */

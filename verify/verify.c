@@ -138,7 +138,7 @@ static int check_all(const ver_verify_opts *o, ver_case *cs, int n, ver_cross *x
 {
   int rc = 0;
   for (int i = 0; i < n; i++) {
-    if (cs[i].vs.sc.specimen != MPM_SPEC_BAR) { /* a split beam: its own references */
+    if (cs[i].vs.sc.specimen != MPM_SPEC_BAR || cs[i].vs.sc.grips == MPM_GRIPS_HELD) { /* its own references */
       char dir[800];
       ver_case_dir(o, &cs[i], dir, sizeof dir);
       ver_spec_case(dir, &cs[i]);
@@ -149,6 +149,7 @@ static int check_all(const ver_verify_opts *o, ver_case *cs, int n, ver_cross *x
     rc |= cs[i].verdict == VER_FAIL;
   }
   *nx = ver_policy_cross(cs, n, x);
+  *nx += ver_spec_cross(cs, n, x + *nx, VER_MAXCROSS - *nx);
   *nx += ver_mms_cross(x + *nx, VER_MAXCROSS - *nx);
   ver_policy_cross_room(x, nx);
   for (int i = 0; i < *nx; i++) {

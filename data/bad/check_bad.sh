@@ -56,7 +56,7 @@ check opt-h-word "--h: 'abc' is not a number > 0" "$fig6" --h abc
 check opt-h-missing "--h: '--out' is not a number > 0" "$fig6" --h
 check opt-h-not-dividing "grid.h: 7 does not divide bar.L = 192" "$fig6" --h 7
 check opt-ppc-3 "command line: grid.ppc: 3 is not a perfect square" "$fig6" --ppc 3
-check opt-ppc-huge "grid.ppc: 1e+04 is out of range (a perfect square from 1 to 1024" "$fig6" --ppc 10000
+check opt-ppc-huge "grid.ppc: 10000 is out of range (a perfect square from 1 to 1024" "$fig6" --ppc 10000
 check opt-ppc-fraction "grid.ppc: '2.5' is not an integer" "$fig6" --ppc 2.5
 check opt-dt-zero "--dt: '0' is not a number > 0" "$fig6" --dt 0
 check opt-dt-cfl "command line: time.dt: 1 is at or above the CFL bound" "$fig6" --dt 1

@@ -8,7 +8,8 @@
 #   determinism  the same scene run twice gives byte-identical load.csv, energy.csv,
 #              final.csv (and snapshots); summary.json differs only in its timings;
 #              and 1 and 2 threads give the same files;
-#   list-merge `verify --list` lines run by hand, then `verify --merge` checks them.
+#   list-merge `verify --list` lines run by hand, then `verify --merge` checks them;
+#   uniform-bifurcation  fig6 without its flaw, static: exit 1 naming the bifurcation.
 # Prints TAP; exits 1 if a check failed.
 set -u
 delam=${1:?usage: check_run.sh path/to/delam}
@@ -71,7 +72,7 @@ for k in 1 2; do
     echo "# run $k failed"
 done
 why=""
-for f in load.csv energy.csv final.csv final.vtk snap-d0.050.csv; do
+for f in load.csv energy.csv final.csv final.vtp snap-d0.050.csv snap-d0.050.vtp snapshots.pvd; do
   cmp -s "$tmp/det1/$f" "$tmp/det2/$f" || why="$why $f differs or is missing;"
 done
 timings='"(wall_s|cpu_s|updates_per_s)"'
@@ -108,6 +109,19 @@ else
   fi
 fi
 result list-merge "$why"
+
+# a uniform bar without its flaw, statically: every particle of the band reaches its
+# strength at once, a bifurcation the uniform softening branch would follow to a
+# dissipation of 13 U0 H; the run stops with exit 1 and names it
+"$delam" run "$fig6" --solver static --h 8 --ppc 4 --threads 1 --quiet --set imperfection.snf_factor=1 \
+  --out "$tmp/noflaw" >/dev/null 2>"$tmp/noflaw.err"
+rc=$?
+why=""
+[ "$rc" = 1 ] || why="exit status $rc, want 1"
+grep -q "reach their strength together.*bifurcates" "$tmp/noflaw.err" || why="$why; no reason: $(head -c 300 "$tmp/noflaw.err")"
+w=$(partial_ok "$tmp/noflaw")
+[ -z "$w" ] || why="$why; $w"
+result uniform-bifurcation "${why#; }"
 
 echo "1..$n"
 echo "# $((n - fail)) passed, $fail failed"

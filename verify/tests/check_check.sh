@@ -9,6 +9,8 @@
 #                U0 H / 2: exit 1, naming W_ext_final;
 #   unusable     a missing column, a bad number, no load.csv: exit 2, naming file,
 #                line and column;
+#   columns-sign another code's header names (u, F) and sign (compression positive) read
+#                with --columns and --sign -1; without them the messages say so;
 #   own-scene    a delam run with --set decohesion.U0 = 2 x the file's: `delam check DIR`
 #                judges it against its own scene.ini (D_final's reference is the set U0
 #                times the file's H, worked out here), `--scene fig6 DIR` refuses it
@@ -197,6 +199,23 @@ rc=$?
 [ -z "$why" ] && { { [ $rc = 1 ] && grep -q "nowhere/check.json: cannot write: No such file or directory" out.txt; } ||
   why="--out nowhere/: exit $rc: $(grep 'delam check' out.txt | head -c 200)"; }
 result messages "$why"
+
+# another code's names and sign: u and F with compression positive; without --columns the
+# message names the option, with it and --sign -1 the folder passes as load-only did, and
+# without --sign the verdict fails and says the load is mostly negative
+mkdir named
+awk -F, 'NR > 1 && $1 !~ /^#/ { if (!h) { print "u,F"; h = 1; next } print $2 "," (-$3) }' own/load.csv > named/load.csv
+why=""
+"$delam" check --scene "$scene" --h 4 --ppc 4 named >out.txt 2>&1
+rc=$?
+[ $rc = 2 ] && grep -q -- "--columns delta=NAME,P_grip=NAME" out.txt || why="no --columns hint (exit $rc): $(head -2 out.txt)"
+"$delam" check --scene "$scene" --h 4 --ppc 4 --columns delta=u,P_grip=F named >out.txt 2>&1
+rc=$?
+[ $rc = 1 ] && grep -q "mostly negative.*--sign -1" out.txt || why="$why; unsigned: exit $rc, want 1 with the --sign hint"
+"$delam" check --scene "$scene" --h 4 --ppc 4 --columns delta=u,P_grip=F --sign -1 named >out.txt 2>&1
+rc=$?
+[ $rc = 0 ] || why="$why; mapped and signed: exit $rc: $(grep -E 'FAIL|check:' out.txt | head -3)"
+result columns-sign "${why#; }"
 
 echo "1..$n"
 [ "$fail" = 0 ]
