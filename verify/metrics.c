@@ -414,8 +414,26 @@ int ver_curve_wave_size(const ana_bar *b, double speed, double rho, double xg, d
   return 2;
 }
 
+/* The exact solution's own RMS distance from the quasi-static bar over Pmax, taken at
+ * the rows' midpoints as ver_curve_l2 takes a run's rows: the rate's error, the least a
+ * run converging on that solution can show against the quasi-static curve. */
+static double wave_rate(const ana_bar *b, const ana_wave *w, const double *delta, size_t n, double delta_end)
+{
+  double s = 0.0;
+  size_t m = 0;
+  for (size_t i = 0; i < n; i++) {
+    if (!(delta[i] > 0) || delta[i] > delta_end)
+      continue;
+    const double mid = 0.5 * ((i > 0 ? delta[i - 1] : 0.0) + delta[i]);
+    const double d = ana_wave_load_at(w, mid) - ana_bar_load_at(b, mid);
+    s += d * d;
+    m++;
+  }
+  return m ? sqrt(s / (double)m) / b->Pmax : NAN;
+}
+
 double ver_curve_err_wave(const ana_bar *b, double speed, double rho, double xg, double thr, const double *delta,
-                          const double *P, size_t n, double delta_end, double *maxdev, double *peak)
+                          const double *P, size_t n, double delta_end, double *maxdev, double *peak, double *rate)
 {
   const ana_wave_params wp = {speed, rho, xg, thr};
   ana_wave w;
@@ -423,10 +441,14 @@ double ver_curve_err_wave(const ana_bar *b, double speed, double rho, double xg,
     *maxdev = NAN;
   if (peak)
     *peak = NAN;
+  if (rate)
+    *rate = NAN;
   if (ana_wave_init(b, &wp, delta_end * WAVE_PAST, &w, NULL, 0) != ANA_OK)
     return NAN;
   if (peak)
     *peak = ana_wave_peak(&w, NULL);
+  if (rate)
+    *rate = wave_rate(b, &w, delta, n, delta_end);
   const double e = ver_curve_l2(delta, P, n, delta_end, b->Pmax, wave_load, &w, maxdev, 0);
   ana_wave_free(&w);
   return e;

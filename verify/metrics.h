@@ -153,6 +153,12 @@ double ver_curve_path(const ana_bar *b, const double *delta, const double *P, si
  * and the last of those rows' delta.  NaN without reference rows or rows to compare. */
 double ver_curve_err_curve(const double *rd, const double *rP, size_t rn, const double *delta, const double *P,
                            size_t n, double delta_end, double scale);
+/* curve_l2's bound in verify's check (policy.c) at one and at several particles per
+ * cell (the grip speed's own error at the paper's speed is 0.0157 of them), and
+ * curve_wave's, against the exact solution at the grip speed, which has no rate error. */
+#define VER_CURVE_TOL_PPC1 0.04
+#define VER_CURVE_TOL 0.03
+#define VER_WAVE_TOL 0.01
 /* ver_curve_path's bound in verify's check (policy.c), at alpha 90 and inclined. */
 #define VER_PATH_TOL_90 0.005
 #define VER_PATH_TOL_INCLINED 0.01
@@ -162,9 +168,12 @@ double ver_curve_err_curve(const double *rd, const double *rP, size_t rn, const 
  * solution at the grip speed"), to delta_end.  NaN where that solution does not apply
  * (alpha other than 90, q other than 1, s0 other than snf) or cannot be built (larger than
  * its cap: ver_curve_wave_size says so).  *peak (if
- * not NULL) gets that solution's peak load (NaN where it does not apply). */
+ * not NULL) gets that solution's peak load, *rate (if not NULL) its own RMS distance
+ * from the quasi-static bar over Pmax at the same rows: the rate's error at this speed,
+ * the floor a run converging on it tends to against the quasi-static curve (NaN where it
+ * does not apply). */
 double ver_curve_err_wave(const ana_bar *b, double speed, double rho, double xg, double thr, const double *delta,
-                          const double *P, size_t n, double delta_end, double *maxdev, double *peak);
+                          const double *P, size_t n, double delta_end, double *maxdev, double *peak, double *rate);
 
 /* 2 with why where that solution applies but would be larger than analytic/ana.h's cap
  * (ANA_WAVE_MAX_SAMPLES: a large U0 or a slow grip puts its end far out), else 0. */

@@ -73,6 +73,8 @@ static void known(ver_check *k, double lo, double hi)
  *    30 deg with four cells or fewer across the bar, and to 20 deg with several
  *    particles per cell, where the band turns toward the cell columns (fig7 h 4, 4 ppc:
  *    70.5 deg against 60).
+ *  - decohesion.path = interface: no particle softens, the line dissipates U0 per unit
+ *    area at every angle: D_final is pass-class inclined too.
  *  - peak load, elastic slope and energy balance are pass-class everywhere.
  */
 
@@ -85,6 +87,7 @@ typedef struct {
   double nside; /* sqrt(ppc)                                        */
   int band;     /* inclined, with two fields and Le = staircase, row or zone */
   int row;      /* ... Le = row: the zone measured, at every ppc      */
+  int iface;    /* decohesion.path = interface: no particle softens   */
 } case_class;
 
 /* the run itself */
@@ -191,16 +194,19 @@ static void check_energy(ver_case *c, const case_class *q)
   const int lep = q->lep;
   const double nside = q->nside;
   ver_check *k;
+  /* the interface (no particle softens) dissipates U0 per unit area of its line once
+   * every segment has opened, at every angle (fig7, fig8, a45, a30: D / U0 area 1.000,
+   * docs/methods.md): pass-class like alpha = 90, so a law off by a few % fails there too */
   k = add_check(c, "D_final", c->D_final, a->D_sep, 1);
   k->tol = q->band ? 0.10 : 0.02;
   if (lep)
     known(k, -k->tol, 1.1 * nside - 1.0);
-  else if (!a90 && !q->band)
+  else if (!a90 && !q->band && !q->iface)
     known(k, -k->tol, 3.0);
   else if (q->band && !q->ppc1 && !q->row)
     known(k, -k->tol, 0.6); /* measured: partial softening beside the band, docs/methods.md */
   snprintf(k->note, sizeof k->note, "dissipation at the end vs UD x area = %.4g%s", a->D_sep,
-           !a90 && !lep ? " (inclined band: more, paper Fig. 7)" : "");
+           !a90 && !lep && !q->iface ? " (inclined band: more, paper Fig. 7)" : "");
 
   /* W_ext also holds the kinetic and elastic energy still in the bar at the end, and
    * what the ledger booked on the way (W_booked: the scheme's own loss, the damper's,
@@ -223,13 +229,27 @@ static void check_energy(ver_case *c, const case_class *q)
    * the ledger), over W_ext: the part of W_booked the W_ext check above lets pass, judged
    * here on its own, with the energy tolerance.  The damper's (L_damp: a file's damped
    * release), the loading head's (W_head), the contact's and the debris' are the scene's
-   * own and not counted.  Measured in --full: at most 0.018 but fig6 at h 1, 1 ppc, 0.031
-   * (USL's loss at one particle per cell on the stretched grid, docs/verification.md). */
+   * own and not counted.
+   * USL at one particle per cell with softening particles at 90 deg (fig6.ini, the
+   * paper's method; inclined, its one field couples the cut parts, docs/methods.md):
+   * the crack's velocity jump lies inside one cell's stencil, where one particle a side
+   * cannot carry it; the nodes there hold what the particles do not, and each step loses
+   * it, half in the projection (L_flip), half in the integration (L_scheme).  The steps
+   * grow as 1 / h, and the loss with them: of W_ext, 0.0008, 0.0027, 0.0115, 0.0206 by
+   * separation at h 8, 4, 2, 1, and after it the grip pulls the loose part through those
+   * nodes (under 2 % of the peak: load_after_sep) at the same cost: 0.0009, 0.0042,
+   * 0.018, 0.031 at the end (0.2 past separation).  At 4 and 9 ppc at most 0.0008.
+   * Known-limit to 0.05, above h 1's 0.031: it grows as h falls, so a finer grid, a
+   * longer run past separation or a lossier step can pass that bound and fail. */
   if (isfinite(c->W_scheme) && c->W_ext_final > 0.0) {
     k = add_check(c, "scheme_loss", c->W_scheme / c->W_ext_final, 0.0, 0);
     k->tol = VER_ENERGY_TOL;
+    const int usl1 = a90 && q->ppc1 && c->vs.sc.scheme == MPM_SCHEME_USL && c->vs.sc.path != MPM_PATH_IFACE;
+    if (usl1)
+      known(k, 0.0, 0.05);
     snprintf(k->note, sizeof k->note, "the discretisation's own loss at the end (L_bc + L_flip + L_scheme = %.4g) "
-             "over W_ext", c->W_scheme);
+             "over W_ext%s", c->W_scheme, usl1 ? "; USL, 1 ppc, a band: the crack's jump inside one cell's stencil "
+             "is lost each step, growing as h falls: known-limit to 0.05" : "");
   }
 
   /* Inclined scenes: after the band has failed, the single-valued velocity of a cell
@@ -340,7 +360,7 @@ static void check_band(ver_case *c, const case_class *q)
   if (sc->solver == MPM_SOLVER_STATIC && snap)
     return; /* P(delta) has two values on a snapback: curve_path judges the path */
   k = add_check(c, "curve_l2", c->curve_l2, 0.0, 0);
-  k->tol = ppc1 ? 0.04 : 0.03;
+  k->tol = ppc1 ? VER_CURVE_TOL_PPC1 : VER_CURVE_TOL;
   if (!a90 || lep || snap)
     known(k, 0.0, 0.35);
   snprintf(k->note, sizeof k->note, "RMS of P - P_ana(delta) / Pmax over rows up to lambda = %g or the peak "
@@ -353,7 +373,7 @@ static void check_band(ver_case *c, const case_class *q)
    * quasi-static curve itself is 0.0157 from it at the paper's speed 0.001. */
   if (sc->path == MPM_PATH_IFACE && isfinite(c->curve_wave) && sc->solver != MPM_SOLVER_STATIC) {
     k = add_check(c, "curve_wave", c->curve_wave, 0.0, 0);
-    k->tol = 0.01;
+    k->tol = VER_WAVE_TOL;
     snprintf(k->note, sizeof k->note, "RMS of P - P_wave(delta) / Pmax, the exact 1-D solution at grip speed %g "
              "(the plane at x %g), over the same rows", sc->speed, sc->imp_x);
   }
@@ -419,7 +439,7 @@ void ver_policy_case(ver_case *c)
                         !a90 && sc->fields == MPM_FIELDS_TWO &&
                             (sc->le_mode == MPM_LE_STAIRCASE || sc->le_mode == MPM_LE_ROW ||
                              sc->le_mode == MPM_LE_ZONE),
-                        sc->le_mode == MPM_LE_ROW || sc->le_mode == MPM_LE_ZONE};
+                        sc->le_mode == MPM_LE_ROW || sc->le_mode == MPM_LE_ZONE, sc->path == MPM_PATH_IFACE};
   c->nchk = 0;
   if (c->refused[0]) {
     /* a case the static solver refuses by design (docs/static.md, "What it refuses") is

@@ -118,7 +118,7 @@ void ver_report_measure(const rep_ctx *r, rep_case *c)
       c->curve_err = c->max_dev = NAN;
     const ana_wave_params wp = ver_report_wave_params(c);
     c->curve_wave = ver_curve_err_wave(b, wp.speed, wp.rho, wp.xg, wp.thr, d, P, (size_t)n, c->cmp_end, NULL,
-                                       &c->wave_peak);
+                                       &c->wave_peak, NULL);
     c->k_soft = ver_softening_slope(d, P, (size_t)n, VER_SOFT_HI, VER_SOFT_LO);
     c->drop_width = ver_drop_width(d, P, (size_t)n);
   }

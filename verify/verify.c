@@ -151,6 +151,7 @@ static int check_all(const ver_verify_opts *o, ver_case *cs, int n, ver_cross *x
   *nx = ver_policy_cross(cs, n, x);
   *nx += ver_spec_cross(cs, n, x + *nx, VER_MAXCROSS - *nx);
   *nx += ver_mms_cross(x + *nx, VER_MAXCROSS - *nx);
+  ver_policy_cross_room(x, nx);
   for (int i = 0; i < *nx; i++) {
     char id[160];
     snprintf(id, sizeof id, "%s/%s%g", x[i].scene, strcmp(x[i].over, "h") ? "h" : "ppc", x[i].fixed);
