@@ -372,11 +372,12 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
   s->nbc = spec->bcs(s, &l, s->bc);
   /* the explicit step holds a node's one velocity: a condition on one side of the line
    * (the split beams' node on the line at an arm's end) is left out, the node is free */
-  for (int i = 0, j = 0; sc->solver == MPM_SOLVER_EXPLICIT && i < s->nbc; i++) {
-    if (s->bc[i].side == MPM_BC_ANY)
-      s->bc[j++] = s->bc[i];
-    if (i == s->nbc - 1)
-      s->nbc = j;
+  if (sc->solver == MPM_SOLVER_EXPLICIT) {
+    int j = 0;
+    for (int i = 0; i < s->nbc; i++)
+      if (s->bc[i].side == MPM_BC_ANY)
+        s->bc[j++] = s->bc[i];
+    s->nbc = j;
   }
   s->crack_tip = spec->precrack ? sc->a0 : NAN;
   s->gap_min = INFINITY;

@@ -41,7 +41,6 @@ int ver_held_judge(const char *dir, const ver_scene *vs, ver_check *chk, int max
 {
   const mpm_scene *sc = &vs->sc;
   static const char *const lnames[] = {"delta", "P_grip"};
-  static const char *const enames[] = {"W_ext", "SE", "W_coh"};
   ver_table ld = {0}, en = {0};
   char path[1200];
   err[0] = '\0';
@@ -52,7 +51,7 @@ int ver_held_judge(const char *dir, const ver_scene *vs, ver_check *chk, int max
     return 2;
   }
   snprintf(path, sizeof path, "%s/energy.csv", dir);
-  if (ver_table_read(path, enames, 3, 3, &en, err, errlen) || en.n != ld.n) {
+  if (ver_table_read(path, ver_spec_enames, VER_SPEC_NEN, 3, &en, err, errlen) || en.n != ld.n) {
     if (!err[0])
       snprintf(err, errlen, "%s: its rows are not load.csv's", path);
     ver_table_free(&ld);
@@ -75,19 +74,14 @@ int ver_held_judge(const char *dir, const ver_scene *vs, ver_check *chk, int max
     snprintf(c->note, sizeof c->note, "%s%.200s", isnan(K) ? "skipped: " : "",
              isnan(K) ? why : "P / delta on the elastic line against FreeFEM's held bar (data/fe)");
   }
-  double led = 0.0, wmax = 0.0;
-  for (long i = 0; i < en.n; i++) {
-    wmax = fmax(wmax, fabs(en.col[0][i]));
-    led = fmax(led, fabs(en.col[0][i] - en.col[1][i] - en.col[2][i]));
-  }
   if (n < max) {
     ver_check *c = &chk[n++];
     memset(c, 0, sizeof *c);
     c->name = "ledger";
-    c->measured = c->error = led / wmax;
+    c->measured = c->error = ver_spec_ledger(&en);
     c->tol = 1e-4;
     c->verdict = c->error <= c->tol ? VER_PASS : VER_FAIL;
-    snprintf(c->note, sizeof c->note, "max |W_ext - SE - W_coh| over max W_ext");
+    snprintf(c->note, sizeof c->note, "max |W_ext - KE - SE - W_coh - booked| over max W_ext");
   }
   ver_table_free(&ld);
   ver_table_free(&en);

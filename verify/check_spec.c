@@ -221,12 +221,43 @@ typedef struct {
   int dcb;
   double t, h, Gc;
   long n, ipk;
-  const double *d, *P, *tip, *W, *SE, *Wc, *D;
-  const double *booked[8]; /* KE and the ledger's booked losses, each NULL if absent */
+  const double *d, *P, *tip, *D;
+  const ver_table *en;     /* energy.csv's columns (ver_spec_enames)                     */
   ver_fe_table fe;
   int have_fe;
   char fe_why[600];
 } spec_run;
+
+void ver_spec_params(const mpm_scene *sc, ana_spec_params *p)
+{
+  ana_spec_default(sc->specimen == MPM_SPEC_ELS ? ANA_SPEC_ELS : ANA_SPEC_DCB, p);
+  p->L = sc->L;
+  p->H = sc->H;
+  p->a0 = sc->a0;
+  p->E = sc->E;
+  p->nu = sc->nu;
+  p->snf = sc->snf;
+  p->stf = sc->stf;
+  p->U0 = sc->U0;
+  p->s0 = sc->s0;
+  p->q = sc->q;
+}
+
+double ver_spec_ledger(const ver_table *en)
+{
+  double led = 0.0, wmax = 0.0;
+  for (long i = 0; i < en->n; i++) {
+    double b = 0.0; /* KE and the booked losses where the file has them (an explicit run's) */
+    for (int c = 3; c < VER_SPEC_NEN - 1; c++)
+      b += en->col[c] ? en->col[c][i] : 0.0;
+    wmax = fmax(wmax, fabs(en->col[0][i]));
+    led = fmax(led, fabs(en->col[0][i] - en->col[1][i] - en->col[2][i] - b));
+  }
+  return led / wmax;
+}
+
+const char *const ver_spec_enames[VER_SPEC_NEN] = {"W_ext", "SE", "W_coh", "KE", "L_bc", "L_flip", "L_scheme",
+                                                   "W_head", "L_contact", "L_debris", "L_damp", "D"};
 
 /* The peak against the cohesive beam (DCB): a Timoshenko arm on the law and the
  * foundation.  delta at the peak is ill-conditioned where the top is flat: its
@@ -236,17 +267,7 @@ static void judge_peak(const spec_run *r, verdicts *v)
 {
   const mpm_scene *sc = r->sc;
   ana_spec_params pp;
-  ana_spec_default(ANA_SPEC_DCB, &pp);
-  pp.L = sc->L;
-  pp.H = sc->H;
-  pp.a0 = sc->a0;
-  pp.E = sc->E;
-  pp.nu = sc->nu;
-  pp.snf = sc->snf;
-  pp.stf = sc->stf;
-  pp.U0 = sc->U0;
-  pp.s0 = sc->s0;
-  pp.q = sc->q;
+  ver_spec_params(sc, &pp);
   ana_spec sp;
   ana_czm_path cz = {0};
   const ana_czm_opts o = {.beam = ANA_CZM_TIMOSHENKO, .cells = 768, .tip_end = 0.5 * (sc->a0 + sc->L)};
@@ -335,15 +356,8 @@ static void judge_growth(const spec_run *r, verdicts *v)
   if (two)
     snprintf(why, sizeof why, "dD / d crack_tip from x = %g to %g", tip[j0], tip[j1]);
   put(v, "D_growth", k, sc->U0, k / sc->U0 - 1.0, two ? 0.01 + 2.0 * r->h / (tip[j1] - tip[j0]) : 0.01, why);
-  double led = 0.0, wmax = 0.0;
-  for (long i = 0; i < r->n; i++) {
-    wmax = fmax(wmax, fabs(r->W[i]));
-    double b = 0.0;
-    for (int c = 0; c < 8; c++)
-      b += r->booked[c] ? r->booked[c][i] : 0.0;
-    led = fmax(led, fabs(r->W[i] - r->SE[i] - r->Wc[i] - b));
-  }
-  put(v, "ledger", led / wmax, 0.0, led / wmax, 1e-4, "max |W_ext - KE - SE - W_coh - booked| over max W_ext");
+  const double led = ver_spec_ledger(r->en);
+  put(v, "ledger", led, 0.0, led, 1e-4, "max |W_ext - KE - SE - W_coh - booked| over max W_ext");
 }
 
 /* The ELS: how far delta falls back after the peak (the largest fall over delta there);
@@ -379,8 +393,6 @@ int ver_spec_judge(const char *dir, const ver_scene *vs, ver_check *chk, int max
   r.Gc = sc->q * sc->U0 / (sc->q + 1.0);
   char path[1200];
   static const char *const lnames[] = {"delta", "P_grip", "crack_tip"};
-  static const char *const enames[] = {"W_ext", "SE", "W_coh", "D", "KE", "L_bc", "L_flip", "L_scheme", "W_head",
-                                       "L_contact", "L_debris", "L_damp"};
   ver_table ld = {0}, en = {0};
   err[0] = '\0';
   snprintf(path, sizeof path, "%s/load.csv", dir);
@@ -390,7 +402,8 @@ int ver_spec_judge(const char *dir, const ver_scene *vs, ver_check *chk, int max
     return 2;
   }
   snprintf(path, sizeof path, "%s/energy.csv", dir);
-  if (ver_table_read(path, enames, 12, 4, &en, err, errlen) || en.n != ld.n || ld.n < 2) {
+  if (ver_table_read(path, ver_spec_enames, VER_SPEC_NEN, 3, &en, err, errlen) || !en.col[VER_SPEC_NEN - 1] ||
+      en.n != ld.n || ld.n < 2) {
     if (!err[0])
       snprintf(err, errlen, "%s: its rows are not load.csv's", path);
     ver_table_free(&ld);
@@ -398,9 +411,7 @@ int ver_spec_judge(const char *dir, const ver_scene *vs, ver_check *chk, int max
     return 2;
   }
   r.d = ld.col[0], r.P = ld.col[1], r.tip = ld.col[2], r.n = ld.n;
-  r.W = en.col[0], r.SE = en.col[1], r.Wc = en.col[2], r.D = en.col[3];
-  for (int c = 4; c < 12; c++) /* kinetic energy and the booked losses: an explicit run's */
-    r.booked[c - 4] = en.col[c];
+  r.en = &en, r.D = en.col[VER_SPEC_NEN - 1];
   for (long i = 1; i < r.n; i++)
     if (r.P[i] > r.P[r.ipk])
       r.ipk = i;

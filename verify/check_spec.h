@@ -4,7 +4,9 @@
 #ifndef DELAM_VER_CHECK_SPEC_H
 #define DELAM_VER_CHECK_SPEC_H
 
+#include "ana_spec.h"
 #include "check.h"
+#include "foreign.h"
 #include "sweep.h"
 #include "scene.h"
 
@@ -45,6 +47,14 @@ void ver_spec_case(const char *dir, ver_case *c);
  * at most room into x, returns how many. */
 int ver_spec_cross(const ver_case *cs, int n, ver_cross *x, int room);
 
+/* energy.csv's columns the specimens' checks read: W_ext, SE, W_coh, then KE and the
+ * booked losses (absent in another code's file: 0), D last; the ledger's largest
+ * |W_ext - SE - W_coh - KE - booked| over the largest W_ext of such a table. */
+#define VER_SPEC_NEN 12
+extern const char *const ver_spec_enames[VER_SPEC_NEN];
+double ver_spec_ledger(const ver_table *en);
+/* The analytic references' inputs (analytic/ana_spec.h) from a split beam's scene. */
+void ver_spec_params(const mpm_scene *sc, ana_spec_params *p);
 /* The bar held by wedge grips (check_held.c): its stiffness against data/fe's and the
  * ledger, as ver_spec_judge. */
 int ver_held_judge(const char *dir, const ver_scene *vs, ver_check *chk, int max, int *n, char *err, size_t errlen);

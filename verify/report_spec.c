@@ -100,17 +100,7 @@ static int spec_ref_init(const rep_ctx *r, int s, spec_ref *f)
   const mpm_scene *sc = &f->vs.sc;
   f->have_fe = ver_spec_fe_read(sc, &f->fe, f->why, sizeof f->why) == 0;
   ana_spec_params p;
-  ana_spec_default(s ? ANA_SPEC_ELS : ANA_SPEC_DCB, &p);
-  p.L = sc->L;
-  p.H = sc->H;
-  p.a0 = sc->a0;
-  p.E = sc->E;
-  p.nu = sc->nu;
-  p.snf = sc->snf;
-  p.stf = sc->stf;
-  p.U0 = sc->U0;
-  p.s0 = sc->s0;
-  p.q = sc->q;
+  ver_spec_params(sc, &p);
   f->have_sp = ana_spec_init(&p, &f->sp, NULL, 0) == ANA_OK;
   f->Gc = sc->q * sc->U0 / (sc->q + 1.0);
   f->t = 0.5 * sc->H;
