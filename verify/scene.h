@@ -103,10 +103,17 @@ double ver_scene_rate_ratio(const mpm_scene *sc);
  * gyration).  For the default bar, mode 1, the correction is +0.07 %. */
 double ver_scene_vib_period(const mpm_scene *sc);
 /* Case id: scene, h and ppc, then every override but grid.h, grid.ppc and a time.dt
- * that only keeps the file's Courant number, e.g. "fig6-h4-ppc4" or
- * "fig6-h8-ppc1-material.E=2048" (the last value of each key; numbers in their shortest
- * exact form).  Two runs of different scenes never get the same id. */
+ * that only keeps the file's Courant number, each as ver_scene_id_part writes it, e.g.
+ * "fig6-h4-ppc4", "fig6-h8-ppc1-E2048", "fig6-h8-ppc4-static" (the last value of each
+ * key).  Two runs of different scenes never get the same id. */
 void ver_scene_case_id(const ver_scene *vs, char *buf, size_t len);
+/* One override "section.key=value" as a part of a folder name a person can type: the
+ * key and its number without exponent ("E2048", "separation0.98", "a0_100" after a
+ * digit), the word alone for a type or preset ("static", "els", "paper"), else the key
+ * and its word ("scheme_musl", "Le_zone"). */
+void ver_scene_id_part(const char *set, char *buf, size_t len);
+/* v as ver_scene_fmt_num writes it, without exponent (a folder name). */
+void ver_scene_id_num(double v, char *buf, size_t len);
 /* v in the shortest %g form that reads back as v exactly (at most 17 digits). */
 void ver_scene_fmt_num(double v, char *buf, size_t len);
 /* Scene, h and ppc only, e.g. "fig6-h4-ppc4" (verify adds its own variant names). */

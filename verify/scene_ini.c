@@ -14,7 +14,9 @@
 
 void ver_scene_base_id(const ver_scene *vs, char *buf, size_t len)
 {
-  snprintf(buf, len, "%s-h%g-ppc%d", vs->name, vs->sc.h, vs->sc.ppc);
+  char h[64];
+  ver_scene_id_num(vs->sc.h, h, sizeof h);
+  snprintf(buf, len, "%s-h%s-ppc%d", vs->name, h, vs->sc.ppc);
 }
 
 void ver_scene_fmt_num(double v, char *buf, size_t len)
@@ -35,6 +37,41 @@ void ver_scene_fmt_num(double v, char *buf, size_t len)
   }
 }
 
+void ver_scene_id_num(double v, char *buf, size_t len)
+{
+  ver_scene_fmt_num(v, buf, len);
+  if (!strchr(buf, 'e'))
+    return;
+  char t[64];
+  for (int dec = 0; dec <= 40; dec++) { /* a folder name has no exponent: 0.00001, not 1e-05 */
+    snprintf(t, sizeof t, "%.*f", dec, v);
+    if (strtod(t, NULL) == v || dec == 40) {
+      snprintf(buf, len, "%s", t);
+      return;
+    }
+  }
+}
+
+void ver_scene_id_part(const char *set, char *buf, size_t len)
+{
+  const char *eq = strchr(set, '='), *dot = strchr(set, '.');
+  const char *key = dot && dot < eq ? dot + 1 : set;
+  const int klen = (int)(eq - key);
+  char val[64];
+  double v;
+  if (ver_scene_key_num(eq + 1, &v) == 0) {
+    ver_scene_id_num(v, val, sizeof val);
+    const int digit_end = klen > 0 && key[klen - 1] >= '0' && key[klen - 1] <= '9';
+    snprintf(buf, len, "%.*s%s%s", klen, key, digit_end ? "_" : "", val); /* E2048, a0_100 */
+  } else if ((klen == 4 && !strncmp(key, "type", 4)) || (klen == 6 && !strncmp(key, "preset", 6)))
+    snprintf(buf, len, "%.60s", eq + 1); /* static, els, paper: the word alone */
+  else
+    snprintf(buf, len, "%.*s_%.60s", klen, key, eq + 1); /* scheme_musl, Le_zone */
+  for (char *c = buf; *c; c++)
+    if (*c == '/' || *c == ' ' || *c == ',' || *c == '=')
+      *c = '_'; /* a folder name */
+}
+
 void ver_scene_case_id(const ver_scene *vs, char *buf, size_t len)
 {
   ver_scene_base_id(vs, buf, len);
@@ -50,19 +87,10 @@ void ver_scene_case_id(const ver_scene *vs, char *buf, size_t len)
     if (!strncmp(o, "time.dt=", 8) && vs->file_h > 0 &&
         fabs(vs->sc.dt - vs->file_dt * vs->sc.h / vs->file_h) <= 1e-12 * vs->sc.dt)
       continue; /* the dt --h scales to: no choice of the user's */
-    char val[64];
-    double v;
-    if (ver_scene_key_num(eq + 1, &v) == 0)
-      ver_scene_fmt_num(v, val, sizeof val);
-    else
-      snprintf(val, sizeof val, "%s", eq + 1);
-    for (char *c = val; *c; c++)
-      if (*c == '/' || *c == ' ' || *c == ',')
-        *c = '_'; /* a folder name */
-    if (!strncmp(o, "method.preset=", 14)) /* --method NAME */
-      n += n < len ? (size_t)snprintf(buf + n, len - n, "-method=%s", val) : 0;
-    else if (n < len)
-      n += (size_t)snprintf(buf + n, len - n, "-%.*s=%s", (int)klen, o, val);
+    char part[128];
+    ver_scene_id_part(o, part, sizeof part);
+    if (n < len)
+      n += (size_t)snprintf(buf + n, len - n, "-%s", part);
   }
 }
 

@@ -31,7 +31,7 @@ for f in load.csv energy.csv; do
   [ -z "$why" ] && ! cmp -s paper/$f sets/$f && why="$f differs"
 done
 [ -z "$why" ] && ! grep -q '"preset":[[:space:]]*"paper"' paper/summary.json && why="summary.json does not name the preset"
-[ -z "$why" ] && ! grep -q '"case":[[:space:]]*"fig7-h8-ppc1-method=paper' paper/summary.json && why="the case id does not name it"
+[ -z "$why" ] && ! grep -q '"case":[[:space:]]*"fig7-h8-ppc1-paper' paper/summary.json && why="the case id does not name it"
 result paper-is-13 "$why"
 
 why=""
