@@ -162,29 +162,43 @@ static const char *type_name(ktype t)
   }
 }
 
+/* One row of the key table; held: the presets' knobs, without the required column. */
+static void key_row(FILE *f, const keydef *k, int held)
+{
+  char def[64];
+  if (k->required)
+    snprintf(def, sizeof def, "-");
+  else if (ver_scene_enum_type(k->type))
+    snprintf(def, sizeof def, "%s", ver_scene_enum_word(k->type, (int)k->def));
+  else if (k->type == K_LIST)
+    snprintf(def, sizeof def, "none");
+  else if (k->def < 0)
+    snprintf(def, sizeof def, "derived");
+  else
+    snprintf(def, sizeof def, "%g", k->def);
+  if (held) {
+    fprintf(f, "| %s.%s | %s | %s | %s |\n", k->section, k->key, type_name(k->type), k->allowed, def);
+    return;
+  }
+  fprintf(f, "| %s | %s | %s | %s | %s | %s |\n", k->section, k->key, type_name(k->type),
+          k->required == 1   ? "yes"
+          : k->required == 2 ? "when decohesion.model > 0"
+          : k->required == 3 ? "unless vibration.mode > 0"
+                             : "no",
+          k->allowed, def);
+}
+
 void ver_scene_keys_markdown(FILE *f)
 {
   fprintf(f, "| section | key | type | required | allowed | default |\n|---|---|---|---|---|---|\n");
-  for (int i = 0; i < ver_scene_nkeys; i++) {
-    const keydef *k = &ver_scene_keys[i];
-    char def[64];
-    if (k->required)
-      snprintf(def, sizeof def, "-");
-    else if (ver_scene_enum_type(k->type))
-      snprintf(def, sizeof def, "%s", ver_scene_enum_word(k->type, (int)k->def));
-    else if (k->type == K_LIST)
-      snprintf(def, sizeof def, "none");
-    else if (k->def < 0)
-      snprintf(def, sizeof def, "derived");
-    else
-      snprintf(def, sizeof def, "%g", k->def);
-    fprintf(f, "| %s | %s | %s | %s | %s | %s |\n", k->section, k->key, type_name(k->type),
-            k->required == 1   ? "yes"
-            : k->required == 2 ? "when decohesion.model > 0"
-            : k->required == 3 ? "unless vibration.mode > 0"
-                               : "no",
-            k->allowed, def);
-  }
+  for (int i = 0; i < ver_scene_nkeys; i++)
+    if (!ver_method_held(i))
+      key_row(f, &ver_scene_keys[i], 0);
+  fprintf(f, "\nHeld by the presets (advanced: a scene file or --set may still set them):\n\n"
+             "| key | type | allowed | default |\n|---|---|---|---|\n");
+  for (int i = 0; i < ver_scene_nkeys; i++)
+    if (ver_method_held(i))
+      key_row(f, &ver_scene_keys[i], 1);
 }
 
 const char *ver_scene_word(const ver_scene *vs, const char *section, const char *key)
