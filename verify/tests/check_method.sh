@@ -62,7 +62,7 @@ why=""
 "$delam" verify --quick --method band --scenes "$src/data/scenes" --list >list.txt 2>err.txt || why="exit $?: $(head -1 err.txt)"
 total=$(wc -l <list.txt)
 # a case the solver refuses is listed as a comment, "# id: reason"; its id names the preset too
-with=$(( $(grep -c -- '--set method.preset=band .*--out [^ ]*-method=band' list.txt) + $(grep -c '^# [^ ]*-method=band[^ ]*: ' list.txt) ))
+with=$(( $(grep -c -- '--set method.preset=band .*--out [^ ]*-band' list.txt) + $(grep -c '^# [^ ]*-band[^ ]*: ' list.txt) ))
 [ -z "$why" ] && { [ "$total" -gt 0 ] && [ "$with" = "$total" ]; } || why="$why; $with of $total cases run the preset"
 result verify-method "$why"
 
