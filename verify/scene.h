@@ -115,7 +115,8 @@ void ver_scene_case_id(const ver_scene *vs, char *buf, size_t len);
 void ver_scene_id_part(const char *set, char *buf, size_t len);
 /* v as ver_scene_fmt_num writes it, without exponent (a folder name). */
 void ver_scene_id_num(double v, char *buf, size_t len);
-/* v in the shortest %g form that reads back as v exactly (at most 17 digits). */
+/* v in the shortest form that reads back as v exactly (at most 17 digits), without an
+ * exponent from 1e-9 to 1e15. */
 void ver_scene_fmt_num(double v, char *buf, size_t len);
 /* Scene, h and ppc only, e.g. "fig6-h4-ppc4" (verify adds its own variant names). */
 void ver_scene_base_id(const ver_scene *vs, char *buf, size_t len);

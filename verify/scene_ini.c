@@ -26,11 +26,12 @@ void ver_scene_fmt_num(double v, char *buf, size_t len)
     if (strtod(buf, NULL) == v)
       break;
   }
-  /* as a person writes it: no exponent between 1e-4 and 1e15 (90, not 9e+01) */
+  /* as a person writes it: no exponent between 1e-9 and 1e15 (90, not 9e+01; 0.00001,
+   * not 1e-05) */
   const double a = fabs(v);
-  if (!strchr(buf, 'e') || !(a >= 1e-4 && a < 1e15))
+  if (!strchr(buf, 'e') || !(a >= 1e-9 && a < 1e15))
     return;
-  for (int dec = 0; dec <= 20; dec++) {
+  for (int dec = 0; dec <= 26; dec++) {
     snprintf(buf, len, "%.*f", dec, v);
     if (strtod(buf, NULL) == v)
       return;
