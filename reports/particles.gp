@@ -6,8 +6,8 @@ set multiplot layout rows,cols title ttl
 set size ratio -1
 if (exists("cbmax")) { set cbrange [0:cbmax] } else { set cbrange [0:1] }
 set cblabel "{/Symbol l}"
-set xlabel "x (dimensionless units, the paper's)"
-set ylabel "y (dimensionless units, the paper's)"
+set xlabel "x (x and y in dimensionless units, the paper's)"
+set ylabel "y"
 unset key
 unset grid
 if (!exists("x0")) { x0 = -8; x1 = 196; y0 = -4; y1 = 36 }

@@ -4,8 +4,8 @@
 set size ratio -1
 set cbrange [0:1]
 set cblabel "{/Symbol l}"
-set xlabel "x (dimensionless units, the paper's)"
-set ylabel "y (dimensionless units, the paper's)"
+set xlabel "x (x and y in dimensionless units, the paper's)"
+set ylabel "y"
 unset key
 unset grid
 set xrange [-6:198]
