@@ -194,6 +194,7 @@ static void take_step(run_state *r, ver_summary *u, double delta)
   w->Pg = r->acc_g / r->acc_n;
   w->Pf = r->acc_f / r->acc_n;
   w->tip = in.crack_tip;
+  w->zone = in.zone_end;
   r->acc_g = r->acc_f = 0.0;
   r->acc_n = 0;
   mpm_sim_energy(s, &w->e);

@@ -213,12 +213,12 @@ int ver_run_write_rows(const ver_run_row *r, long n, const char *dir, char *bad)
   FILE *f = ver_run_open_tmp(dir, "load.csv", tmp, sizeof tmp, bad);
   if (!f)
     return -1;
-  /* crack_tip: the specimens with a pre-crack (docs/specimens.md) */
+  /* crack_tip, zone_end: the specimens with a pre-crack (docs/specimens.md) */
   const int tip = n > 0 && isfinite(r[0].tip);
-  fprintf(f, "# delam load.csv schema %d\nt,delta,P_grip,P_fixed%s\n", VER_SCHEMA_LOAD, tip ? ",crack_tip" : "");
+  fprintf(f, "# delam load.csv schema %d\nt,delta,P_grip,P_fixed%s\n", VER_SCHEMA_LOAD, tip ? ",crack_tip,zone_end" : "");
   for (long i = 0; i < n; i++)
     if (tip)
-      fprintf(f, "%.9g,%.9g,%.9g,%.9g,%.9g\n", r[i].t, r[i].delta, r[i].Pg, r[i].Pf, r[i].tip);
+      fprintf(f, "%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", r[i].t, r[i].delta, r[i].Pg, r[i].Pf, r[i].tip, r[i].zone);
     else
       fprintf(f, "%.9g,%.9g,%.9g,%.9g\n", r[i].t, r[i].delta, r[i].Pg, r[i].Pf);
   if (ver_run_commit(f, tmp, bad))
