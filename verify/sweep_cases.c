@@ -156,7 +156,7 @@ int ver_case_init(ver_case *c, const char *path, const char *scene, const char *
     return 2;
   char base[100];
   ver_scene_base_id(&c->vs, base, sizeof base);
-  snprintf(c->id, sizeof c->id, "%s%s%s%s%s", base, method ? "-method=" : "", method ? method : "",
+  snprintf(c->id, sizeof c->id, "%s%s%s%s%s", base, method ? "-" : "", method ? method : "",
            v.suffix[0] ? "-" : "", v.suffix);
   const mpm_scene *sc = &c->vs.sc;
   static_refusal(sc, c->refused, sizeof c->refused);
