@@ -1,43 +1,17 @@
 /*
- * mpm_decohesion.c - the decohesion constitutive update at one particle
- * (Schreyer, Sulsky and Zhou 2002, secs. 3-4; docs/model.md secs. 3-4).
+ * mpm_decohesion.c - the decohesion update at one particle and its algorithmic tangent
+ * (Schreyer, Sulsky and Zhou 2002, secs. 3-4; docs/model.md secs. 3-4, choices sec. 6),
+ * in the n-t frame of the failure plane (plane-stress elasticity keeps its form there).
  *
- *   effective traction  se = sqrt(<sn>^2/snf^2 + st^2/stf^2)          eq. 23
- *   decohesion function F  = se - (1 - lambda^q)                        eq. 23
- *   flow (Model 1)      m* = (s0/se)(<sn>/snf^2 n + st/stf^2 t)         eqs. 19, 24, 42
- *   flow (Model 2)      (m* . n) n                                       eq. 26
+ *   effective traction  se = sqrt(<sn>^2/snf^2 + st^2/stf^2), F = se - (1 - lambda^q)  eq. 23
+ *   flow                m* = (s0/se)(<sn>/snf^2 n + st/stf^2 t); Model 2 (m* . n) n  eqs. 19, 24, 26
  *   weak compatibility  de_d = (d ud / Le) sym(n (x) m)                  eqs. 39-41
- *   first-order step    d lambda = -c / 2b                               eqs. 46, 49
- *   separation          eqs. 56-58
+ *   first-order step    d lambda = -c / 2b, then Newton (or Brent)      eqs. 46, 49
+ *   separation          eqs. 56-58, d ud_t = 2 Le de_nt; lambda grows on with |d ud|
  *
- * The work is done in the n-t frame of the failure plane, where plane-stress
- * elasticity keeps its form (isotropy):  s_nn = E1 e_nn + E2 e_tt, s_tt = E2 e_nn + E1 e_tt,
- * s_nt = 2G e_nt.
- *
- * Decisions (docs/model.md sec. 6; see README):
- *  - <sn> (Macaulay bracket) in se and m*: normal compression neither starts nor
- *    drives decohesion.  The paper writes sn; its scenes are all in tension, where
- *    the two agree.
- *  - The consistency condition is solved to |F| < MPM_DCOH_FTOL with the flow
- *    direction frozen at the trial state.  The first iterate is the paper's
- *    first-order step (eq. 46); Newton then continues.  Where eq. 46 cannot start
- *    (q < 1 at lambda = 0, where lambda^(q-1) is infinite, or 2b >= 0) the root is
- *    bracketed by doubling and refined with GSL's Brent solver.  No root in
- *    (0, 1 - lambda] means traction reversal (no solution): separation.
- *  - Eq. 58: d ud_t = 2 Le de_nt (tensor shear strain; the compatible value).
- *  - After separation lambda keeps growing with |d ud| / ubar0 (paper); the
- *    dissipation counts min(lambda, 1) (mpm_sim_energy).
- *  - A separated particle in normal compression first closes its opening
- *    (d ud_n >= -ud_n), then carries the compression; shear is always released.
- *  - decohesion.reversed_shear = closing (not the paper's): shear against the
- *    particle's accumulated slip is elastic, the <sn> of the shear (see the update).
- *
- * mpm_dcoh_tangent: the algorithmic tangent d sigma / d de of this update, for an implicit
- * (Newton) solver.  It runs the same code (dcoh_step) and differentiates the converged
- * step: the implicit function theorem on phi(dl; s_tr) = 0, with the trial dependence of
- * the frozen flow direction and the Macaulay bracket.  Non-smooth where the path switches
- * (elastic/softening at F = 0, softening/separation, contact at shut, sn_tr or sn = 0,
- * closing at s_nt upt = 0): there it gives the side the update took.
+ * <sn>: compression neither starts nor drives decohesion.  The flow is frozen at the
+ * trial state; no root in (0, 1 - lambda] is separation, where compression closes the
+ * opening first.  mpm_dcoh_tangent differentiates the converged step (phi(dl; s_tr) = 0).
  */
 #include <assert.h>
 #include <math.h>

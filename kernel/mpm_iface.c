@@ -1,61 +1,17 @@
 /*
  * mpm_iface.c - the crack as a cohesive interface between two velocity fields
- * (decohesion.path = interface; docs/findings.md derives and measures it).
- *
- * A band of softening particles on an inclined line dissipates more than U0 per unit
- * area and carries load after it separates (docs/findings.md): the cell staircase makes
- * more material strain with the opening than the line holds.  Here no particle softens.
- * The paper's decohesion law (Model 1 with q = 1, eqs. 8-10) acts on the line itself:
- *  - the two fields (mpm_fields.c) exist from the first step.  Every node within
- *    MPM_IFACE_REACH h (|sin a| + |cos a|) of the line at alpha through the flaw is split,
- *    and a particle's side is fixed by its reference centre (mpm_iface_side; a centre
- *    on the line takes the first side, so at alpha 90 the crack runs along the edge of
- *    the flaw's particle column);
- *  - the line is cut into segments of MPM_IFACE_SEG h.  A node belongs to the segment of
- *    its projection on the line and carries An, the line's length weighted by the node's
- *    uGIMP weight for a particle centred on it, so a segment's nodes share its length;
- *  - STUCK: until a segment's mean traction on the line, from the particles' stresses
- *    through the nodes it weighs (onset()), reaches se = sqrt(<tn>^2 / snf^2 +
- *    tt^2 / stf^2) >= 1 (eq. 8 at lambda = 0), both fields at its nodes take their centre-of-mass velocity (the
- *    impulse J = m1 (vc - v1) on field 1, -J on field 2) and, under MUSL, share v':
- *    the bar is one body there;
- *  - SOFT: the segment's mean stick traction, sum J / (dt A), is held to the failure
- *    surface se <= 1 - lambda (eq. 8, q = 1): every node's impulse is scaled by the same
- *    factor (tension and shear; compression is never capped), and a segment whose mean
- *    traction is inside the surface sticks whole this step.  (Holding each node's own
- *    traction J / (dt An) to the surface released the bar at 1 ppc: the stick traction
- *    scatters from node to node there, every node above the surface was cut at once, and
- *    the load fell from the peak to a quarter within half a wave transit: fig7 h 4,
- *    k_soft -5346 against the analytic -563; docs/findings.md.)
- *    decohesion.share = line instead gives each node the segment's traction times its
- *    length of line An (of the length at the nodes holding both fields), capped at its
- *    stick impulse: with a line along a node column (alpha 90, the grid following the
- *    bar) the scaled stick impulses leave the traction's spread among a segment's rows
- *    free, and a mode grew in it (iface90 h 1, 4 ppc: L_flip 2.5; docs/findings.md).
- *    lambda grows by the traction's work on the opening,
- *    dW per unit area (the impulse times the fields' relative velocity v'2 - v'1,
- *    MUSL's re-projected velocities that the particles' strain takes, summed over the
- *    segment's nodes; mpm_iface_musl): Model 1's power s . d up = U0 se dlambda with
- *    se = 1 - lambda on the surface, integrated in closed form, lambda = 1 - sqrt(1 -
- *    2 W / U0) of the work W taken so far, so a segment that opens to lambda = 1 has
- *    taken UF = U0 / 2 per unit area whatever the mode.
- *    (lambda from an effective opening, sqrt((snf un)^2 + (stf ut)^2) / U0, counts the
- *    slip that Mode I's inclined opening makes ten times over with stf = 10 snf, and
- *    separated fig7 early: h 4, 4 ppc, W_ext 0.75 UF area; docs/findings.md);
- *    (The fields' velocity after the impulse, v^L, instead: that opening rate runs ahead
- *    of the one the particles take, lambda outran the work, and at 1 ppc the softening
- *    was steep and short of UF: fig7 h 2, k_soft -716 against -563 and W_ext -3.2 %.)
- *  - OPEN: at lambda >= the separation threshold, frictionless contact only
- *    (mpm_fields.c), and lambda = 1: no traction is left.  The bar is cut when every
- *    segment is open (s->cut).
- * The flaw: the segment holding the flaw's square (its particle, or its cell with
- * imperfection.size = cell) loses strength in proportion to the share of its length that
- * lies in the square.  A segment with less than a quarter of the segment length of line
- * (the bar's edges) joins its larger neighbour.
- * Energy: the impulse's work on the fields over the step, -m c . (v + v^L) / 2 per record
- * (as the contact's, docs/verification.md), is the cohesive work and goes to W_coh; D is eq. 10
- * on the segments, U0 A min(lambda, 1).
- * Serial, in node and particle order: the same sums whatever the threads.
+ * (decohesion.path = interface; docs/methods.md): no particle softens, the paper's law
+ * (Model 1, q = 1, eqs. 8-10, 23) acts on the line at alpha through the flaw.
+ *  - Nodes within MPM_IFACE_REACH h (|sin a| + |cos a|) of the line are split (a particle's
+ *    side: mpm_iface_side); the line is cut into segments of MPM_IFACE_SEG h, a node
+ *    carrying An, the line's length weighted by its uGIMP weight.
+ *  - STUCK until the segment's mean traction reaches se >= 1 (onset): both fields take
+ *    their centre-of-mass velocity.  SOFT: the segment's mean stick traction is held to
+ *    se <= 1 - lambda, every node's impulse scaled alike (share = stick) or shared by An
+ *    (share = line); lambda = 1 - sqrt(1 - 2 W / U0) of the work taken (advance).  OPEN at
+ *    the separation threshold: contact only (mpm_fields.c); all open: the bar is cut.
+ * The flaw weakens its segment by its share of the line.  The impulse's work goes to
+ * W_coh, D = U0 A min(lambda, 1) (eq. 10).  Serial: the same sums for any thread count.
  */
 #include <math.h>
 #include <stdlib.h>

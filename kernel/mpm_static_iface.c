@@ -1,32 +1,16 @@
 /*
  * mpm_static_iface.c - the quasi-static solver's crack as a cohesive interface
  * (decohesion.path = interface): the line at alpha through the flaw's particle splits the
- * bar's particles into two sides (mpm_iface_side, the explicit interface's rule); a node
- * whose stencil holds particles of both sides gets a second displacement slot for the far
- * side's particles, and the jump W_I between its slots carries the line's law.
- *
- * A uniform stress puts the force sigma a_I on a split node's near slot, a_I the near
- * side's sum of V grad N = the integral of N_I n_s over the near side's boundary, where
- * the sides' particle squares meet in a staircase: on an inclined line a_I does not lie
- * along n node by node, only summed along the line.  So the law acts on segments of
- * a few cells along the line (the specimen's seg_cells: 3 on the bar, docs/static.md; one
- * node on a line along a node row), on their nodes' mean jump weighted by the staircase's
- * projected share A_I (facet_areas), and node I carries A_I t(W_seg) + T_I k0 (W_I - W_seg)
- * (T_I = A_I, at least half a particle's side; W_seg the A-weighted mean for the law, the
- * T-weighted one for the ties): the segment's traction, and a stiff tie on its node's
- * departure from the segment's mean, self-equilibrated over the segment, which takes up
- * the staircase's node-to-node differences (the explicit interface shares a segment's
- * traction among its nodes' stick impulses the same way).
- *
- * The law is the particle update itself (mpm_dcoh_update, with its algorithmic tangent),
- * driven by the jump instead of a strain: a material whose "strain" e_nn = w . n,
- * e_nt = w . t / 2 meets an isotropic stiffness k0 (E1 = G = k0, E2 = -k0, as the
- * update's rotation into the n-t frame needs) and Le = 1, so that the decohesion
- * "strain" is the opening itself, d ud = d lambda ubar0 m* (eqs. 19, 24).  Before the
- * traction reaches the strength (eq. 23) the segment is an elastic tie of k0 =
- * MPM_QS_TIE E / L per unit area, 1 / MPM_QS_TIE of the bar's compliance; after the onset
- * the traction softens with the opening to zero at lambda 1, where the segment separates
- * (eqs. 56-58; compression closes it first and is carried, shear is released).
+ * bar's particles into two sides (mpm_iface_side); a node whose stencil holds both sides
+ * gets a second displacement slot for the far side, and the jump W_I between its slots
+ * carries the line's law.  On an inclined line the sides meet in a staircase, so the law
+ * acts on segments of a few cells (the specimen's seg_cells; docs/static.md), on their
+ * nodes' mean jump weighted by the staircase's share A_I (facet_areas); node I carries
+ * A_I t(W_seg) + T_I k0 (W_I - W_seg), a stiff tie on its departure from the mean.
+ * The law (eqs. 19, 23-24, 56-58): before the onset an elastic tie of k0 = MPM_QS_TIE E / L
+ * per unit area; then the traction softens with the opening to zero at lambda 1, returned
+ * along the flow at the step's end (mpm_static_seg_law); separated segments take the
+ * particle update with a stand-in material (E1 = G = k0, Le 1: the "strain" is the jump).
  */
 #include <math.h>
 #include <stdio.h>
