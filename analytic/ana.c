@@ -22,8 +22,6 @@
 #include <gsl/gsl_integration.h>
 #include <gsl/gsl_roots.h>
 
-#define ANA_PI 3.14159265358979323846
-
 /* Fine lambda grid used to place curve points at equal (normalised) arc length. */
 #define ANA_ARC_GRID 4096
 

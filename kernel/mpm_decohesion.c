@@ -53,7 +53,7 @@ void mpm_dwork_free(mpm_dwork *w)
 
 void mpm_material_init(mpm_material *m, const mpm_scene *sc, double snf, double Le)
 {
-  const double a = sc->alpha_deg * (3.14159265358979323846 / 180.0);
+  const mpm_plane pl = mpm_plane_of(sc);
   m->E = sc->E;
   m->nu = sc->nu;
   m->rho = sc->rho;
@@ -61,10 +61,10 @@ void mpm_material_init(mpm_material *m, const mpm_scene *sc, double snf, double 
   m->E2 = sc->nu * m->E1;
   m->G = sc->E / (2.0 * (1.0 + sc->nu));
   m->model = sc->model;
-  m->nx = sin(a);
-  m->ny = -cos(a);
-  m->tx = cos(a);
-  m->ty = sin(a);
+  m->nx = pl.nx;
+  m->ny = pl.ny;
+  m->tx = pl.tx;
+  m->ty = pl.ty;
   m->snf = snf;
   m->stf = sc->stf;
   m->U0 = sc->U0;

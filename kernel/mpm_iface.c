@@ -186,7 +186,7 @@ mpm_iface *mpm_iface_alloc(mpm_sim *s, double lx, double ly)
   mpm_iface *f = calloc(1, sizeof *f);
   if (!f)
     return NULL;
-  const double a = sc->alpha_deg * (3.14159265358979323846 / 180.0), sa = sin(a), ca = cos(a), h = sc->h;
+  const double sa = s->plane.ty, ca = s->plane.tx, h = sc->h;
   f->lx = lx;
   f->ly = ly;
   f->on = 1e-9 * h;

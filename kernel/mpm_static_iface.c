@@ -280,8 +280,8 @@ mpm_status mpm_static_iface_setup(mpm_static *q, char *err, size_t errlen)
   const mpm_sim *s = q->s;
   const mpm_particles *p = s->p;
   /* the line: the specimen's point at alpha, with the explicit interface's side rule */
-  const double a = s->sc.alpha_deg * (3.14159265358979323846 / 180.0);
-  const mpm_iface line = {.lx = s->line_x, .ly = s->line_y, .nx = sin(a), .ny = -cos(a), .tx = cos(a), .ty = sin(a),
+  const mpm_plane *pl = &s->plane;
+  const mpm_iface line = {.lx = s->line_x, .ly = s->line_y, .nx = pl->nx, .ny = pl->ny, .tx = pl->tx, .ty = pl->ty,
                           .on = 1e-9 * s->sc.h};
   const mpm_iface *f = &line;
   const size_t M = MPM_ST_MAX, nn = q->nn;

@@ -24,7 +24,6 @@
 #include "mpm_specimen.h"
 #include "mpm_static.h"
 
-#define MMS_PI 3.14159265358979323846
 #define MMS_A 0.03
 #define MMS_RTOL 1e-9 /* the residual after the step, of the largest body force on a node */
 
@@ -34,7 +33,7 @@
  *   b_y = -(D u_y,YY + G u_y,XX + (nu D + G) u_x,XY). */
 static void mms_exact(const mpm_scene *sc, double X, double Y, double u[2], double b[2])
 {
-  const double kx = MMS_PI / sc->L, ky = MMS_PI / sc->H, A = MMS_A;
+  const double kx = MPM_PI / sc->L, ky = MPM_PI / sc->H, A = MMS_A;
   const double D = sc->E / (1.0 - sc->nu * sc->nu), G = sc->E / (2.0 * (1.0 + sc->nu)), C = sc->nu * D + G;
   const double sx = sin(kx * X), cx = cos(kx * X), sy = sin(ky * Y), cy = cos(ky * Y);
   const double sh = sin(0.5 * ky * Y), ch = cos(0.5 * ky * Y);

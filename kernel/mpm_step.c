@@ -603,7 +603,7 @@ static int scatter_zeroed(mpm_sim *s)
 static mpm_status p2g(mpm_sim *s, char *err, size_t errlen)
 {
   mpm_grid *g = s->g;
-  g->body_k = 3.14159265358979323846 / s->sc.L;
+  g->body_k = MPM_PI / s->sc.L;
   g->body_now = s->sc.body_amp != 0.0 ? s->sc.body_amp * sin(s->sc.body_omega * s->t) : 0.0;
   if (!scatter_zeroed(s))
     return MPM_OK;

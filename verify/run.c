@@ -161,7 +161,7 @@ static int run_setup(run_state *r, char *err, size_t errlen)
     r->last_snap = fmax(r->last_snap, r->vs->snap[i]);
   ver_scene_case_id(r->vs, r->id, sizeof r->id);
   mpm_sim_energy(r->s, &r->e0);
-  r->kmode = sc->vib_mode * 3.14159265358979323846 / sc->L;
+  r->kmode = sc->vib_mode * ANA_PI / sc->L;
   r->modal_prev = sc->vib_mode > 0 ? modal_velocity(r->s, r->kmode) : 0.0;
   r->cross_first = r->cross_last = -1.0;
   return 0;
