@@ -2,16 +2,15 @@
  * mpm_decohesion.c - the decohesion update at one particle and its algorithmic tangent
  * (Schreyer, Sulsky and Zhou 2002, secs. 3-4; docs/model.md secs. 3-4, choices sec. 6),
  * in the n-t frame of the failure plane (plane-stress elasticity keeps its form there).
+ * The law (se, F, the flow: eqs. 19, 23-26) is mpm_law.h's; here:
  *
- *   effective traction  se = sqrt(<sn>^2/snf^2 + st^2/stf^2), F = se - (1 - lambda^q)  eq. 23
- *   flow                m* = (s0/se)(<sn>/snf^2 n + st/stf^2 t); Model 2 (m* . n) n  eqs. 19, 24, 26
  *   weak compatibility  de_d = (d ud / Le) sym(n (x) m)                  eqs. 39-41
  *   first-order step    d lambda = -c / 2b, then Newton (or Brent)      eqs. 46, 49
  *   separation          eqs. 56-58, d ud_t = 2 Le de_nt; lambda grows on with |d ud|
  *
- * <sn>: compression neither starts nor drives decohesion.  The flow is frozen at the
- * trial state; no root in (0, 1 - lambda] is separation, where compression closes the
- * opening first.  mpm_dcoh_tangent differentiates the converged step (phi(dl; s_tr) = 0).
+ * The flow is frozen at the trial state; no root in (0, 1 - lambda] is separation,
+ * where compression closes the opening first.  mpm_dcoh_tangent differentiates the
+ * converged step (phi(dl; s_tr) = 0).
  */
 #include <assert.h>
 #include <math.h>
@@ -22,6 +21,7 @@
 
 #include "mpm.h"
 #include "mpm_kernel.h"
+#include "mpm_law.h"
 
 #define MPM_DCOH_FTOL 1e-12  /* |F| after a softening step               */
 #define MPM_DCOH_MAXIT 60
@@ -99,41 +99,23 @@ void mpm_material_derive(mpm_material *m)
   }
 }
 
-/* lambda^q, exact and cheap for the paper's q = 1. */
-static inline double powq(double lam, double q)
-{
-  return q == 1.0 ? lam : pow(lam, q);
-}
-
-/* d(lambda^q)/d lambda = q lambda^(q-1): 1 without a pow for q = 1; at lambda = 0 the
- * limit (infinite for q < 1, 0 for q > 1). */
-static inline double dpowq(double lam, double q)
-{
-  if (q == 1.0)
-    return 1.0;
-  if (lam > 0.0)
-    return q * pow(lam, q - 1.0);
-  return q < 1.0 ? INFINITY : 0.0;
-}
-
 double mpm_dcoh_str2(const mpm_material *m, double lam, int sep)
 {
-  const double str = 1.0 - powq(lam, m->q);
+  const double str = mpm_law_S(lam, m->q);
   return sep ? -1.0 : str * str;
 }
 
-/* Effective traction, eq. 23, with the Macaulay bracket on sn. */
-static double eff_traction(const mpm_material *m, double sn, double st)
+/* The effective traction of eq. 23 (mpm_law.h) with the material's strengths (<sn> taken
+ * before the product: the bits the runs are measured with). */
+static inline double eff_traction(const mpm_material *m, double sn, double st)
 {
-  const double a = sn > 0.0 ? sn * m->isnf : 0.0;
-  const double b = st * m->istf;
-  return sqrt(a * a + b * b);
+  return mpm_law_se(sn > 0.0 ? sn * m->isnf : 0.0, st * m->istf);
 }
 
 double mpm_dcoh_F(const mpm_material *m, double sxx, double syy, double sxy, double lam)
 {
   const nt_stress s = mpm_to_nt(m, sxx, syy, sxy);
-  return eff_traction(m, s.nn, s.nt) - (1.0 - powq(lam, m->q));
+  return eff_traction(m, s.nn, s.nt) - mpm_law_S(lam, m->q);
 }
 
 /* The consistency function along the frozen flow direction:
@@ -151,7 +133,7 @@ static double phi(double dl, void *vp)
 {
   const phi_ctx *c = vp;
   return eff_traction(c->m, c->sn - dl * c->smn, c->st - dl * c->smt) - 1.0 +
-         powq(c->lam + dl, c->m->q) - c->m->visc * dl;
+         mpm_law_powq(c->lam + dl, c->m->q) - c->m->visc * dl;
 }
 
 /* d phi / d dl, for Newton (se is smooth away from sn = 0 and se = 0). */
@@ -159,10 +141,10 @@ static double dphi(double dl, const phi_ctx *c)
 {
   const double sn = c->sn - dl * c->smn, st = c->st - dl * c->smt;
   const double se = eff_traction(c->m, sn, st);
-  const double gn = sn > 0.0 ? sn * c->m->isnf2 : 0.0;
-  const double gt = st * c->m->istf2;
+  double gn, gt;
+  mpm_law_flow(sn, st, c->m->isnf2, c->m->istf2, &gn, &gt);
   const double lq = c->lam + dl;
-  return -(gn * c->smn + gt * c->smt) / se + dpowq(lq, c->m->q) - c->m->visc;
+  return -(gn * c->smn + gt * c->smt) / se + mpm_law_dpowq(lq, c->m->q) - c->m->visc;
 }
 
 /* Root of phi in (0, dlmax]: 0 and *dl on success, -1 when none exists
@@ -270,13 +252,13 @@ static inline __attribute__((always_inline)) int dcoh_soften(const mpm_material 
   const int st_on = !(m->shear_closing && tr.nt * in->upt < 0.0);
   const double st = st_on ? tr.nt : 0.0;
   const double se = eff_traction(m, tr.nn, st);
-  const double c = se - (1.0 - powq(in->lam, m->q));            /* eq. 23 */
+  const double c = se - mpm_law_S(in->lam, m->q);            /* eq. 23 */
   if (c <= 0.0)
     return 0;
   /* Flow direction at the trial state (eqs. 24, 26). */
   const double ise = 1.0 / se, r = m->s0 * ise;
-  const double gn = tr.nn > 0.0 ? tr.nn * m->isnf2 : 0.0;
-  const double gt = st * m->istf2;
+  double gn, gt;
+  mpm_law_flow(tr.nn, st, m->isnf2, m->istf2, &gn, &gt);
   const double mn = r * gn;
   const double mt = m->model == MPM_DCOH_MODEL2 ? 0.0 : r * gt;
   /* Traction (and s_tt) per unit dlambda: C : (ubar0/Le) sym(n (x) m), eqs. 39-41. */
@@ -297,7 +279,7 @@ static inline __attribute__((always_inline)) int dcoh_soften(const mpm_material 
    * step of eq. 46, -c / 2b, where 2b < 0, is then c se^2 / (Q - dpow se^2): one
    * division, not two in a row. */
   const double Q = m->s0 * k * (m->E1 * gn * gn + (m->model == MPM_DCOH_MODEL2 ? 0.0 : m->G * gt * gt));
-  const double se2 = se * se, den = Q + (m->visc - dpowq(in->lam, m->q)) * se2;
+  const double se2 = se * se, den = Q + (m->visc - mpm_law_dpowq(in->lam, m->q)) * se2;
   const double guess = (den > 0.0 && isfinite(den)) ? c * se2 / den : 0.0;
   const double dlmax = 1.0 - in->lam;
   double dl = 0.0;
@@ -426,7 +408,8 @@ static void tangent_nt(const mpm_material *m, const dcoh_trace *t, double A[3][3
   const double dl = t->dl;
   const double sn = t->tr.nn - dl * t->ctx.smn, st = t->st - dl * t->ctx.smt;
   const double se_o = eff_traction(m, sn, st);
-  const double gn_o = sn > 0.0 ? sn * m->isnf2 : 0.0, gt_o = st * m->istf2;
+  double gn_o, gt_o;
+  mpm_law_flow(sn, st, m->isnf2, m->istf2, &gn_o, &gt_o);
   const double phil = dphi(dl, &t->ctx);
   const double dsn[2] = {1.0, 0.0}, dst[2] = {0.0, t->st_on ? 1.0 : 0.0};
   double ddl[2];

@@ -1,7 +1,7 @@
 /*
  * mpm_iface.c - the crack as a cohesive interface between two velocity fields
  * (decohesion.path = interface; docs/methods.md): no particle softens, the paper's law
- * (Model 1, q = 1, eqs. 8-10, 23) acts on the line at alpha through the flaw.
+ * (mpm_law.h; Model 1, q = 1, eqs. 8-10, 23) acts on the line at alpha through the flaw.
  *  - Nodes within MPM_IFACE_REACH h (|sin a| + |cos a|) of the line are split (a particle's
  *    side: mpm_iface_side); the line is cut into segments of MPM_IFACE_SEG h, a node
  *    carrying An, the line's length weighted by its uGIMP weight.
@@ -22,6 +22,7 @@
 #include "mpm_fields.h"
 #include "mpm_gimp.h"
 #include "mpm_iface.h"
+#include "mpm_law.h"
 #include "mpm_phase.h"
 #include "mpm_static.h"
 
@@ -258,13 +259,6 @@ double mpm_iface_D(const mpm_sim *s)
   return d;
 }
 
-/* se of a traction (eq. 8's effective stress, compression not counted) */
-static double eff(double tn, double tt, double snf, double stf)
-{
-  const double a = fmax(tn, 0.0) / snf, b = tt / stf;
-  return sqrt(a * a + b * b);
-}
-
 /* Onset: each stuck segment's mean traction on the line, sum An t_k / A, with t_k the
  * traction sigma . n of the node's volume-weighted mean particle stress (the particles'
  * stress at the end of the last step, with their uGIMP weights): every node the line
@@ -320,7 +314,7 @@ static void onset(mpm_sim *s, mpm_iface *f)
   }
   for (int b = 0; b < f->nseg; b++)
     if (f->state[b] == MPM_SEG_STUCK && f->sv[b] > 0.0 &&
-        eff(f->sn[b] / f->sv[b], f->st[b] / f->sv[b], f->snf[b], f->stf[b]) >= 1.0)
+        mpm_law_se(f->sn[b] / f->sv[b] / f->snf[b], f->st[b] / f->sv[b] / f->stf[b]) >= 1.0)
       f->state[b] = MPM_SEG_SOFT;
 }
 
@@ -338,21 +332,14 @@ static void record_ledger(mpm_ledger *L, double m, const double v[2], const doub
   L->s_B -= bfac * m * cd;
 }
 
-/* lambda from the work, and the segments that open.  On the surface se = 1 - lambda,
- * Model 1's power U0 se dlambda = dW integrates in closed form: W = U0 (lambda -
- * lambda^2 / 2) per unit area, so lambda = 1 - sqrt(1 - 2 W / U0) of the work taken so
- * far (steps that took work; the traction's work never lowers lambda), and a step's dW
- * takes (1 - lambda)^2 to (1 - lambda)^2 - 2 dW / U0.  (The explicit
- * update dlambda = dW / (U0 (1 - lambda)) overcounts the work of a large step: a release
- * at the snapback of Mode II took 1.036 UF area by the cut, h 8, 4 ppc.) */
+/* lambda from the work (mpm_law_lambda_after: Model 1's power on the surface in closed
+ * form, exact for a large step), and the segments that open. */
 static void advance(mpm_sim *s, mpm_iface *f)
 {
   int open = 1;
   for (int b = 0; b < f->nseg; b++) {
     if (f->state[b] == MPM_SEG_SOFT) {
-      const double dw = f->wn[b] / f->A[b], r = 1.0 - f->lam[b];
-      if (dw > 0.0)
-        f->lam[b] = 1.0 - sqrt(fmax(0.0, r * r - 2.0 * dw / s->sc.U0));
+      f->lam[b] = mpm_law_lambda_after(f->lam[b], f->wn[b] / f->A[b], s->sc.U0);
       if (f->lam[b] >= s->sc.sep_threshold) { /* open: no traction is left, the surface
                                                 * se <= 1 - lambda of lambda = 1 (the band's
                                                 * separated particle reaches it by its opening) */
@@ -377,7 +364,7 @@ static void stick_onset(mpm_iface *f, double dt)
 {
   for (int b = 0; f->stick_onset && b < f->nseg; b++)
     if (f->state[b] == MPM_SEG_STUCK && f->A[b] > 0.0 &&
-        eff(f->Tn[b] / (dt * f->A[b]), f->Tt[b] / (dt * f->A[b]), f->snf[b], f->stf[b]) >= 1.0)
+        mpm_law_se(f->Tn[b] / (dt * f->A[b]) / f->snf[b], f->Tt[b] / (dt * f->A[b]) / f->stf[b]) >= 1.0)
       f->state[b] = MPM_SEG_SOFT;
 }
 
@@ -415,10 +402,11 @@ void mpm_iface_grid(mpm_sim *s)
    * surface se <= 1 - lambda */
   for (int b = 0; b < f->nseg; b++) {
     const double se = f->state[b] == MPM_SEG_SOFT
-                          ? eff(f->Tn[b] / (dt * f->A[b]), f->Tt[b] / (dt * f->A[b]), f->snf[b], f->stf[b])
+                          ? mpm_law_se(f->Tn[b] / (dt * f->A[b]) / f->snf[b], f->Tt[b] / (dt * f->A[b]) / f->stf[b])
                           : 0.0;
-    f->stuck[b] = f->state[b] == MPM_SEG_STUCK || (f->state[b] == MPM_SEG_SOFT && se <= 1.0 - f->lam[b]);
-    f->r[b] = f->stuck[b] ? 1.0 : (1.0 - f->lam[b]) / se;
+    const double S = mpm_law_S(f->lam[b], 1.0); /* the surface, q = 1 (eq. 23) */
+    f->stuck[b] = f->state[b] == MPM_SEG_STUCK || (f->state[b] == MPM_SEG_SOFT && se <= S);
+    f->r[b] = f->stuck[b] ? 1.0 : S / se;
   }
   for (int i = 0; i < f->nnode; i++) {
     const size_t k = f->node[i];

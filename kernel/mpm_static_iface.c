@@ -7,10 +7,10 @@
  * acts on segments of a few cells (the specimen's seg_cells; docs/static.md), on their
  * nodes' mean jump weighted by the staircase's share A_I (facet_areas); node I carries
  * A_I t(W_seg) + T_I k0 (W_I - W_seg), a stiff tie on its departure from the mean.
- * The law (eqs. 19, 23-24, 56-58): before the onset an elastic tie of k0 = MPM_QS_TIE E / L
- * per unit area; then the traction softens with the opening to zero at lambda 1, returned
- * along the flow at the step's end (mpm_static_seg_law); separated segments take the
- * particle update with a stand-in material (E1 = G = k0, Le 1: the "strain" is the jump).
+ * The law (mpm_law.h; eqs. 19, 23-24, 56-58): an elastic tie of k0 = MPM_QS_TIE E / L per
+ * unit area before the onset; then the traction softens with the opening to zero at
+ * lambda 1, returned along the flow at the step's end (mpm_static_seg_law); a segment that
+ * separates takes the particle update (E1 = G = k0, Le 1: the "strain" is the jump).
  */
 #include <math.h>
 #include <stdio.h>
@@ -20,6 +20,7 @@
 #include "mpm_kernel.h"
 #include "mpm_fields.h"
 #include "mpm_iface.h"
+#include "mpm_law.h"
 #include "mpm_specimen.h"
 #include "mpm_static.h"
 
@@ -386,8 +387,10 @@ static void jump(const mpm_static *q, int nd, double W[2], double w[2])
 }
 
 
-/* psi(dl) = |(an / (snf (S + cn dl)), at / (stf (S + ct dl)))| - 1 with S = 1 - (lambda +
- * dl)^q: eq. 23 at the step's end over S, decreasing in dl (mpm_static_seg_law). */
+/* psi(dl) = se / S - 1 at the step's end (eq. 23, mpm_law_se's quantity), S = 1 -
+ * (lambda + dl)^q: the trial traction (an, at) against the strengths scaled by S + cn dl
+ * and S + ct dl; decreasing in dl (mpm_static_seg_law).  Written with hypot and pow, the
+ * arithmetic the static runs are measured with (docs/findings.md, "The static solver"). */
 static double seg_psi(const mpm_material *m, double lam, double an, double at, double cn, double ct, double dl)
 {
   const double S = 1.0 - pow(lam + dl, m->q);
@@ -418,10 +421,9 @@ int mpm_static_seg_law(const mpm_material *m, const mpm_dstate *in, const double
   s0.tt = in->sxx * tx * tx + 2.0 * in->sxy * tx * ty + in->syy * ty * ty;
   const double wn = w[0] * nx + w[1] * ny, wt = w[0] * tx + w[1] * ty;
   const double an = s0.nn + k0 * wn, at = s0.nt + k0 * wt; /* the elastic trial, eq. 7 */
-  const double S0 = 1.0 - pow(in->lam, m->q);
-  const double un0 = an > 0.0 ? an / m->snf : 0.0, ut0 = at / m->stf;
   double sn = an, st = at, dl = 0.0, dldn = 0.0, dldt = 0.0, dsn[2] = {1.0, 0.0}, dst[2] = {0.0, 1.0};
-  if (sqrt(un0 * un0 + ut0 * ut0) > S0) {
+  if (mpm_law_se(an > 0.0 ? an / m->snf : 0.0, at / m->stf) > mpm_law_S(in->lam, m->q)) { /* eq. 23 */
+    /* k0 ubar0 s0 times the flow per unit traction (eq. 24), in compression none */
     const double K = k0 * m->ubar0 * m->s0, cn = an > 0.0 ? K / (m->snf * m->snf) : 0.0, ct = K / (m->stf * m->stf);
     const double hi0 = 1.0 - in->lam;
     if (!(hi0 > 0.0) || seg_psi(m, in->lam, an, at, cn, ct, hi0) >= 0.0)
