@@ -425,10 +425,8 @@ void mpm_iface_grid(mpm_sim *s)
        * the node (between 0 and its stick impulse), compression never capped.  No shear:
        * the line this share is built for (alpha 90 across a bar in tension) carries none
        * in the model, and what the fields' lateral breathing asks of it jumps between the
-       * stuck and the capped steps; MUSL keeps what that puts into the bar's waves (with
-       * the node's share of the segment's shear: iface90 h 4, 4 ppc at a sixteenth of the
-       * grip speed, kinetic energy 4.5e-4 against the steady 4e-6; with none 1.6e-5;
-       * docs/findings.md) */
+       * stuck and the capped steps; MUSL keeps what that puts into the bar's waves
+       * (docs/findings.md) */
       const double w = f->Ab[q] > 0.0 ? f->r[q] * f->An[k] / f->Ab[q] : 0.0;
       if (jn > 0.0)
         jn = f->Tn[q] > 0.0 ? fmin(jn, w * f->Tn[q]) : 0.0;

@@ -487,8 +487,8 @@ static void segment_eval(mpm_static *q, int g, int tangent, double *Ax, double J
     return;
   /* the segment's jump: the A-weighted mean the law takes, and the T-weighted mean the
    * ties pull toward, so that the ties' forces sum to zero over the segment (tied to the
-   * A-weighted mean, the nodes off the staircase, T_I > A_I, put a net force on it that
-   * the law did not carry: fig8's curve 0.0011 of Pmax off at h 8, now 4e-7) */
+   * A-weighted mean, the nodes off the staircase, T_I > A_I, would put a net force on it
+   * that the law does not carry) */
   double Ws[2] = {0.0, 0.0}, ws[2] = {0.0, 0.0}, Wt[2] = {0.0, 0.0};
   for (int a = a0; a < a1; a++) {
     const int i = q->sorder[a];
