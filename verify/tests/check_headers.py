@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
-"""check_headers.py SRC [MAX] - prints each C file of kernel/, analytic/ and verify/ whose
-header (the comment lines before the first line of code or the first blank line) is
-over MAX lines (15), as "FILE LINES"; exits 1 if there is one.  A header says what the
-file does and the equations it cites; histories go to docs/findings.md."""
+"""check_headers.py SRC [MAX] - prints each C file of kernel/, analytic/ and verify/ (their
+tests/ included) whose header (the comment lines before the first line of code or the
+first blank line) is over MAX lines (15), as "FILE LINES"; exits 1 if there is one.  A
+header says what the file does and the equations it cites; histories go to
+docs/findings.md."""
 import glob
 import os
 import sys
@@ -30,7 +31,7 @@ def main():
     most = int(sys.argv[2]) if len(sys.argv) > 2 else 15
     long = []
     for d in ("kernel", "analytic", "verify"):
-        for f in sorted(glob.glob(os.path.join(src, d, "*.[ch]"))):
+        for f in sorted(glob.glob(os.path.join(src, d, "*.[ch]")) + glob.glob(os.path.join(src, d, "tests", "*.[ch]"))):
             n = header_lines(f)
             if n > most:
                 long.append("%s %d" % (os.path.relpath(f, src), n))

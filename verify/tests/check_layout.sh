@@ -7,8 +7,8 @@
 #   function-length  no function of kernel/, analytic/ or verify/ is over 100 lines (from
 #                    the line naming it to its closing brace at column 0);
 #   verify-files     no file of verify/ is over 600 lines;
-#   file-headers     no file of kernel/, analytic/ or verify/ opens with a comment of over
-#                    15 lines (check_headers.py).
+#   file-headers     no C file of kernel/, analytic/ or verify/ (or their tests/) opens with
+#                    a comment of over 15 lines (check_headers.py).
 # Prints TAP; exits 1 if a check failed.
 set -u
 src=${1:?usage: check_layout.sh SRC}
