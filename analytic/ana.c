@@ -3,31 +3,15 @@
  * sec. 3.2, eqs. 28-37; docs/model.md sec. 5).
  *
  * Geometry (eq. 28): n = (sin a, -cos a), t = (cos a, sin a), uniaxial stress
- * sigma = P / H along x, so sn = sigma sin^2 a, st = sigma sin a cos a and the
- * effective traction of eq. 23 is se = sigma / r0 (eq. 29/30).
- *
- * Everything on the softening branch is written in one parameter, lambda in [0, 1]
- * (eq. 31: sigma* = 1 - lambda^q), because both the load and the opening are then
- * smooth in it: P = Pmax (1 - lambda^q), delta = (r0 L / E) (sigma* + lambda g)
- * (eq. 34).  The public functions speak sigma* as the contract says; the
- * conversion lambda = (1 - sigma*)^(1/q) is exact.
- *
- * Model 2 energies (not in the paper).  With the opening-only flow of eq. 26,
- * d up = d lambda ubar0 (mstar . n) n, the traction's power per unit area is
- *     s . d up = d lambda U0 (sn^2 / snf^2) / se = kappa * (d lambda U0 se),
- *     kappa = (sn^2 / snf^2) / se^2 = r0^2 sin^4 a / snf^2,
- * i.e. the associated power (Model 1) times kappa, which is constant in the bar
- * (the traction direction is fixed).  So the traction work to separation is
- * UF2 = kappa q U0 / (q + 1), and we split it as eq. 25 splits the Model 1 work:
- * UD2 = kappa U0 (dissipated), UU2 = -kappa U0 / (q + 1) (stored), UF2 = UD2 + UU2.
- * kappa = 1 at alpha = 90 deg (Model 2 = Model 1 there) and kappa < 1 otherwise.
- * The identity UF * area = area under the load-deflection curve holds for both
- * models; analytic/tests/test_ana_bar.c checks it by its own trapezoid rule.
- *
- * GSL: qags for ana_bar_work, brent for ana_bar_load_at / ana_bar_curve where a
- * displacement must be inverted to sigma*.  GSL's default error handler aborts;
- * around our calls it is switched off and restored, and the status is checked
- * here (this is not thread-safe with respect to other GSL users in the process).
+ * sigma = P / H along x, so sn = sigma sin^2 a, st = sigma sin a cos a and se = sigma / r0
+ * (eqs. 29, 30).  The softening branch is written in lambda in [0, 1] (eq. 31:
+ * sigma* = 1 - lambda^q), in which load and opening are smooth: P = Pmax (1 - lambda^q),
+ * delta = (r0 L / E) (sigma* + lambda g) (eq. 34); the public functions speak sigma*
+ * (lambda = (1 - sigma*)^(1/q), exact).  Model 2's energies (not in the paper): the
+ * Model 1 ones times kappa (ana_bar_init).
+ * GSL: qags for ana_bar_work, brent where a displacement is inverted to sigma*; GSL's
+ * error handler is switched off around the calls (not thread-safe against other GSL
+ * users in the process).
  */
 #include "ana.h"
 
@@ -37,8 +21,6 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_integration.h>
 #include <gsl/gsl_roots.h>
-
-#define ANA_PI 3.14159265358979323846
 
 /* Fine lambda grid used to place curve points at equal (normalised) arc length. */
 #define ANA_ARC_GRID 4096
@@ -122,7 +104,10 @@ int ana_bar_init(const ana_params *p, ana_bar *bar, char *err, int errlen)
   bar->r0 = 1.0 / (sa * sqrt(sa * sa / snf2 + ca * ca / stf2));
   const double r0 = bar->r0;
 
-  /* kappa: opening share of the traction power, 1 for Model 1 (see file header) */
+  /* kappa: opening share of the traction power, 1 for Model 1.  Model 2's flow (eq. 26),
+   * d up = d lambda ubar0 (m* . n) n, has the power s . d up = kappa d lambda U0 se with
+   * kappa = (sn^2 / snf^2) / se^2 = r0^2 sin^4 a / snf^2, constant in the bar: its work
+   * to separation is kappa q U0 / (q + 1), split as eq. 25 splits Model 1's. */
   double kappa = 1.0;
   if (p->model == 1) {
     /* eq. 29: mec = U0 r0 sin a ((sin a / snf^2) n + (cos a / stf^2) t) */
@@ -170,7 +155,7 @@ int ana_bar_init(const ana_params *p, ana_bar *bar, char *err, int errlen)
     bar->sstar_turn = interior_turn(p->q, bar->g, &st) ? st : 1.0;
   }
 
-  /* eq. 25 (Model 1), scaled by kappa for Model 2 (file header) */
+  /* eq. 25 (Model 1), scaled by kappa for Model 2 (above) */
   bar->area = p->H / sa;
   bar->UD = kappa * p->U0;
   bar->UU = -kappa * p->U0 / (p->q + 1.0);

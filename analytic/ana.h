@@ -9,6 +9,8 @@
 #ifndef DELAM_ANA_H
 #define DELAM_ANA_H
 
+#define ANA_PI 3.14159265358979323846 /* pi, for analytic/ and verify/ */
+
 enum { ANA_OK = 0, ANA_EINVAL = 1, ANA_EFAIL = 2, ANA_ERANGE = 3 /* a table too large to hold */ };
 
 typedef struct {

@@ -2,31 +2,16 @@
  * ana_spec.c - the specimens' closed forms (docs/specimens-reference.md): the interface
  * law's pure modes and the LEFM beam references of the DCB and the ELS.
  *
- * The law (docs/model.md sec. 3, Model 1): in pure opening the flow direction of eq. 24 is
- * m* = (s0 / snf) n, so the opening grows by d lambda (U0 / s0)(s0 / snf) = d lambda U0 / snf:
- * s0 cancels, the opening at separation (lambda = 1) is U0 / snf, and the traction
- * snf (1 - lambda^q) falls with the opening w as snf (1 - (w snf / U0)^q).  Pure shear
- * likewise with stf.  The traction's work to separation is q U0 / (q + 1) (eq. 25's UF),
- * in any mode mix: s . m* = s0 se, so s . dup = se U0 d lambda = (1 - lambda^q) U0 d lambda.
- * That work is the fracture energy Gc of the specimens; the dissipation U0 also counts
- * the recoverable part -U0 / (q + 1) of eq. 25.
- *
+ * The law (docs/model.md sec. 3, Model 1): in pure opening m* = (s0 / snf) n (eq. 24), so
+ * the opening at separation is U0 / snf and the traction falls as snf (1 - (w snf / U0)^q);
+ * pure shear likewise with stf.  The work to separation, Gc, is q U0 / (q + 1) (eq. 25's
+ * UF) in any mode mix, as s . m* = s0 se.
  * Beam references, unit width, arm thickness t, EI = E t^3 / 12 per arm:
- *   DCB simple      C = 8 a^3 / (E t^3),  G = P^2 / 2 dC/da = 12 P^2 a^2 / (E t^3)
- *   DCB corrected   a -> a + chi t, chi = sqrt(E / (11 G) (3 - 2 (g / (1 + g))^2)),
- *                   g = 1.18 E / G (Williams 1989, isotropic: E11 = E22 = E, G13 = G)
- *   DCB shear       + 2 a / (k G t), k = 5/6 (each arm's Timoshenko shear)
- *   DCB Kanninen    an Euler arm of free length a on a Winkler foundation 2 E / t of
- *                   finite length L - a, free at x = L (Kanninen 1973; the end
- *                   flexibilities of the finite beam are Hetenyi's, 1946)
- *   DCB Kanninen with shear: a Timoshenko arm on the same foundation, the ligament
- *                   semi-infinite: theta'''' - (kf / kGA) theta'' + (kf / EI) theta = 0 on it
- *                   (from w' = theta + Q / kGA, theta' = M / EI, M' = -Q, Q' = kf w), whose two
- *                   decaying roots carry the crack tip's M = P a and Q = -P
- *   ELS simple      C = (3 a^3 + L^3) / (2 E t^3),  G_II = 9 P^2 a^2 / (4 E t^3)
- *   ELS corrected   a -> a + 0.42 chi t (Hashemi, Kinloch and Williams 1990; ISO 15114)
- *   ELS shear       + L / (2 k G t): the arms' and the uncracked beam's shear, the same for
- *                   every a, so G_II is simple beam theory's
+ *   DCB simple  C = 8 a^3 / (E t^3); corrected a -> a + chi t (Williams 1989); with
+ *               shear + 2 a / (k G t); Kanninen (1973) an arm on a Winkler foundation
+ *               2 E / t (Hetenyi 1946), and with a Timoshenko arm
+ *   ELS simple  C = (3 a^3 + L^3) / (2 E t^3), G_II = 9 P^2 a^2 / (4 E t^3); corrected
+ *               a -> a + 0.42 chi t (ISO 15114); shear + L / (2 k G t)
  */
 #include <complex.h>
 #include <math.h>
@@ -77,6 +62,8 @@ int ana_spec_init(const ana_spec_params *p, ana_spec *s, char *err, int errlen)
   s->kGA = KAPPA * G * t;
   s->kf = 2.0 * p->E / t;
   s->beta = pow(s->kf / (4.0 * s->EI), 0.25);
+  /* Williams 1989, isotropic (E11 = E22 = E, G13 = G): chi = sqrt(E / (11 G) (3 - 2
+   * (g / (1 + g))^2)), g = 1.18 E / G; the ELS's 0.42 chi (Hashemi, Kinloch, Williams 1990) */
   s->chi = sqrt(p->E / (11.0 * G) * (3.0 - 2.0 * (g / (1.0 + g)) * (g / (1.0 + g))));
   s->chi_II = 0.42 * s->chi;
   s->wc_I = p->U0 / p->snf;

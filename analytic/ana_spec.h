@@ -1,18 +1,12 @@
 /*
  * ana_spec.h - references for the two delamination specimens with a moving crack front
- * (docs/specimens-reference.md): the double cantilever beam (DCB, mode I) and the
- * end-loaded split (ELS, mode II), plane stress, unit width.
+ * (docs/specimens-reference.md), plane stress, unit width: the double cantilever beam
+ * (DCB, mode I) and the end-loaded split (ELS, mode II).  ana_spec.c: the interface law's
+ * pure-mode numbers (docs/model.md sec. 3, eqs. 23-25) and the LEFM beam references
+ * (simple, corrected, Timoshenko, Kanninen); ana_spec_czm.c: the DCB's cohesive beam
+ * reference (a beam on the law and a Winkler foundation, by finite differences).
  *
- *   ana_spec.c      the interface law's pure-mode numbers (docs/model.md sec. 3, eqs. 23-25)
- *                   and the LEFM beam references: simple, corrected and Timoshenko beam
- *                   theory, Kanninen's augmented DCB (closed forms);
- *   ana_spec_czm.c  the semi-analytic cohesive reference of the DCB: each arm a beam
- *                   (Euler-Bernoulli or Timoshenko) on the law in series with the
- *                   ligament's Winkler foundation, a boundary-value problem solved by
- *                   finite differences and Newton, path-followed through the peak.
- *
- * Geometry: a bar of length L and height H; two arms of thickness t = H / 2 above and
- * below the interface y = H / 2, cracked from the loaded end x = 0 to x = a.
+ * Geometry: a bar L x H; two arms t = H / 2 about y = H / 2, cracked from x = 0 to a.
  *   DCB: the arms' ends held at u_y = +-delta / 2 (moment-free), x = L free; P is the
  *        force on one arm, C = delta / P.
  *   ELS: x = L clamped, both arms' ends moved together by delta; P is the total force.

@@ -1,26 +1,17 @@
 /*
  * ana_spec_czm.c - the DCB's semi-analytic cohesive reference (docs/specimens-reference.md
- * sec. 3): one arm as a beam on the interface law in series with the bonded ligament's
- * Winkler foundation, the other its mirror image.
+ * sec. 3): each arm a beam on the interface law in series with the bonded ligament's
+ * Winkler foundation (stiffness kf), the other arm its mirror image.
  *
- * Per arm, at x >= a0, the centreline deflection w is the foundation's stretch plus half
- * the law's opening g: w = sigma / kf + g / 2, with sigma the law's traction (docs/model.md
- * sec. 3, Model 1 in pure opening: rigid below snf, then snf (1 - (g / gc)^q), gc = U0 / snf,
- * zero past gc).  Each node carries a path parameter u of that local law: u = w while the
- * law is closed (u <= w0 = snf / kf, compression carried by the foundation), u = w0 + g once
- * it has opened.  sigma(u) and w(u) are single-valued; w grows with u unless the law's
- * softening is steeper than the foundation (kf gc < 2 q snf: a local snap-back, where the
- * opening at a0 stops ordering the path and the solver refuses).
- *
- * The arm: Euler-Bernoulli (energy EI / 2 w''^2) or Timoshenko, written in the bending
- * and shear parts w = wb + ws (energy EI / 2 wb''^2 + kGA / 2 ws'^2: wb' is the section's
- * rotation), free at x = L, moment-free at x = 0 where it is held at w = delta / 2.
- * Discretised by the energy: curvature at the interior nodes (three-point, weight the dual
- * cell), shear strain per cell, the law and the foundation at the nodes with trapezoid
- * weights over [a0, L] (half weight at a0).  The equations are the energy's gradient; the
- * force on one arm at x = 0 is the reaction P.  Each point of the path is a Newton solve
- * with u at a0 prescribed (a monotone parameter for the DCB: the opening at the pre-crack's
- * tip); the linear systems are banded (GSL's banded LU with pivoting).
+ * At x >= a0 the deflection is w = sigma / kf + g / 2, sigma the law's traction in pure
+ * opening (docs/model.md sec. 3, Model 1: rigid below snf, then snf (1 - (g / gc)^q),
+ * gc = U0 / snf).  Each node carries a path parameter u (u = w while closed, w0 + g once
+ * open, w0 = snf / kf); the solver refuses a local snap-back (kf gc < 2 q snf).
+ * The arm: Euler-Bernoulli or Timoshenko (w = wb + ws, energy EI / 2 wb''^2 +
+ * kGA / 2 ws'^2), free at x = L, held at w = delta / 2 moment-free at x = 0, discretised
+ * by the energy (three-point curvature, shear per cell, trapezoid weights for the law
+ * and foundation).  Each path point is a Newton solve with u at a0 prescribed; the
+ * systems are banded (GSL's banded LU).  P is the reaction on one arm at x = 0.
  */
 #include <math.h>
 #include <stdlib.h>

@@ -1,37 +1,17 @@
 /*
- * ana_stab.c - the growth rate of the kernel's explicit step, linearised, on a 1-D
- * periodic bar (docs/findings.md).
- *
- * Why a 1-D model: a slow run of the interface (iface90, MUSL) grows a motion in the
- * softening that no damper of the model asks for.  The question is whether the step
- * itself has a growing mode, and which of its ingredients it needs.  The kernel's step
- * is linearised here about a rest state that the softening produces: a uniform stress
- * sigma0 carried by particles that have drifted by d (cells) from where the grid was laid.
- *
- * The rest state: Nc cells of size h, periodic; n particles a cell at
- * x_p = (c + (k + 1/2) / n + d) h, mass m_p = rho h / n, length V = h / n, stress sigma0,
- * velocity 0.  It is a fixed point of the step: a uniform stress gives no nodal force.
- * The perturbation z = (u_p, v_p, s_p) (position, velocity, stress) goes through the
- * step as the kernel takes it (kernel/mpm_step.c):
+ * ana_stab.c - the growth rate of the kernel's explicit step, linearised on a 1-D periodic
+ * bar of Nc cells, n particles a cell, about a rest state of uniform stress sigma0 whose
+ * particles have drifted by d cells (docs/findings.md, "The cohesive interface").  The
+ * perturbation (u_p, v_p, s_p) goes through the step as kernel/mpm_step.c takes it:
  *   m_i = sum_p S_ip m_p,  v_i = sum_p S_ip m_p v_p / m_i                  eqs. 2, 3
  *   f_i = -sum_p V (G_ip s_p + sigma0 H_ip u_p)                             eq. 3
- *   vL_i = v_i + dt f_i / m_i                                               eq. 4
- *   v_p += sum_i S_ip (vL_i - v_i)          (FLIP)                          eq. 6
- *   w_i = vL_i (USL), or sum_p S_ip m_p v_p / m_i after the update (MUSL)
- *   s_p += E dt sum_i G_ip w_i                                              eq. 7
- *   u_p += dt sum_i S_ip vL_i               (both schemes move with vL)     eq. 5
- * S is the node's weight for the particle, G = dS/dx its gradient and H = dG/dx_p the
- * gradient's change as the particle moves.  The term sigma0 H u is what the prestress
- * does when particles move: for bilinear shapes H is 0 inside a cell; for uGIMP it is
- * -1 / (lp h^2) where the particle's box straddles a node and 1 / (2 lp h^2) on the
- * next cell's side (lp the box's half length in cells), so it acts as soon as a box
- * straddles a node, that is as soon as the particles drift.
- * The step is the matrix of that linear map (3 n Nc square); its largest eigenvalue
- * modulus r gives the rate ln(r) / dt per unit time (0: neutral; the null space of the
- * transfer and the rigid drift make r = 1 exactly).  The same over the eigenvalues off
- * the real axis, the waves, says how the scheme treats them: USL damps every wave
- * (its known loss of energy), MUSL keeps each one's modulus at 1 without a prestress, so
- * with one there is nothing to hold a fed wave back.
+ *   vL_i = v_i + dt f_i / m_i;  v_p += sum_i S_ip (vL_i - v_i)             eqs. 4, 6
+ *   w_i = vL_i (USL) or the re-projected v (MUSL);  s_p += E dt sum_i G_ip w_i   eq. 7
+ *   u_p += dt sum_i S_ip vL_i                                               eq. 5
+ * S is the node's weight, G = dS/dx and H = dG/dx_p (zero inside a cell for bilinear
+ * shapes; nonzero for uGIMP once a particle's box straddles a node).  The step's matrix
+ * (3 n Nc square) has largest eigenvalue modulus r: the rate is ln(r) / dt (0 neutral);
+ * the same over the complex eigenvalues (the waves) says how the scheme treats them.
  */
 #include <math.h>
 #include <stdio.h>

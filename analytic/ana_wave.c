@@ -1,47 +1,17 @@
 /*
- * ana_wave.c - the uniaxial bar at a finite grip speed: the exact 1-D wave solution
- * with the failure plane as a cohesive line (docs/model.md sec. 5a).
+ * ana_wave.c - the uniaxial bar at a finite grip speed V: the exact 1-D wave solution
+ * with the 90 deg failure plane as a cohesive line (docs/model.md sec. 5a derives it).
  *
- * The closed form of ana.c is the quasi-static limit.  A run pulls its grip at a finite
- * speed V, and once the plane starts to soften the bar answers with waves: the grip's
- * load keeps rising until the unloading wave from the plane reaches it, and the
- * released strain energy rings between the plane and the ends.  This file gives that
- * answer for the 90 deg bar, the one the 1-D wave equation holds for (uniaxial stress,
- * plane stress, the lateral inertia left out: docs/model.md says what that omits).
- *
- * The kernel starts the particles on the loading's steady velocity field (mpm.h
- * mpm_scene_start_vx), so before the onset the bar is exactly in the homogeneous state
- *     sigma_h(t) = E V t / L,   v_h(x) = V x / L   (x from the fixed end),
- * which satisfies the wave equation and both end conditions.  Write the solution as
- * that state plus a perturbation (sigma', v'), zero until the onset and held to v' = 0
- * at both ends.  The perturbation travels in Riemann invariants, c = sqrt(E / rho),
- * Z = rho c:
- *     R+ = v' - sigma' / Z  (moving towards the grip),  R- = v' + sigma' / Z  (away from it).
- * A held end reflects R+ into R- = -R+ (and back).  At the plane, with traction T on
- * both faces (sigma' = T - sigma_h) and incoming Rp (from the fixed end) and Rm (from
- * the grip), the faces move at
- *     v'_fixed side = Rp + (T - sigma_h) / Z,   v'_grip side = Rm - (T - sigma_h) / Z,
- * so the opening rate is  dw/dt = Rm - Rp - 2 (T - sigma_h) / Z,  and the plane sends
- *     A = Rm - 2 (T - sigma_h) / Z  towards the grip,  B = Rp + 2 (T - sigma_h) / Z  back.
- * With Tg, Tf the transit times plane-grip and plane-fixed end:
- *     Rm(t) = -A(t - 2 Tg),   Rp(t) = -B(t - 2 Tf),   P(t) = H (sigma_h(t) - Z A(t - Tg)).
- *
- * The plane's law is the interface's (kernel/mpm_iface.c, docs/methods.md): Model 1,
- * q = 1, at 90 deg the traction is normal, and Model 1's power T dw = U0 se dlambda with
- * se = T / snf = 1 - lambda on the surface gives lambda = snf w / U0 and T = snf (1 -
- * lambda) while it opens (eqs. 8-10); rigid below the surface.  Each step the traction
- * that keeps the faces together, Ts = sigma_h + Z (Rm - Rp) / 2, decides: Ts <= the
- * surface's snf (1 - lambda): stuck, T = Ts (compression always carried); above it the
- * plane opens on the surface, where the opening obeys the linear ODE
- *     dw/dt = alpha w + f,   alpha = 2 snf^2 / (U0 Z),   f = Rm - Rp - 2 (snf - sigma_h) / Z,
- * integrated exactly over the step with f at its middle.  At lambda >= the separation
- * threshold the plane is open (T = 0, lambda 1 as in the interface); it carries only
- * contact once the faces meet again.
- *
- * The delays are rarely whole steps: the histories are read by linear interpolation.
- * Both the interpolation and the midpoint forcing are second order in the step,
- * min(Tg, Tf) / ANA_WAVE_SUB; analytic/tests/test_ana_wave.c checks the result against
- * the closed form of the first transit and against the quasi-static limit.
+ * Before the onset the bar is in the homogeneous state sigma_h = E V t / L, v_h = V x / L
+ * (the kernel starts the particles on it).  The perturbation travels in the Riemann
+ * invariants R+ = v' - sigma' / Z, R- = v' + sigma' / Z (c = sqrt(E / rho), Z = rho c),
+ * reflected with a sign change at the held ends.  The plane's law is the interface's
+ * (Model 1, q = 1, eqs. 8-10): stuck while the traction Ts that keeps the faces together
+ * is at most snf (1 - lambda); above it the opening obeys dw/dt = alpha w + f,
+ * alpha = 2 snf^2 / (U0 Z), integrated exactly over the step; open (T = 0) at the
+ * separation threshold, then contact only.  The histories are read by linear
+ * interpolation: second order in the step min(Tg, Tf) / ANA_WAVE_SUB
+ * (analytic/tests/test_ana_wave.c checks it).
  */
 #include "ana.h"
 

@@ -1,32 +1,16 @@
 /*
- * mpm_band.c - Le measured from the band itself (decohesion.Le = row): the effective
- * length of eq. 41, Le = V_e / A_d, taken per particle row of the bar from the particles
- * that soften in it, instead of from the cell (docs/findings.md).
+ * mpm_band.c - Le measured from the band itself (decohesion.Le = row or zone): the
+ * effective length of eq. 41, Le = V_e / A_d, per particle row of the bar from the
+ * particles that soften in it, instead of from the cell.
  *
- * Why.  Eq. 41 makes a band of volume V dissipate U0 A when every particle in it
- * separates and Le = V / A.  The cell and staircase lengths assume a band shape; on an
- * inclined line with several particles per cell the band that forms is 3 to 6 particles
- * wide per row at first and localizes later, so a fixed Le over- or under-charges it.
- * A straight crack crosses each particle row of the bar (height dy) once, over a length
- * dy / |sin a|.  If k particles of width dx soften together in a row, the zone's volume
- * per unit crack length is k dx |sin a|: that is the row's Le.  k is measured as
- * S / lam_r, S the sum of every dlambda the row's particles have softened so far and
- * lam_r the row's largest lambda, so a particle that softens a little beside the band
- * counts a little (mpm_band_step has what that charges).
- *
- * Le = zone counts in S only the particles near the row's lead (the particle with the
- * row's largest lambda, as of the last step): those within 2 h + dx of it in x0, whose
- * uGIMP supports (half-width h + dx / 2) touch the lead's.  Before the band localizes
- * the whole bar is near its strength and particles far along the row soften by
- * 0.001-0.03 and stop; with `row` they count in S and the band's own particles are
- * charged less (the low bias, docs/findings.md); a particle that cannot
- * share a node with the lead cannot be part of the lead's zone.  No constant: h, dx and
- * the shape's support.
- *
- * Threads: each strip sums its particles' dlambda per row in particle order and keeps
- * its row's largest lambda with the first particle (in list order) that reached it;
- * the rows are reduced in strip order after the gather, a later strip's lead taking
- * over only with a strictly larger lambda, so any thread count gives the same bits.
+ * A straight crack crosses each particle row (height dy) over dy / |sin a|; k particles
+ * of width dx softening together in the row make a zone of volume k dx |sin a| per unit
+ * crack length: the row's Le.  k = S / lam_r, S the sum of every dlambda the row's
+ * particles have softened and lam_r the row's largest lambda.  zone counts in S only the
+ * particles within 2 h + dx (in x0) of the row's lead (largest lambda), whose uGIMP
+ * supports touch the lead's.  What row and zone gave: docs/findings.md, "The band method".
+ * Threads: per strip sums in particle order, rows reduced in strip order (a later
+ * strip's lead wins only with a strictly larger lambda): the same bits for any count.
  */
 #include <math.h>
 #include <stdlib.h>

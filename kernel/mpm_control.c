@@ -1,21 +1,15 @@
 /*
  * mpm_control.c - what the grip follows (loading.control).
  *
- * GRIP is the paper's loading: the rigid head pulled at loading.speed throughout.  Where
- * the bar's curve snaps back (g below its limit, eq. 36: fig8, a45, a30), a grip that only
- * pulls cannot follow the branch: at the peak the bar stores more elastic energy than the
- * crack's traction work (a30: 46 against UF x area 12), and an explicit run releases the
- * difference at once, into waves that soften and separate more of the bar.  A test
- * machine follows such a branch by controlling a quantity that grows monotonically along
- * it (a crack opening); DISSIPATION does the same with the run's dissipation D (eq. 10
- * summed over the particles), which never decreases.  From the first step with D > 0
- * until the band has cut the bar, D is held to D0 + speed Ppeak (t - t0), Ppeak the largest
- * grip load so far: on the analytic bar (q = 1) that rate gives the opening the speed
- * r0 sin a speed / U0 in lambda and the grip d delta / dt = speed (g - 1) / g, negative
- * on a snapback.  A PI loop with the time constant of two wave transits, 2 L / c (the
- * grip acts on the band only after one transit), sets the grip's speed, bounded by
- * MPM_CONTROL_VMAX times loading.speed.  After the cut the grip pulls at loading.speed
- * again.  The grip's work, negative while it moves back, stays in W_ext.
+ * GRIP: the paper's loading, the rigid head pulled at loading.speed throughout.
+ * DISSIPATION: for a bar whose curve snaps back (g below its limit, eq. 36), the run's
+ * dissipation D (eq. 10 summed over the particles, never decreasing) is held from the
+ * first step with D > 0 until the cut to D0 + speed Ppeak (t - t0), Ppeak the largest grip
+ * load so far, as a test machine follows a snapback by a crack opening.  On the analytic
+ * bar (q = 1) that gives d delta / dt = speed (g - 1) / g, negative on a snapback.  A PI
+ * loop with the time constant of two wave transits, 2 L / c, sets the grip's speed,
+ * bounded by MPM_CONTROL_VMAX times loading.speed; after the cut the grip pulls at
+ * loading.speed again.  The grip's work stays in W_ext.
  */
 #include <math.h>
 

@@ -1,69 +1,17 @@
 /*
  * mpm_damping.c - damping of the nodal velocities about their slow drift (time.damping
- * = c > 0), for scenes that ask a quasi-static question through a dynamic release: a
- * snapback (g < 1, eq. 35) under the paper's grip control throws the stored excess
- * (1 / g - 1) UF area into elastic waves once the band opens, and their reflections at
- * the held ends fail the ends (docs/findings.md).  c = 0 is the paper's undamped
- * step, bit for bit.
+ * = c > 0), for scenes that ask a quasi-static question through a dynamic release (a
+ * snapback, eq. 35); c = 0 is the paper's undamped step, bit for bit.
  *
- * Each free velocity component of each node gets, after the node update (eq. 4), the
- * increment
- *     delta = -c dt (v - vbar),
- * v the node's projected velocity and vbar its low-pass (time constant tau =
- * time.damping_tau, default 2 L / c_wave, the bar's longest period), started from the
- * loading's own steady field (the one the particles start with).  It is mass-
- * proportional (Rayleigh) damping taken about the slow drift instead of about rest: a
- * body pulled slowly, or carried away rigidly after the cut, keeps its motion, and the
- * release's waves, fast against tau, lose energy as exp(-c t) (tests/test_mpm_damping.c).
- * The first version took Cundall's local form, -alpha |f| sign(v - vbar): scale-free, it
- * acts at full strength on any small bias of v - vbar, and after the cut it put energy
- * back (L_damp fell from 8.9 to 4.8 at fig8 h 2) and pushed the parts into each other
- * (grip load -13 % of the peak at delta 0.95); docs/findings.md.  Held components
- * (grip and fixed end) are not damped: their reactions stay the constraint's.
- *
- * About what (time.damping_about): DRIFT (above; the default) or PARTS.  To a slow
- * change of velocity a damper about a lagging low-pass is an added mass: vbar trails v
- * by about tau dv/dt, so the force is about -c tau m dv/dt (c tau = 12.6 for the files'
- * critical c and tau = 2 L / c_wave).  After the cut that resists the separated parts'
- * own slow motions: fig8's left part sliding back into the other needs about 14 times the
- * contact force (docs/findings.md).  With PARTS, once the band has cut the bar the
- * node damping stops and each bar particle's velocity v relaxes instead toward the
- * motion of the end its part is held by, by
- *     v <- v - c dt (v - V_end)
- * once a step, after the gather (mpm_damping_parts): V_end = (-v_grip, 0) for the grip's
- * part, 0 for the fixed end's.  After the cut each part is a body held along one end, and
- * the quasi-static answer to the scene's question is that body moving with its end; any
- * other velocity, the part's deformation and its sliding along the band alike, is the
- * release's and decays as exp(-c t).  The grip holds x only, but nothing quasi-static
- * drives a separated part in y: leaving the grip's part free in y (its mean vy kept) let
- * fig8's left part slide back into the other after the release (push 2.15 % of the peak
- * at h 8, 1 ppc; 0.03 % with it damped; docs/findings.md).  The parts are the ones
- * the cut made (mpm_sim_cut: a separated particle in every particle row): in each row,
- * the particles left of the midpoint between the row's first and last separated particle
- * at the cut (reference x0) belong to the grip's part, those right of it to the fixed
- * end's, the band's own particles included, each with the side it lies on; a particle
- * on the midpoint (a row's lone separated particle), the head and debris are left alone.
- * Leaving the band's particles out (only those beyond the row's first and last separated
- * particle damped) let them ring on: a45 h 1, 9 ppc D 1.102 against 1.067 (docs/findings.md).
- * The kinetic energy it takes is booked in L_damp.  Before the cut
- * (damping_from = start) the node damping about the drift acts as with DRIFT.  Serial, in
- * particle order.
- *
- * When (time.damping_from): START (the default and the scene files' choice), from the
- * first step; CUT, from the step the band has cut the bar (mpm_sim_cut) on, so that
- * everything up to the cut, the peak and the band's own opening included, is the
- * undamped step bit for bit and only the release after it is damped.  Both are measured
- * in docs/findings.md.  The low-pass runs from the first step either way.
- *
- * The ledger (mpm_step.c, "Energy").  With delta added to a record's increment d
- * (lanes f) and to v^L (lanes p), A = sum m v . d gains m v . delta, K = sum m |d|^2
- * gains m (2 d . delta + delta^2), the share bfac of B = -dt f . v^L gains
- * -bfac m dv . delta (dv = dt f / m, the increment without the contact's), and the
- * damper's work over the step, at the end velocity as the update takes it, is
- * L_damp = -sum m delta . (v^L + delta) (>= 0 where delta opposes v^L).  Under MUSL
- * the stress power B = -m d . v' is formed later from the lanes (mpm_nodes_musl_velocity,
- * mpm_fields_musl), with d holding delta: mpm_damping_musl gives back delta . q.
- * Serial in node order: the same sums whatever the threads.
+ * DRIFT (time.damping_about, the default): each free velocity component of each node
+ * gets after the node update (eq. 4) delta = -c dt (v - vbar), vbar the node's low-pass
+ * of v (time constant time.damping_tau): Rayleigh damping about the drift, not about rest.
+ * PARTS: once the band has cut the bar, each bar particle's velocity relaxes instead
+ * toward its held end's motion, v <- v - c dt (v - V_end) (mpm_damping_parts).
+ * time.damping_from = start or cut: from the first step, or from the cut on.
+ * Held components are not damped; the kinetic energy taken is booked in L_damp (the
+ * ledger's terms: damp_record).  Serial, in node and particle order.  What the other
+ * forms gave: docs/findings.md, "Snapback and the release after the cut".
  */
 #include <assert.h>
 #include <math.h>
@@ -151,7 +99,10 @@ typedef struct {
 } damp_sums;
 
 /* One velocity component: lanes p (v^L) and f (d), the contact's part c of d (0 if
- * none), its low-pass vb; returns delta and books its ledger terms. */
+ * none), its low-pass vb; returns delta and books its ledger terms: with delta added to
+ * d and to v^L, A = sum m v . d gains m v delta, K = sum m d^2 gains m (2 d + delta)
+ * delta, bfac's share of B = -dt f . v^L gains -bfac m dv delta (dv = d less the
+ * contact's part), and the damper's work L_damp = -m delta (v^L + delta). */
 static inline double damp_component(double *lp, double *lf, double c, double *vb, double alpha, double w,
                                     double m, double bfac, damp_sums *t)
 {
@@ -238,7 +189,10 @@ void mpm_damping_musl(mpm_sim *s)
   s->led.s_B += B;
 }
 
-/* PARTS: the part of particle k (0 or 1), or -1 if it is left alone (see the top). */
+/* PARTS: the part of particle k: in its particle row, left of the midpoint between the
+ * row's first and last separated particle at the cut (reference x0) the grip's (0), right
+ * of it the fixed end's (1), the band's own particles each by its side; -1 (left alone)
+ * on the midpoint, for the head and for debris. */
 static int part_of(const mpm_sim *s, const mpm_damping *d, size_t k, double dy)
 {
   const mpm_particles *p = s->p;

@@ -1,43 +1,16 @@
 /*
- * mpm_decohesion.c - the decohesion constitutive update at one particle
- * (Schreyer, Sulsky and Zhou 2002, secs. 3-4; docs/model.md secs. 3-4).
+ * mpm_decohesion.c - the decohesion update at one particle and its algorithmic tangent
+ * (Schreyer, Sulsky and Zhou 2002, secs. 3-4; docs/model.md secs. 3-4, choices sec. 6),
+ * in the n-t frame of the failure plane (plane-stress elasticity keeps its form there).
+ * The law (se, F, the flow: eqs. 19, 23-26) is mpm_law.h's; here:
  *
- *   effective traction  se = sqrt(<sn>^2/snf^2 + st^2/stf^2)          eq. 23
- *   decohesion function F  = se - (1 - lambda^q)                        eq. 23
- *   flow (Model 1)      m* = (s0/se)(<sn>/snf^2 n + st/stf^2 t)         eqs. 19, 24, 42
- *   flow (Model 2)      (m* . n) n                                       eq. 26
  *   weak compatibility  de_d = (d ud / Le) sym(n (x) m)                  eqs. 39-41
- *   first-order step    d lambda = -c / 2b                               eqs. 46, 49
- *   separation          eqs. 56-58
+ *   first-order step    d lambda = -c / 2b, then Newton (or Brent)      eqs. 46, 49
+ *   separation          eqs. 56-58, d ud_t = 2 Le de_nt; lambda grows on with |d ud|
  *
- * The work is done in the n-t frame of the failure plane, where plane-stress
- * elasticity keeps its form (isotropy):  s_nn = E1 e_nn + E2 e_tt, s_tt = E2 e_nn + E1 e_tt,
- * s_nt = 2G e_nt.
- *
- * Decisions (docs/model.md sec. 6; see README):
- *  - <sn> (Macaulay bracket) in se and m*: normal compression neither starts nor
- *    drives decohesion.  The paper writes sn; its scenes are all in tension, where
- *    the two agree.
- *  - The consistency condition is solved to |F| < MPM_DCOH_FTOL with the flow
- *    direction frozen at the trial state.  The first iterate is the paper's
- *    first-order step (eq. 46); Newton then continues.  Where eq. 46 cannot start
- *    (q < 1 at lambda = 0, where lambda^(q-1) is infinite, or 2b >= 0) the root is
- *    bracketed by doubling and refined with GSL's Brent solver.  No root in
- *    (0, 1 - lambda] means traction reversal (no solution): separation.
- *  - Eq. 58: d ud_t = 2 Le de_nt (tensor shear strain; the compatible value).
- *  - After separation lambda keeps growing with |d ud| / ubar0 (paper); the
- *    dissipation counts min(lambda, 1) (mpm_sim_energy).
- *  - A separated particle in normal compression first closes its opening
- *    (d ud_n >= -ud_n), then carries the compression; shear is always released.
- *  - decohesion.reversed_shear = closing (not the paper's): shear against the
- *    particle's accumulated slip is elastic, the <sn> of the shear (see the update).
- *
- * mpm_dcoh_tangent: the algorithmic tangent d sigma / d de of this update, for an implicit
- * (Newton) solver.  It runs the same code (dcoh_step) and differentiates the converged
- * step: the implicit function theorem on phi(dl; s_tr) = 0, with the trial dependence of
- * the frozen flow direction and the Macaulay bracket.  Non-smooth where the path switches
- * (elastic/softening at F = 0, softening/separation, contact at shut, sn_tr or sn = 0,
- * closing at s_nt upt = 0): there it gives the side the update took.
+ * The flow is frozen at the trial state; no root in (0, 1 - lambda] is separation,
+ * where compression closes the opening first.  mpm_dcoh_tangent differentiates the
+ * converged step (phi(dl; s_tr) = 0).
  */
 #include <assert.h>
 #include <math.h>
@@ -48,6 +21,7 @@
 
 #include "mpm.h"
 #include "mpm_kernel.h"
+#include "mpm_law.h"
 
 #define MPM_DCOH_FTOL 1e-12  /* |F| after a softening step               */
 #define MPM_DCOH_MAXIT 60
@@ -79,7 +53,7 @@ void mpm_dwork_free(mpm_dwork *w)
 
 void mpm_material_init(mpm_material *m, const mpm_scene *sc, double snf, double Le)
 {
-  const double a = sc->alpha_deg * (3.14159265358979323846 / 180.0);
+  const mpm_plane pl = mpm_plane_of(sc);
   m->E = sc->E;
   m->nu = sc->nu;
   m->rho = sc->rho;
@@ -87,10 +61,10 @@ void mpm_material_init(mpm_material *m, const mpm_scene *sc, double snf, double 
   m->E2 = sc->nu * m->E1;
   m->G = sc->E / (2.0 * (1.0 + sc->nu));
   m->model = sc->model;
-  m->nx = sin(a);
-  m->ny = -cos(a);
-  m->tx = cos(a);
-  m->ty = sin(a);
+  m->nx = pl.nx;
+  m->ny = pl.ny;
+  m->tx = pl.tx;
+  m->ty = pl.ty;
   m->snf = snf;
   m->stf = sc->stf;
   m->U0 = sc->U0;
@@ -125,41 +99,23 @@ void mpm_material_derive(mpm_material *m)
   }
 }
 
-/* lambda^q, exact and cheap for the paper's q = 1. */
-static inline double powq(double lam, double q)
-{
-  return q == 1.0 ? lam : pow(lam, q);
-}
-
-/* d(lambda^q)/d lambda = q lambda^(q-1): 1 without a pow for q = 1; at lambda = 0 the
- * limit (infinite for q < 1, 0 for q > 1). */
-static inline double dpowq(double lam, double q)
-{
-  if (q == 1.0)
-    return 1.0;
-  if (lam > 0.0)
-    return q * pow(lam, q - 1.0);
-  return q < 1.0 ? INFINITY : 0.0;
-}
-
 double mpm_dcoh_str2(const mpm_material *m, double lam, int sep)
 {
-  const double str = 1.0 - powq(lam, m->q);
+  const double str = mpm_law_S(lam, m->q);
   return sep ? -1.0 : str * str;
 }
 
-/* Effective traction, eq. 23, with the Macaulay bracket on sn. */
-static double eff_traction(const mpm_material *m, double sn, double st)
+/* The effective traction of eq. 23 (mpm_law.h) with the material's strengths (<sn> taken
+ * before the product: the bits the runs are measured with). */
+static inline double eff_traction(const mpm_material *m, double sn, double st)
 {
-  const double a = sn > 0.0 ? sn * m->isnf : 0.0;
-  const double b = st * m->istf;
-  return sqrt(a * a + b * b);
+  return mpm_law_se(sn > 0.0 ? sn * m->isnf : 0.0, st * m->istf);
 }
 
 double mpm_dcoh_F(const mpm_material *m, double sxx, double syy, double sxy, double lam)
 {
   const nt_stress s = mpm_to_nt(m, sxx, syy, sxy);
-  return eff_traction(m, s.nn, s.nt) - (1.0 - powq(lam, m->q));
+  return eff_traction(m, s.nn, s.nt) - mpm_law_S(lam, m->q);
 }
 
 /* The consistency function along the frozen flow direction:
@@ -177,7 +133,7 @@ static double phi(double dl, void *vp)
 {
   const phi_ctx *c = vp;
   return eff_traction(c->m, c->sn - dl * c->smn, c->st - dl * c->smt) - 1.0 +
-         powq(c->lam + dl, c->m->q) - c->m->visc * dl;
+         mpm_law_powq(c->lam + dl, c->m->q) - c->m->visc * dl;
 }
 
 /* d phi / d dl, for Newton (se is smooth away from sn = 0 and se = 0). */
@@ -185,10 +141,10 @@ static double dphi(double dl, const phi_ctx *c)
 {
   const double sn = c->sn - dl * c->smn, st = c->st - dl * c->smt;
   const double se = eff_traction(c->m, sn, st);
-  const double gn = sn > 0.0 ? sn * c->m->isnf2 : 0.0;
-  const double gt = st * c->m->istf2;
+  double gn, gt;
+  mpm_law_flow(sn, st, c->m->isnf2, c->m->istf2, &gn, &gt);
   const double lq = c->lam + dl;
-  return -(gn * c->smn + gt * c->smt) / se + dpowq(lq, c->m->q) - c->m->visc;
+  return -(gn * c->smn + gt * c->smt) / se + mpm_law_dpowq(lq, c->m->q) - c->m->visc;
 }
 
 /* Root of phi in (0, dlmax]: 0 and *dl on success, -1 when none exists
@@ -296,13 +252,13 @@ static inline __attribute__((always_inline)) int dcoh_soften(const mpm_material 
   const int st_on = !(m->shear_closing && tr.nt * in->upt < 0.0);
   const double st = st_on ? tr.nt : 0.0;
   const double se = eff_traction(m, tr.nn, st);
-  const double c = se - (1.0 - powq(in->lam, m->q));            /* eq. 23 */
+  const double c = se - mpm_law_S(in->lam, m->q);            /* eq. 23 */
   if (c <= 0.0)
     return 0;
   /* Flow direction at the trial state (eqs. 24, 26). */
   const double ise = 1.0 / se, r = m->s0 * ise;
-  const double gn = tr.nn > 0.0 ? tr.nn * m->isnf2 : 0.0;
-  const double gt = st * m->istf2;
+  double gn, gt;
+  mpm_law_flow(tr.nn, st, m->isnf2, m->istf2, &gn, &gt);
   const double mn = r * gn;
   const double mt = m->model == MPM_DCOH_MODEL2 ? 0.0 : r * gt;
   /* Traction (and s_tt) per unit dlambda: C : (ubar0/Le) sym(n (x) m), eqs. 39-41. */
@@ -323,7 +279,7 @@ static inline __attribute__((always_inline)) int dcoh_soften(const mpm_material 
    * step of eq. 46, -c / 2b, where 2b < 0, is then c se^2 / (Q - dpow se^2): one
    * division, not two in a row. */
   const double Q = m->s0 * k * (m->E1 * gn * gn + (m->model == MPM_DCOH_MODEL2 ? 0.0 : m->G * gt * gt));
-  const double se2 = se * se, den = Q + (m->visc - dpowq(in->lam, m->q)) * se2;
+  const double se2 = se * se, den = Q + (m->visc - mpm_law_dpowq(in->lam, m->q)) * se2;
   const double guess = (den > 0.0 && isfinite(den)) ? c * se2 / den : 0.0;
   const double dlmax = 1.0 - in->lam;
   double dl = 0.0;
@@ -452,7 +408,8 @@ static void tangent_nt(const mpm_material *m, const dcoh_trace *t, double A[3][3
   const double dl = t->dl;
   const double sn = t->tr.nn - dl * t->ctx.smn, st = t->st - dl * t->ctx.smt;
   const double se_o = eff_traction(m, sn, st);
-  const double gn_o = sn > 0.0 ? sn * m->isnf2 : 0.0, gt_o = st * m->istf2;
+  double gn_o, gt_o;
+  mpm_law_flow(sn, st, m->isnf2, m->istf2, &gn_o, &gt_o);
   const double phil = dphi(dl, &t->ctx);
   const double dsn[2] = {1.0, 0.0}, dst[2] = {0.0, t->st_on ? 1.0 : 0.0};
   double ddl[2];

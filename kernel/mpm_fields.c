@@ -1,30 +1,17 @@
 /*
  * mpm_fields.c - two velocity fields across a separated band (grid.fields = 2), after
- * the multi-field idea of CRAMP (Nairn 2003) and DFG (Homel and Herbold 2017), with
- * the side taken from what the scene knows: the failure plane's normal n.
- *
- * One velocity per node keeps a separated band coupled: the nodes in the band carry a
- * mean of both parts' velocities, the cells around it keep straining, the band widens
- * and the grip still carries load after separation.  Here, once the band has cut the
- * bar (mpm_sim_cut: a separated particle in every particle row), each step:
- *  1. every node that a separated particle's support covers is "split"; its band centre
- *     crk is the N_ip-weighted mean position of those separated particles;
- *  2. a particle with n . (x_p - c_p) > 0, c_p the band centre its split nodes see
- *     (mpm_fields_side), scatters to and gathers from the second field (nd2) at its
- *     split nodes, the others the first (nd); every other node is one field, so the
- *     band's intact ligament stays bonded;
- *  3. the fields at a split node interact only in contact: when the gap between them is
- *     closed (the mass-weighted normal displacement n . u of the far field's particles
- *     is not above the near field's) and they approach along n, (v2 - v1) . n < 0,
- *     both take their centre-of-mass normal velocity (momentum is kept, the
- *     tangential velocities are free: frictionless).  Otherwise they are independent,
- *     so a separated band carries no load and does not close through itself.  The
- *     energy ledger books the work its impulse takes (mpm_energy.L_contact).
- * Before the cut the band's intact ligament must stay bonded: splitting the nodes
- * around the first separated particles decoupled its still-softening neighbours and left
- * their dissipation short (Fig. 6, h 8: D 11.65 against 12.01), so one field is kept
- * until the cut.  Constrained nodes (grip, fixed end) are never split: their reactions
- * stay those of one field.  Before the cut the step is the one-field step, bit for bit.
+ * CRAMP (Nairn 2003) and DFG (Homel and Herbold 2017), the side taken from the failure
+ * plane's normal n.  One field until the band has cut the bar (mpm_sim_cut); then each
+ * step:
+ *  1. every node a separated particle's support covers is split, its band centre the
+ *     N-weighted mean of those particles' positions;
+ *  2. a particle with n . (x_p - c_p) > 0 uses the second field (nd2) at its split
+ *     nodes (mpm_fields_side), the others the first;
+ *  3. the fields at a split node meet only in frictionless contact: when the gap is
+ *     closed and they approach along n, both take their centre-of-mass normal velocity;
+ *     the impulse's work is booked in L_contact.
+ * Constrained nodes are never split.  Before the cut the step is the one-field step, bit
+ * for bit (why not split earlier: docs/findings.md).
  */
 #include <math.h>
 #include <stdlib.h>

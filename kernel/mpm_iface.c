@@ -1,61 +1,17 @@
 /*
  * mpm_iface.c - the crack as a cohesive interface between two velocity fields
- * (decohesion.path = interface; docs/findings.md derives and measures it).
- *
- * A band of softening particles on an inclined line dissipates more than U0 per unit
- * area and carries load after it separates (docs/findings.md): the cell staircase makes
- * more material strain with the opening than the line holds.  Here no particle softens.
- * The paper's decohesion law (Model 1 with q = 1, eqs. 8-10) acts on the line itself:
- *  - the two fields (mpm_fields.c) exist from the first step.  Every node within
- *    MPM_IFACE_REACH h (|sin a| + |cos a|) of the line at alpha through the flaw is split,
- *    and a particle's side is fixed by its reference centre (mpm_iface_side; a centre
- *    on the line takes the first side, so at alpha 90 the crack runs along the edge of
- *    the flaw's particle column);
- *  - the line is cut into segments of MPM_IFACE_SEG h.  A node belongs to the segment of
- *    its projection on the line and carries An, the line's length weighted by the node's
- *    uGIMP weight for a particle centred on it, so a segment's nodes share its length;
- *  - STUCK: until a segment's mean traction on the line, from the particles' stresses
- *    through the nodes it weighs (onset()), reaches se = sqrt(<tn>^2 / snf^2 +
- *    tt^2 / stf^2) >= 1 (eq. 8 at lambda = 0), both fields at its nodes take their centre-of-mass velocity (the
- *    impulse J = m1 (vc - v1) on field 1, -J on field 2) and, under MUSL, share v':
- *    the bar is one body there;
- *  - SOFT: the segment's mean stick traction, sum J / (dt A), is held to the failure
- *    surface se <= 1 - lambda (eq. 8, q = 1): every node's impulse is scaled by the same
- *    factor (tension and shear; compression is never capped), and a segment whose mean
- *    traction is inside the surface sticks whole this step.  (Holding each node's own
- *    traction J / (dt An) to the surface released the bar at 1 ppc: the stick traction
- *    scatters from node to node there, every node above the surface was cut at once, and
- *    the load fell from the peak to a quarter within half a wave transit: fig7 h 4,
- *    k_soft -5346 against the analytic -563; docs/findings.md.)
- *    decohesion.share = line instead gives each node the segment's traction times its
- *    length of line An (of the length at the nodes holding both fields), capped at its
- *    stick impulse: with a line along a node column (alpha 90, the grid following the
- *    bar) the scaled stick impulses leave the traction's spread among a segment's rows
- *    free, and a mode grew in it (iface90 h 1, 4 ppc: L_flip 2.5; docs/findings.md).
- *    lambda grows by the traction's work on the opening,
- *    dW per unit area (the impulse times the fields' relative velocity v'2 - v'1,
- *    MUSL's re-projected velocities that the particles' strain takes, summed over the
- *    segment's nodes; mpm_iface_musl): Model 1's power s . d up = U0 se dlambda with
- *    se = 1 - lambda on the surface, integrated in closed form, lambda = 1 - sqrt(1 -
- *    2 W / U0) of the work W taken so far, so a segment that opens to lambda = 1 has
- *    taken UF = U0 / 2 per unit area whatever the mode.
- *    (lambda from an effective opening, sqrt((snf un)^2 + (stf ut)^2) / U0, counts the
- *    slip that Mode I's inclined opening makes ten times over with stf = 10 snf, and
- *    separated fig7 early: h 4, 4 ppc, W_ext 0.75 UF area; docs/findings.md);
- *    (The fields' velocity after the impulse, v^L, instead: that opening rate runs ahead
- *    of the one the particles take, lambda outran the work, and at 1 ppc the softening
- *    was steep and short of UF: fig7 h 2, k_soft -716 against -563 and W_ext -3.2 %.)
- *  - OPEN: at lambda >= the separation threshold, frictionless contact only
- *    (mpm_fields.c), and lambda = 1: no traction is left.  The bar is cut when every
- *    segment is open (s->cut).
- * The flaw: the segment holding the flaw's square (its particle, or its cell with
- * imperfection.size = cell) loses strength in proportion to the share of its length that
- * lies in the square.  A segment with less than a quarter of the segment length of line
- * (the bar's edges) joins its larger neighbour.
- * Energy: the impulse's work on the fields over the step, -m c . (v + v^L) / 2 per record
- * (as the contact's, docs/verification.md), is the cohesive work and goes to W_coh; D is eq. 10
- * on the segments, U0 A min(lambda, 1).
- * Serial, in node and particle order: the same sums whatever the threads.
+ * (decohesion.path = interface; docs/methods.md): no particle softens, the paper's law
+ * (mpm_law.h; Model 1, q = 1, eqs. 8-10, 23) acts on the line at alpha through the flaw.
+ *  - Nodes within MPM_IFACE_REACH h (|sin a| + |cos a|) of the line are split (a particle's
+ *    side: mpm_iface_side); the line is cut into segments of MPM_IFACE_SEG h, a node
+ *    carrying An, the line's length weighted by its uGIMP weight.
+ *  - STUCK until the segment's mean traction reaches se >= 1 (onset): both fields take
+ *    their centre-of-mass velocity.  SOFT: the segment's mean stick traction is held to
+ *    se <= 1 - lambda, every node's impulse scaled alike (share = stick) or shared by An
+ *    (share = line); lambda = 1 - sqrt(1 - 2 W / U0) of the work taken (advance).  OPEN at
+ *    the separation threshold: contact only (mpm_fields.c); all open: the bar is cut.
+ * The flaw weakens its segment by its share of the line.  The impulse's work goes to
+ * W_coh, D = U0 A min(lambda, 1) (eq. 10).  Serial: the same sums for any thread count.
  */
 #include <math.h>
 #include <stdlib.h>
@@ -66,6 +22,7 @@
 #include "mpm_fields.h"
 #include "mpm_gimp.h"
 #include "mpm_iface.h"
+#include "mpm_law.h"
 #include "mpm_phase.h"
 #include "mpm_static.h"
 
@@ -230,7 +187,7 @@ mpm_iface *mpm_iface_alloc(mpm_sim *s, double lx, double ly)
   mpm_iface *f = calloc(1, sizeof *f);
   if (!f)
     return NULL;
-  const double a = sc->alpha_deg * (3.14159265358979323846 / 180.0), sa = sin(a), ca = cos(a), h = sc->h;
+  const double sa = s->plane.ty, ca = s->plane.tx, h = sc->h;
   f->lx = lx;
   f->ly = ly;
   f->on = 1e-9 * h;
@@ -302,13 +259,6 @@ double mpm_iface_D(const mpm_sim *s)
   return d;
 }
 
-/* se of a traction (eq. 8's effective stress, compression not counted) */
-static double eff(double tn, double tt, double snf, double stf)
-{
-  const double a = fmax(tn, 0.0) / snf, b = tt / stf;
-  return sqrt(a * a + b * b);
-}
-
 /* Onset: each stuck segment's mean traction on the line, sum An t_k / A, with t_k the
  * traction sigma . n of the node's volume-weighted mean particle stress (the particles'
  * stress at the end of the last step, with their uGIMP weights): every node the line
@@ -364,7 +314,7 @@ static void onset(mpm_sim *s, mpm_iface *f)
   }
   for (int b = 0; b < f->nseg; b++)
     if (f->state[b] == MPM_SEG_STUCK && f->sv[b] > 0.0 &&
-        eff(f->sn[b] / f->sv[b], f->st[b] / f->sv[b], f->snf[b], f->stf[b]) >= 1.0)
+        mpm_law_se(f->sn[b] / f->sv[b] / f->snf[b], f->st[b] / f->sv[b] / f->stf[b]) >= 1.0)
       f->state[b] = MPM_SEG_SOFT;
 }
 
@@ -382,21 +332,14 @@ static void record_ledger(mpm_ledger *L, double m, const double v[2], const doub
   L->s_B -= bfac * m * cd;
 }
 
-/* lambda from the work, and the segments that open.  On the surface se = 1 - lambda,
- * Model 1's power U0 se dlambda = dW integrates in closed form: W = U0 (lambda -
- * lambda^2 / 2) per unit area, so lambda = 1 - sqrt(1 - 2 W / U0) of the work taken so
- * far (steps that took work; the traction's work never lowers lambda), and a step's dW
- * takes (1 - lambda)^2 to (1 - lambda)^2 - 2 dW / U0.  (The explicit
- * update dlambda = dW / (U0 (1 - lambda)) overcounts the work of a large step: a release
- * at the snapback of Mode II took 1.036 UF area by the cut, h 8, 4 ppc.) */
+/* lambda from the work (mpm_law_lambda_after: Model 1's power on the surface in closed
+ * form, exact for a large step), and the segments that open. */
 static void advance(mpm_sim *s, mpm_iface *f)
 {
   int open = 1;
   for (int b = 0; b < f->nseg; b++) {
     if (f->state[b] == MPM_SEG_SOFT) {
-      const double dw = f->wn[b] / f->A[b], r = 1.0 - f->lam[b];
-      if (dw > 0.0)
-        f->lam[b] = 1.0 - sqrt(fmax(0.0, r * r - 2.0 * dw / s->sc.U0));
+      f->lam[b] = mpm_law_lambda_after(f->lam[b], f->wn[b] / f->A[b], s->sc.U0);
       if (f->lam[b] > 0.0 && isfinite(s->zone_end)) /* the process zone's far end */
         s->zone_end = fmax(s->zone_end, f->lx + (f->smin + (b + 1) * f->sw) * f->tx);
       if (f->lam[b] >= s->sc.sep_threshold) { /* open: no traction is left, the surface
@@ -423,7 +366,7 @@ static void stick_onset(mpm_iface *f, double dt)
 {
   for (int b = 0; f->stick_onset && b < f->nseg; b++)
     if (f->state[b] == MPM_SEG_STUCK && f->A[b] > 0.0 &&
-        eff(f->Tn[b] / (dt * f->A[b]), f->Tt[b] / (dt * f->A[b]), f->snf[b], f->stf[b]) >= 1.0)
+        mpm_law_se(f->Tn[b] / (dt * f->A[b]) / f->snf[b], f->Tt[b] / (dt * f->A[b]) / f->stf[b]) >= 1.0)
       f->state[b] = MPM_SEG_SOFT;
 }
 
@@ -461,10 +404,11 @@ void mpm_iface_grid(mpm_sim *s)
    * surface se <= 1 - lambda */
   for (int b = 0; b < f->nseg; b++) {
     const double se = f->state[b] == MPM_SEG_SOFT
-                          ? eff(f->Tn[b] / (dt * f->A[b]), f->Tt[b] / (dt * f->A[b]), f->snf[b], f->stf[b])
+                          ? mpm_law_se(f->Tn[b] / (dt * f->A[b]) / f->snf[b], f->Tt[b] / (dt * f->A[b]) / f->stf[b])
                           : 0.0;
-    f->stuck[b] = f->state[b] == MPM_SEG_STUCK || (f->state[b] == MPM_SEG_SOFT && se <= 1.0 - f->lam[b]);
-    f->r[b] = f->stuck[b] ? 1.0 : (1.0 - f->lam[b]) / se;
+    const double S = mpm_law_S(f->lam[b], 1.0); /* the surface, q = 1 (eq. 23) */
+    f->stuck[b] = f->state[b] == MPM_SEG_STUCK || (f->state[b] == MPM_SEG_SOFT && se <= S);
+    f->r[b] = f->stuck[b] ? 1.0 : S / se;
   }
   for (int i = 0; i < f->nnode; i++) {
     const size_t k = f->node[i];
@@ -483,10 +427,8 @@ void mpm_iface_grid(mpm_sim *s)
        * the node (between 0 and its stick impulse), compression never capped.  No shear:
        * the line this share is built for (alpha 90 across a bar in tension) carries none
        * in the model, and what the fields' lateral breathing asks of it jumps between the
-       * stuck and the capped steps; MUSL keeps what that puts into the bar's waves (with
-       * the node's share of the segment's shear: iface90 h 4, 4 ppc at a sixteenth of the
-       * grip speed, kinetic energy 4.5e-4 against the steady 4e-6; with none 1.6e-5;
-       * docs/findings.md) */
+       * stuck and the capped steps; MUSL keeps what that puts into the bar's waves
+       * (docs/findings.md) */
       const double w = f->Ab[q] > 0.0 ? f->r[q] * f->An[k] / f->Ab[q] : 0.0;
       if (jn > 0.0)
         jn = f->Tn[q] > 0.0 ? fmin(jn, w * f->Tn[q]) : 0.0;

@@ -12,6 +12,16 @@
 
 #include "mpm.h"
 
+#define MPM_PI 3.14159265358979323846
+
+/* The failure plane at the scene's angle (decohesion.alpha; eq. 28): a in radians, the
+ * normal n = (sin a, -cos a) and the direction t = (cos a, sin a).  The one conversion of
+ * alpha (mpm_sim.c); a sim keeps its plane (mpm_sim.plane). */
+typedef struct {
+  double a, nx, ny, tx, ty;
+} mpm_plane;
+mpm_plane mpm_plane_of(const mpm_scene *sc);
+
 /* ---- The method options, as the kernel reads them (the enums: mpm.h; the keys:
  * docs/scene-keys.md) ---- */
 /* decohesion.Le, the effective length V_e / A_d of eq. 41 (docs/model.md sec. 6): CELL,
@@ -316,6 +326,7 @@ typedef struct {
 
 struct mpm_sim {
   mpm_scene sc;            /* copy of the scene                                        */
+  mpm_plane plane;         /* its failure plane (mpm_plane_of)                          */
   mpm_material mat[5];     /* MPM_MAT_BAR, MPM_MAT_IMP (the imperfection), MPM_MAT_HEAD,
                               MPM_MAT_DEBRIS, MPM_MAT_ELASTIC */
   size_t nhead;            /* particles of the rigid head (p->n - nhead are the bar's)  */

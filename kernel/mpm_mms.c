@@ -13,7 +13,6 @@
 #include "mpm.h"
 #include "mpm_kernel.h"
 
-#define MMS_PI 3.14159265358979323846
 #define MMS_A 0.03
 #define MMS_T 10.0
 
@@ -37,7 +36,7 @@ mpm_scene mpm_mms_scene(double h, int scheme, int bc)
   sc.scheme = scheme;
   sc.bc = bc;
   sc.head = MPM_HEAD_NONE;
-  const double wn = MMS_PI * sqrt(sc.E / sc.rho) / sc.L, w = 1.5 * wn;
+  const double wn = MPM_PI * sqrt(sc.E / sc.rho) / sc.L, w = 1.5 * wn;
   sc.vib_mode = 1;
   sc.vib_amp = MMS_A * w; /* vx(0) = A w sin(pi X / L) */
   sc.body_amp = MMS_A * (wn * wn - w * w);
@@ -63,7 +62,7 @@ mpm_status mpm_mms_error(double h, int scheme, int bc, double *err_out, char *er
     double e2 = 0.0;
     for (size_t i = 0; i < s->p->n; i++) {
       const double X = s->p->x0[i];
-      const double ue = MMS_A * sin(MMS_PI * X / sc.L) * sin(sc.body_omega * s->t);
+      const double ue = MMS_A * sin(MPM_PI * X / sc.L) * sin(sc.body_omega * s->t);
       const double dx = s->p->x[i] - X - ue, dy = s->p->y[i] - s->p->y0[i];
       e2 += dx * dx + dy * dy;
     }

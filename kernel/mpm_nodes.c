@@ -1,45 +1,12 @@
 /*
  * mpm_nodes.c - the node pass of the step (mpm_step.c): the free update of eq. 4,
  *   v_i = (m v)_i / m_i,  v^L_i = v_i + dt f_i / m_i,
- * the constraints and their reactions, the ledger's node sums, the nodal velocities the
- * other schemes take their strain from (USF, USAVG: the projected v_i; MUSL: v'), and
- * the nodal mass limit.
- *
- * Boundary conditions (mpm_nodes_update, hold; scene key grid.bc).  A held node's v^L is
- * the held velocity v_bc.  What the FLIP update (eq. 6) adds at it is the choice:
- *  - lagrangian: d = v_bc - v_i, with v_i the projected velocity.  The projection is an
- *    average over the node's support, so even a particle field that moves exactly with
- *    the bar projects a v_i != v_bc next to a held node, and this d pulls those
- *    particles toward v_bc every step: a damper (the free vibration keeps 76 % of its
- *    energy at h 8 instead of 92 %);
- *  - both: d = 0, but the reaction is still the one of the jump from the projected v_i,
- *    R = m (v_bc - v^L_free) / dt, which the particles never receive: the load and the
- *    work it books are off by m (v_bc - v_i) (Fig. 6 h 8: a 7 % energy residual);
- *  - consistent: d = the change of v_bc over the step (0 at a constant grip speed:
- *    the held node's true acceleration), and the reaction is the impulse the
- *    particles do receive, R dt = m d - dt f_i.  The particles follow the held node
- *    through v^L (positions, strain), and the constraint exchanges no energy but its
- *    work R v_bc dt.
- *
- * Nodal mass limit (grid.node_mass = limited; usl and usavg, bilinear shapes).  Where
- * the strain is taken from v^L = v + dt f / m, a node that a particle barely touches
- * (weight N -> 0 as it nears the next node, while its gradient stays 1 / h) has a
- * stiffness-to-mass ratio growing as 1 / N, and the explicit step amplifies whatever
- * stress the particle holds: the cell-crossing instability of USL at a free surface
- * (Fig. 6 at h 2, 1 ppc: after the band has cut the bar, the gripped part's free end
- * column fails at delta 3.05, 3.18, 3.21 with dt, dt / 2, dt / 4, i.e. where N falls
- * below 0.087, 0.02, 0.005: the threshold scales with dt^2).  The bound used: node i's
- * row sum of the stiffness (Gershgorin) is at most k_i = E1 sum_p V_p a_ip b_p, with
- * a_ip = |Gx_ip| + |Gy_ip|, b_p = sum_j a_jp = 2 / hx + 2 / hy, and the step integrates
- * the node stably while k_i / m_i <= 4 / dt^2.  Past that, v^L takes the acceleration
- * with the mass m* = k_i / rmax, rmax = max(4 / dt^2, the ratio of a node inside a
- * uniformly filled lattice), so the bar's interior never changes at any dt the CFL bound
- * allows.  The particles' velocity increment keeps the lumped mass (momentum is kept
- * exactly; positions and strain move with v^L, as before), and the ledger's stress power
- * takes the strain's extra share, -dt f . (v^L* - v^L).  The bound predicts the onset
- * above within a factor of two (0.17 against 0.087 at fig6.ini's dt).  Inside a body
- * the limit never binds: Fig. 6 at h 2, 1 ppc gives the lumped step's load.csv bit for
- * bit up to delta 2.70, past the cut, until the free end nears a node.
+ * the constraints and their reactions (grid.bc: lagrangian, both or consistent; see
+ * hold), the ledger's node sums, the nodal velocities the other schemes take their
+ * strain from (USF, USAVG: v_i; MUSL: v'), and the nodal mass limit (grid.node_mass =
+ * limited: a node whose stiffness-to-mass bound k_i / m_i exceeds 4 / dt^2 takes its
+ * acceleration with the mass k_i / rmax, node_limit_consts).  What the other conditions
+ * and the lumped mass gave: docs/findings.md, "Time schemes, boundaries, energy".
  */
 #include <math.h>
 #include <stddef.h>

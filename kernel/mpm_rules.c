@@ -36,8 +36,9 @@ static const char *iface_rules(const mpm_scene *sc, char *err, size_t len)
   }
   if (sc->specimen != MPM_SPEC_BAR) /* the split beams' line: specimen_rules */
     return NULL;
-  const double a = sc->alpha_deg * (3.14159265358979323846 / 180.0), c = cos(a) / sin(a);
-  if (!(sin(a) > 0.0) || !(sc->imp_x - sc->imp_y * c > 0.0 && sc->imp_x - sc->imp_y * c < sc->L &&
+  const mpm_plane pl = mpm_plane_of(sc);
+  const double c = pl.tx / pl.nx;
+  if (!(pl.nx > 0.0) || !(sc->imp_x - sc->imp_y * c > 0.0 && sc->imp_x - sc->imp_y * c < sc->L &&
                            sc->imp_x + (sc->H - sc->imp_y) * c > 0.0 && sc->imp_x + (sc->H - sc->imp_y) * c < sc->L)) {
     snprintf(err, len, "decohesion.alpha: %g with path = interface: the line at alpha through the imperfection's "
              "point (%g, %g) must cross the bar from y = 0 to y = H inside 0 < x < L (allowed: an angle and point "

@@ -194,8 +194,7 @@ static int alloc_arrays(mpm_sim *s, const mpm_scene *sc, const mpm_layout *l, in
     for (int t = 0; ok && t < s->thr.nmax; t++)
       ok = (s->dws[t] = mpm_dwork_alloc()) != NULL;
     if (ok && sc->fields == MPM_FIELDS_TWO) {
-      const double a = sc->alpha_deg * (3.14159265358979323846 / 180.0);
-      ok = (s->g->fld = mpm_fields_alloc((size_t)s->g->nnx * (size_t)s->g->nny, sin(a), -cos(a))) != NULL;
+      ok = (s->g->fld = mpm_fields_alloc((size_t)s->g->nnx * (size_t)s->g->nny, s->plane.nx, s->plane.ny)) != NULL;
     }
   }
   return ok;
@@ -208,7 +207,7 @@ static int le_setup(mpm_sim *s, const mpm_scene *sc, const mpm_layout *l, double
   const int n1 = l->n1;
   /* Le = V_e / A_d (eq. 41): for a square of side a crossed by a line at alpha,
    * a * max(|sin a|, |cos a|).  a = h (cell) or h / n (particle), docs/model.md sec. 6. */
-  const double a = sc->alpha_deg * (3.14159265358979323846 / 180.0);
+  const double sa = s->plane.nx, ca = s->plane.tx;
   const double side = sc->le_mode == MPM_LE_PARTICLE ? h / n1 : h;
   /* STAIRCASE: on a grid of square cells a band along a line at angle a steps sideways
    * by one cell every cot a rows (a > 45 deg; tan a columns below), and the cell at each
@@ -217,12 +216,12 @@ static int le_setup(mpm_sim *s, const mpm_scene *sc, const mpm_layout *l, double
    * row: the band's volume per unit crack length is h (|sin a| + |cos a|). */
   const int rows = sc->le_mode == MPM_LE_ROW || sc->le_mode == MPM_LE_ZONE;
   const int stair = sc->le_mode == MPM_LE_STAIRCASE || rows;
-  const double Le = sc->le_factor * (stair ? h * (fabs(sin(a)) + fabs(cos(a))) : side * fmax(fabs(sin(a)), fabs(cos(a))));
+  const double Le = sc->le_factor * (stair ? h * (fabs(sa) + fabs(ca)) : side * fmax(fabs(sa), fabs(ca)));
   /* ROW: each row starts from the staircase length and then measures its own
    * (mpm_band.c); a row is dy = h / n high and its particles dx = h / n wide.  ZONE: the
    * same, counting only the particles within 2 h + dx of the row's lead. */
   *Le_out = Le;
-  return !rows || (s->band = mpm_band_alloc(s->nrow, s->nstrip, h / n1, sc->le_factor * (h / n1) * fabs(sin(a)), Le,
+  return !rows || (s->band = mpm_band_alloc(s->nrow, s->nstrip, h / n1, sc->le_factor * (h / n1) * fabs(sa), Le,
                                          sc->le_mode == MPM_LE_ZONE ? 2.0 * h + h / n1 : 0.0)) != NULL;
 }
 
@@ -269,7 +268,7 @@ static size_t place_bar(mpm_sim *s, const mpm_scene *sc, const mpm_layout *l)
       p->y[k] = p->y0[k] = (j + 0.5) * d;
       mpm_specimen_of(sc)->start_velocity(sc, p->x[k], p->y[k], &p->vx[k], &p->vy[k]);
       if (sc->vib_mode > 0) /* free vibration: mode m of the bar held at both ends */
-        p->vx[k] += sc->vib_amp * sin(sc->vib_mode * 3.14159265358979323846 * p->x[k] / sc->L);
+        p->vx[k] += sc->vib_amp * sin(sc->vib_mode * MPM_PI * p->x[k] / sc->L);
       p->m[k] = mp;
       p->V[k] = d * d;
       const double r2 = (p->x[k] - sc->imp_x) * (p->x[k] - sc->imp_x) +
@@ -287,7 +286,7 @@ static size_t place_bar(mpm_sim *s, const mpm_scene *sc, const mpm_layout *l)
 static mpm_status mark_paths(mpm_sim *s, const mpm_scene *sc, const mpm_layout *l, size_t imp, char *err, size_t errlen)
 {
   mpm_particles *p = s->p;
-  const double h = l->h, d = h / l->n1, a = sc->alpha_deg * (3.14159265358979323846 / 180.0);
+  const double h = l->h, d = h / l->n1;
   const size_t nbar = l->nbar;
   if (sc->model && (sc->imp_factor < 1.0 || sc->imp_stf_factor < 1.0)) {
     p->mat[imp] = MPM_MAT_IMP;
@@ -302,7 +301,7 @@ static mpm_status mark_paths(mpm_sim *s, const mpm_scene *sc, const mpm_layout *
    * path_reach h of the line at alpha through the imperfection's particle (n . (X - X_imp),
    * n the failure plane's normal); at 1 ppc and path_reach 0, the cells the line crosses. */
   if (sc->model && sc->path == MPM_PATH_LINE) {
-    const double sa = sin(a), ca = cos(a), w = mpm_scene_path_halfwidth(sc);
+    const double sa = s->plane.ty, ca = s->plane.tx, w = mpm_scene_path_halfwidth(sc);
     for (size_t q = 0; q < nbar; q++)
       if (p->mat[q] == MPM_MAT_BAR && fabs(sa * (p->x0[q] - p->x0[imp]) - ca * (p->y0[q] - p->y0[imp])) > w)
         p->mat[q] = MPM_MAT_ELASTIC;
@@ -347,6 +346,7 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
   if (!s)
     return MPM_ENOMEM;
   s->sc = *sc;
+  s->plane = mpm_plane_of(sc);
   s->vgrip = sc->speed;
   s->ctl_D0 = INFINITY; /* dissipation control: the target starts at D (mpm_control.c) */
   const mpm_layout l = layout_of(sc);
@@ -398,6 +398,12 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
 
 double mpm_scene_path_halfwidth(const mpm_scene *sc)
 {
-  const double a = sc->alpha_deg * (3.14159265358979323846 / 180.0);
-  return 0.5 * sc->h * (fabs(sin(a)) + fabs(cos(a))) + sc->path_reach * sc->h;
+  const mpm_plane pl = mpm_plane_of(sc);
+  return 0.5 * sc->h * (fabs(pl.nx) + fabs(pl.tx)) + sc->path_reach * sc->h;
+}
+
+mpm_plane mpm_plane_of(const mpm_scene *sc)
+{
+  const double a = sc->alpha_deg * (MPM_PI / 180.0);
+  return (mpm_plane){a, sin(a), -cos(a), cos(a), sin(a)};
 }

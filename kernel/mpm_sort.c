@@ -1,23 +1,16 @@
 /*
- * mpm_sort.c - keeping particles sorted by cell, and the strips that let the
- * particle-to-grid scatter run on several threads with no atomics and a summation
- * order that does not depend on the number of threads.
+ * mpm_sort.c - particles sorted by cell, and the strips that let the particle-to-grid
+ * scatter run on several threads with no atomics and a summation order independent of
+ * the thread count.
  *
- * Cells are numbered column by column (key = i * ncy + j), like the nodes, so a sweep
- * over sorted particles walks the nodal arrays forward.  Columns are grouped into strips
- * of MPM_STRIP; a strip's particles write to the node columns of the strip plus one on
- * each side, as they may drift by up to a cell between sorts.  Strips of one colour
- * (even or odd) are then at least MPM_STRIP - 2 > 0 columns apart and never share a
- * node, so each colour runs in parallel; each node receives its sums in a fixed order
- * (its even strip, then its odd strip, each in particle order) whatever the threads.
- * A particle that drifts further is caught in the grid-to-particle pass (resort flag).
- *
- * uGIMP (grid.shape = gimp) sorts by the cell of the dual grid, the unit square centred
- * on the particle's nearest node (key from floor(x / h + 1/2)): the particles of one
- * dual cell share their 3 x 3 nodes, so the scatter sums them in registers as the
- * bilinear one does per cell.  Its particles write the nearest node's neighbours, one
- * column further than a bilinear particle, so they may drift only half a cell before a
- * sort (mpm_step.c); strips of one colour still never share a node.
+ * Cells are numbered column by column (key = i * ncy + j), like the nodes.  Columns are
+ * grouped into strips of MPM_STRIP; a strip's particles write to its node columns plus
+ * one on each side, so strips of one colour (even or odd) never share a node and run in
+ * parallel; each node receives its sums in a fixed order (its even strip, then its odd
+ * one, each in particle order).  A particle that drifts further is caught by the gather
+ * (resort flag).  uGIMP sorts by the dual cell (the unit square centred on the nearest
+ * node, key from floor(x / h + 1/2)), whose particles share their 3 x 3 nodes, and may
+ * drift only half a cell between sorts.
  */
 #include <assert.h>
 #include <string.h>

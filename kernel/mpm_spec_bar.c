@@ -136,7 +136,7 @@ static void bar_line_point(const mpm_sim *s, size_t imp, double *lx, double *ly)
 /* U0 H / sin a: the line crosses the bar from y = 0 to y = H */
 static double bar_dis_full(const mpm_scene *sc)
 {
-  const double sa = fabs(sin(sc->alpha_deg * (3.14159265358979323846 / 180.0)));
+  const double sa = fabs(mpm_plane_of(sc).nx);
   return sc->U0 * sc->H / fmax(sa, 1e-3);
 }
 

@@ -1,34 +1,17 @@
 /*
  * mpm_static.c - the quasi-static solver: load increments solved by Newton's method on
  * the nodal force balance f_int(u) = 0 at the free degrees of freedom (eq. 3 without the
- * inertia of eq. 4), with the constitutive update of secs. 3-4 at every particle and its
- * algorithmic tangent (mpm_static_asm.c), and a path-following control:
- *
- *  - up to the first softening the grip's displacement delta leads.  The bar is linear
- *    there and starts unstressed, so the first increment is solved at a small delta and
- *    scaled to an eighth of the first particle's initiation (F = 0, eq. 23); seven more
- *    equal ones meet it exactly;
- *  - from then on the dissipation leads: C = sum U0 lambda V / Le, the dissipation of
- *    eq. 10 without its cap at lambda = 1 (a separated particle's lambda grows on with its
- *    opening, eq. 58, so C has no flat end where delta would be undetermined; the
- *    cohesive interface's segments count min(lambda, 1), mpm_static_iface.c).  Each
- *    increment adds tau to it, with delta an unknown (the constraint C(u, delta) = C_n +
- *    tau borders the system; two solves with one factorization).  C never decreases, so
- *    the control passes the peak and any snapback, where delta moves back as a test
- *    machine under crack-opening control does;
- *  - where C cannot grow (a segment of the interface's line separated and the rest
- *    unload: the load climbs back elastically) the grip leads, and hands back to the
- *    dissipation when an increment of it dissipates or it meets a limit point (resume);
- *  - below MPM_QS_SEP of the peak, where no increment is found, the interface's last
- *    segments let go in place (let_go);
- *  - once the bar is cut (or C stops answering delta) the grip leads again, and the cut
- *    part's vertical rigid motion is held.
- * Increments adapt to Newton's work: larger after an easy one, smaller after a hard one,
- * halved and retried when an increment fails.
- *
- * Convergence: the largest residual force below MPM_QS_FTOL times the largest load so far
- * (the curve is judged to 1e-3 of the peak load: nine orders below it), and D within
- * MPM_QS_DTOL of its target per unit of the full dissipation U0 H / sin a.
+ * inertia of eq. 4), with the update of secs. 3-4 and its algorithmic tangent at every
+ * particle (mpm_static_asm.c), and a path-following control:
+ *  - up to the first softening the grip's delta leads (eight equal increments to the
+ *    first initiation, F = 0 of eq. 23);
+ *  - then the dissipation leads: C = sum U0 lambda V / Le (eq. 10 uncapped) grows by tau
+ *    each increment with delta an unknown (a bordered system), through the peak and any
+ *    snapback; where C cannot grow the grip leads until it can (resume);
+ *  - below MPM_QS_SEP of the peak the interface's last segments let go (let_go); after
+ *    the cut the grip leads again.  Increments adapt to Newton's work.
+ * Convergence: residual below MPM_QS_FTOL times the largest load so far, and D within
+ * MPM_QS_DTOL of its target per unit of U0 H / sin a.
  */
 #include <math.h>
 #include <stdio.h>

@@ -1,7 +1,9 @@
 /*
- * mpm_static.h - private to kernel/: the parts of the quasi-static solver
- * (mpm_static.c): the particles' stencils and the tangent's assembly
- * (mpm_static_asm.c), and the sparse linear solve (mpm_static_lin.c).
+ * mpm_static.h - private to kernel/: the parts of the quasi-static solver: the control
+ * and the increments (mpm_static.c), the particles' stencils, trial state and the
+ * tangent's assembly (mpm_static_asm.c), the sparse linear solve (mpm_static_lin.c), the
+ * cohesive interface's line (mpm_static_iface.c) and the manufactured solution
+ * (mpm_static_mms.c).
  */
 #ifndef DELAM_MPM_STATIC_H
 #define DELAM_MPM_STATIC_H
@@ -76,8 +78,8 @@ struct mpm_static {
   double Wmax;            /* the largest external work so far (the ledger's scale)       */
   int kick;               /* 1: one small grip increment starts the softening            */
   double cring[100];      /* the control's measure over the last increments (stalls)     */
-  int nkick;
-  double kick_d;          /* its grip step                                              */              /* such increments in a row                                   */
+  int nkick;              /* such increments in a row                                   */
+  double kick_d;          /* its grip step                                              */
   double pk_d;             /* delta at the largest load so far                          */
   double ch_d, ch_P;      /* the last increment's chord over (pk_d, the peak load)       */
   int nel;                /* equal grip increments left before the first initiation      */
@@ -105,7 +107,7 @@ struct mpm_static {
   double *segx;           /* per segment: x of its first node                           */
   double *pD;             /* ... the area its dissipation counts (pA; 0 on a pre-crack)   */
   uint8_t *spre;          /* per segment: 1 on the pre-crack (open from the start)       */
-  mpm_material imat;      /* the law as a material of the update: E1 = G = k0, E2 = 0, Le 1 */
+  mpm_material imat;      /* the law as a material of the update: E1 = G = k0, E2 = -k0, Le 1 */
 };
 
 /* mpm_static_iface.c */

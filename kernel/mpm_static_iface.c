@@ -1,32 +1,16 @@
 /*
  * mpm_static_iface.c - the quasi-static solver's crack as a cohesive interface
  * (decohesion.path = interface): the line at alpha through the flaw's particle splits the
- * bar's particles into two sides (mpm_iface_side, the explicit interface's rule); a node
- * whose stencil holds particles of both sides gets a second displacement slot for the far
- * side's particles, and the jump W_I between its slots carries the line's law.
- *
- * A uniform stress puts the force sigma a_I on a split node's near slot, a_I the near
- * side's sum of V grad N = the integral of N_I n_s over the near side's boundary, where
- * the sides' particle squares meet in a staircase: on an inclined line a_I does not lie
- * along n node by node, only summed along the line.  So the law acts on segments of
- * a few cells along the line (the specimen's seg_cells: 3 on the bar, docs/static.md; one
- * node on a line along a node row), on their nodes' mean jump weighted by the staircase's
- * projected share A_I (facet_areas), and node I carries A_I t(W_seg) + T_I k0 (W_I - W_seg)
- * (T_I = A_I, at least half a particle's side; W_seg the A-weighted mean for the law, the
- * T-weighted one for the ties): the segment's traction, and a stiff tie on its node's
- * departure from the segment's mean, self-equilibrated over the segment, which takes up
- * the staircase's node-to-node differences (the explicit interface shares a segment's
- * traction among its nodes' stick impulses the same way).
- *
- * The law is the particle update itself (mpm_dcoh_update, with its algorithmic tangent),
- * driven by the jump instead of a strain: a material whose "strain" e_nn = w . n,
- * e_nt = w . t / 2 meets an isotropic stiffness k0 (E1 = G = k0, E2 = -k0, as the
- * update's rotation into the n-t frame needs) and Le = 1, so that the decohesion
- * "strain" is the opening itself, d ud = d lambda ubar0 m* (eqs. 19, 24).  Before the
- * traction reaches the strength (eq. 23) the segment is an elastic tie of k0 =
- * MPM_QS_TIE E / L per unit area, 1 / MPM_QS_TIE of the bar's compliance; after the onset
- * the traction softens with the opening to zero at lambda 1, where the segment separates
- * (eqs. 56-58; compression closes it first and is carried, shear is released).
+ * bar's particles into two sides (mpm_iface_side); a node whose stencil holds both sides
+ * gets a second displacement slot for the far side, and the jump W_I between its slots
+ * carries the line's law.  On an inclined line the sides meet in a staircase, so the law
+ * acts on segments of a few cells (the specimen's seg_cells; docs/static.md), on their
+ * nodes' mean jump weighted by the staircase's share A_I (facet_areas); node I carries
+ * A_I t(W_seg) + T_I k0 (W_I - W_seg), a stiff tie on its departure from the mean.
+ * The law (mpm_law.h; eqs. 19, 23-24, 56-58): an elastic tie of k0 = MPM_QS_TIE E / L per
+ * unit area before the onset; then the traction softens with the opening to zero at
+ * lambda 1, returned along the flow at the step's end (mpm_static_seg_law); a segment that
+ * separates takes the particle update (E1 = G = k0, Le 1: the "strain" is the jump).
  */
 #include <math.h>
 #include <stdio.h>
@@ -36,6 +20,7 @@
 #include "mpm_kernel.h"
 #include "mpm_fields.h"
 #include "mpm_iface.h"
+#include "mpm_law.h"
 #include "mpm_specimen.h"
 #include "mpm_static.h"
 
@@ -296,8 +281,8 @@ mpm_status mpm_static_iface_setup(mpm_static *q, char *err, size_t errlen)
   const mpm_sim *s = q->s;
   const mpm_particles *p = s->p;
   /* the line: the specimen's point at alpha, with the explicit interface's side rule */
-  const double a = s->sc.alpha_deg * (3.14159265358979323846 / 180.0);
-  const mpm_iface line = {.lx = s->line_x, .ly = s->line_y, .nx = sin(a), .ny = -cos(a), .tx = cos(a), .ty = sin(a),
+  const mpm_plane *pl = &s->plane;
+  const mpm_iface line = {.lx = s->line_x, .ly = s->line_y, .nx = pl->nx, .ny = pl->ny, .tx = pl->tx, .ty = pl->ty,
                           .on = 1e-9 * s->sc.h};
   const mpm_iface *f = &line;
   const size_t M = MPM_ST_MAX, nn = q->nn;
@@ -402,8 +387,10 @@ static void jump(const mpm_static *q, int nd, double W[2], double w[2])
 }
 
 
-/* psi(dl) = |(an / (snf (S + cn dl)), at / (stf (S + ct dl)))| - 1 with S = 1 - (lambda +
- * dl)^q: eq. 23 at the step's end over S, decreasing in dl (mpm_static_seg_law). */
+/* psi(dl) = se / S - 1 at the step's end (eq. 23, mpm_law_se's quantity), S = 1 -
+ * (lambda + dl)^q: the trial traction (an, at) against the strengths scaled by S + cn dl
+ * and S + ct dl; decreasing in dl (mpm_static_seg_law).  Written with hypot and pow, the
+ * arithmetic the static runs are measured with (docs/findings.md, "The static solver"). */
 static double seg_psi(const mpm_material *m, double lam, double an, double at, double cn, double ct, double dl)
 {
   const double S = 1.0 - pow(lam + dl, m->q);
@@ -434,10 +421,9 @@ int mpm_static_seg_law(const mpm_material *m, const mpm_dstate *in, const double
   s0.tt = in->sxx * tx * tx + 2.0 * in->sxy * tx * ty + in->syy * ty * ty;
   const double wn = w[0] * nx + w[1] * ny, wt = w[0] * tx + w[1] * ty;
   const double an = s0.nn + k0 * wn, at = s0.nt + k0 * wt; /* the elastic trial, eq. 7 */
-  const double S0 = 1.0 - pow(in->lam, m->q);
-  const double un0 = an > 0.0 ? an / m->snf : 0.0, ut0 = at / m->stf;
   double sn = an, st = at, dl = 0.0, dldn = 0.0, dldt = 0.0, dsn[2] = {1.0, 0.0}, dst[2] = {0.0, 1.0};
-  if (sqrt(un0 * un0 + ut0 * ut0) > S0) {
+  if (mpm_law_se(an > 0.0 ? an / m->snf : 0.0, at / m->stf) > mpm_law_S(in->lam, m->q)) { /* eq. 23 */
+    /* k0 ubar0 s0 times the flow per unit traction (eq. 24), in compression none */
     const double K = k0 * m->ubar0 * m->s0, cn = an > 0.0 ? K / (m->snf * m->snf) : 0.0, ct = K / (m->stf * m->stf);
     const double hi0 = 1.0 - in->lam;
     if (!(hi0 > 0.0) || seg_psi(m, in->lam, an, at, cn, ct, hi0) >= 0.0)
@@ -501,8 +487,8 @@ static void segment_eval(mpm_static *q, int g, int tangent, double *Ax, double J
     return;
   /* the segment's jump: the A-weighted mean the law takes, and the T-weighted mean the
    * ties pull toward, so that the ties' forces sum to zero over the segment (tied to the
-   * A-weighted mean, the nodes off the staircase, T_I > A_I, put a net force on it that
-   * the law did not carry: fig8's curve 0.0011 of Pmax off at h 8, now 4e-7) */
+   * A-weighted mean, the nodes off the staircase, T_I > A_I, would put a net force on it
+   * that the law does not carry) */
   double Ws[2] = {0.0, 0.0}, ws[2] = {0.0, 0.0}, Wt[2] = {0.0, 0.0};
   for (int a = a0; a < a1; a++) {
     const int i = q->sorder[a];

@@ -1,15 +1,11 @@
 /*
  * mpm_static_lin.c - the quasi-static solver's linear algebra: the tangent over the free
  * degrees of freedom, assembled into a compressed-column matrix, and its LU with partial
- * pivoting.  The tangent is unsymmetric (the associated law's flow direction frozen at the
- * trial state) and indefinite once the bar softens, so Cholesky will not do.
- *
- * Two factorizations, chosen by the pattern's bandwidth p (the unknowns are numbered node
- * by node along the grid's columns, so p is about twice a column of nodes):
- *  - GSL's banded LU where p <= MPM_LIN_BAND_MAX: on this machine it factorizes Fig. 6's
- *    tangent at h 2, 4 ppc (3,300 unknowns, p 40) in 1.9 ms against UMFPACK's 20 ms;
- *  - UMFPACK (SuiteSparse) beyond, with its fill-reducing ordering computed once per run
- *    (the pattern is fixed), where a band would cost n p^2.
+ * pivoting (the tangent is unsymmetric and indefinite once the bar softens).  Two
+ * factorizations, chosen by the pattern's bandwidth p (unknowns numbered node by node
+ * along the grid's columns): GSL's banded LU where p <= MPM_LIN_BAND_MAX, UMFPACK
+ * (SuiteSparse) beyond, with its fill-reducing ordering computed once per run.  Their
+ * times: docs/static.md.
  */
 #include <stdlib.h>
 #include <string.h>

@@ -1,35 +1,16 @@
 /*
- * mpm_static_mms.c - code verification of the quasi-static solver (mpm_static*.c) by a
- * manufactured solution whose stress varies (mpm.h mpm_static_mms_error; the order
- * asserted in kernel/tests/test_mpm_static_mms.c, measured in docs/static.md):
+ * mpm_static_mms.c - code verification of the quasi-static solver by a manufactured
+ * solution whose stress varies (mpm.h mpm_static_mms_error; the order asserted in
+ * kernel/tests/test_mpm_static_mms.c, measured in docs/static.md):
  *
  *   u_x = A sin(kx X) cos(ky Y),  u_y = A cos(kx X) sin(ky Y / 2),  kx = pi / L, ky = pi / H
  *
- * on the bar [0, L] x [0, H] = 192 x 32, plane stress, E 1024, nu 0.25, elastic
- * (decohesion.model = 0).  Every strain component varies, and not in proportion:
- * e_xx = A kx cos(kx X) cos(ky Y), e_yy = A (ky / 2) cos(kx X) cos(ky Y / 2),
- * g_xy = -A ky sin(kx X) sin(ky Y) - A kx sin(kx X) sin(ky Y / 2).  With
- * D = E / (1 - nu^2) and G = E / (2 (1 + nu)) the body force b = -div sigma(u) is
- *   b_x = -(D u_x,XX + G u_x,YY + (nu D + G) u_y,XY)
- *   b_y = -(D u_y,YY + G u_y,XX + (nu D + G) u_x,XY),
- * each second derivative in closed form below.  Its nodal force is the particles'
- * quadrature, f_a = sum_p V_p N_a(X_p) b(X_p), with the stiffness's own weights.
- *
- * Boundary: the exact u is held at every node of the body's perimeter (X = 0, L and
- * Y = 0, H), both components.  The particles' squares tile the body, so no particle
- * reaches a node outside it: the bilinear stencil stays in its cell, and uGIMP's weight
- * on a node beyond the edge is the overlap of the particle's square with that node's
- * support, which ends at the edge (rounding, dropped by the stencil).  The active nodes
- * are then the body's node lattice, its perimeter the boundary, and holding the exact
- * nodal values there is the finite element's own Dirichlet condition (its interpolant of
- * the data): no term of the boundary's own.
- *
- * The problem is linear, so one Newton step from u = 0 at the free nodes solves it; the
- * residual after it is checked.  Error: the RMS over the particles of the displacement
- * interpolated from the nodes with the stiffness's weights (bilinear N, or uGIMP's
- * particle-averaged S) at the particle, less u at its reference place, over A; and the
- * RMS over the free nodes of the nodal displacement's error, over A.  MPM_EINVAL for an
- * h, shape or ppc the scene or the static solver refuses (one bilinear point a cell).
+ * on the elastic bar [0, L] x [0, H] (192 x 32, plane stress, E 1024, nu 0.25), with the
+ * body force b = -div sigma(u) in closed form (mms_exact) as the particles' quadrature
+ * f_a = sum_p V_p N_a(X_p) b(X_p), and the exact u held at every perimeter node (the
+ * finite element's Dirichlet condition).  One Newton step solves it.  Error: the RMS over
+ * the particles of the interpolated displacement's error, and over the free nodes of the
+ * nodal one, both over A.  MPM_EINVAL for an h, shape or ppc the solver refuses.
  */
 #include <assert.h>
 #include <math.h>
@@ -43,14 +24,16 @@
 #include "mpm_specimen.h"
 #include "mpm_static.h"
 
-#define MMS_PI 3.14159265358979323846
 #define MMS_A 0.03
 #define MMS_RTOL 1e-9 /* the residual after the step, of the largest body force on a node */
 
-/* The exact displacement u and body force b = -div sigma(u) at (X, Y). */
+/* The exact displacement u and body force b = -div sigma(u) at (X, Y): with
+ * D = E / (1 - nu^2), G = E / (2 (1 + nu)),
+ *   b_x = -(D u_x,XX + G u_x,YY + (nu D + G) u_y,XY),
+ *   b_y = -(D u_y,YY + G u_y,XX + (nu D + G) u_x,XY). */
 static void mms_exact(const mpm_scene *sc, double X, double Y, double u[2], double b[2])
 {
-  const double kx = MMS_PI / sc->L, ky = MMS_PI / sc->H, A = MMS_A;
+  const double kx = MPM_PI / sc->L, ky = MPM_PI / sc->H, A = MMS_A;
   const double D = sc->E / (1.0 - sc->nu * sc->nu), G = sc->E / (2.0 * (1.0 + sc->nu)), C = sc->nu * D + G;
   const double sx = sin(kx * X), cx = cos(kx * X), sy = sin(ky * Y), cy = cos(ky * Y);
   const double sh = sin(0.5 * ky * Y), ch = cos(0.5 * ky * Y);

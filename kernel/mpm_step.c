@@ -1,42 +1,17 @@
 /*
- * mpm_step.c - one explicit MPM step as a list of named phases (mpm_phase.h): the start
- * (threads, grip, cut, grid laid, sort), the scatter, the scheme's phase before the
- * node update, the node update, the scheme's gather, the end (head, ledger).  The
- * scheme (mpm_scheme_*.c) and the optional physics' hooks are chosen once, at setup
- * (mpm_step_setup); the step tests no method option.  The paper's USL (sec. 2):
+ * mpm_step.c - one explicit MPM step as a list of named phases (mpm_phase.h): start,
+ * scatter, the scheme's phase before the node update, node update (mpm_nodes.c), the
+ * scheme's gather, end (head, ledger).  Scheme and hooks are chosen once
+ * (mpm_step_setup).  The paper's USL (sec. 2):
  *
  *   p2g   m_i, (m v)_i, f_i = -sum_p V_p sigma_p . G_ip            eqs. 2, 3
  *   grid  v_i = (m v)_i / m_i,  v^L_i = v_i + dt f_i / m_i; BCs      eq. 4
  *   g2p   x_p += dt sum v^L_i N_ip,  v_p += sum (v^L_i - v_i) N_ip    eqs. 5, 6
  *         de_p = dt sym(sum v^L_i (x) G_ip), then the decohesion update  eq. 7
  *
- * N and G are taken at the start of the step in every pass (mpm_shape.h).  The
- * scatters are mpm_scatter.c's (bilinear) and mpm_gimp.c's (uGIMP); the gathers below
- * are one loop instantiated per pass, shape and field count (with two fields, once
- * nodes are split, each stencil is tested for split nodes).
- *
- * Boundary conditions, the node update of eq. 4 and the nodal mass limit: mpm_nodes.c.
- *
- * Energy (the ledger; docs/verification.md derives it).  With d_i the FLIP increment at node i
- * and dv_p = sum d_i N_ip, a step changes KE_p by A + Kp exactly (A = sum m_i v_i . d_i,
- * Kp = sum m_p |dv_p|^2 / 2) and SE + W_coh by B + Q (B = -dt sum f_i . u_i, u_i the
- * velocity the strain is taken from; Q = sum V dsigma : de / 2, formed by the gather as
- * (sum V sigma_new : de - B) / 2).  With K = sum m_i |d_i|^2 / 2 and the constraint's
- * work in W_ext, the step's loss splits into L_flip = K - Kp, L_bc (held nodes,
- * mpm_nodes.c), L_scheme (the integration's own), W_head (the rigid head) and L_contact
- * (mpm_fields.c) and L_damp (mpm_damping.c), every one a sum the passes form anyway, in a fixed order; what does
- * not close is summary.json's energy residual.
- *
- * Threads: the scatters run strip by strip, even strips then odd (mpm_sort.c); the
- * gathers are independent per particle.  Results are bit-for-bit the same for any
- * number of threads.
- *
- * Speed (`delam bench`; README "Performance"), without obscuring the equations:
- *  - the scatter sums a cell's shares in registers (mpm_scatter.c), and a gather reads
- *    a node's (px, py, fx, fy) in one load from its 64-byte record (mpm_node.h);
- *  - the gather does the elastic trial inline; the few particles that may soften go on
- *    a per-thread list and get the full update (mpm_decohesion.c) after each chunk;
- *  - no allocation, no atomics and no per-particle timing in the loops.
+ * N and G are taken at the start of the step.  The energy ledger's terms (A, K, B, Q,
+ * L_flip, L_bc, L_scheme, ...) are derived in docs/verification.md.  Scatters run strip
+ * by strip (mpm_sort.c), gathers per particle: the same bits for any thread count.
  */
 #include <assert.h>
 #include <math.h>
@@ -591,7 +566,7 @@ static int scatter_zeroed(mpm_sim *s)
 static mpm_status p2g(mpm_sim *s, char *err, size_t errlen)
 {
   mpm_grid *g = s->g;
-  g->body_k = 3.14159265358979323846 / s->sc.L;
+  g->body_k = MPM_PI / s->sc.L;
   g->body_now = s->sc.body_amp != 0.0 ? s->sc.body_amp * sin(s->sc.body_omega * s->t) : 0.0;
   if (!scatter_zeroed(s))
     return MPM_OK;

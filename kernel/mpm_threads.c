@@ -1,31 +1,16 @@
 /*
  * mpm_threads.c - how many threads a step uses when the caller leaves it open
- * (mpm_sim_alloc with nthreads <= 0).
- *
- * Results do not depend on the number of threads (mpm_sort.c, mpm_step.c), so the
- * count may change between any two steps.  On a machine whose other cores are busy,
- * OpenMP's threads wait for a descheduled partner at every barrier: measured on this
- * project's 2-core machine with `yes > /dev/null` on one core, Fig. 6 at h 1, 4 ppc ran
- * 3.8 s with one thread and 18.5 s with two (docs/library.md).  Passive waiting
- * (OMP_WAIT_POLICY=passive) is no cure: Fig. 6 at h 8 took 12 s instead of 0.3 s, the
- * sleeping threads being woken five times a step.  So the count is measured, not
- * guessed:
- *  - below MPM_THREADS_MIN_PARTICLES particles one thread, always (the parallel
- *    regions cost more than they share);
- *  - a machine with no idle core (the load average at least the cores less one half)
- *    gets no probe: the run stays on one thread and asks again after a stretch;
- *  - otherwise the step alternates a probe (MPM_PROBE_STEPS steps on one thread, as
- *    many on all) with a stretch on the faster count; the stretch doubles while the
- *    choice holds (up to MPM_PERIOD_MAX steps) and starts again short when it flips,
- *    so a machine that becomes busy, or idle, is followed within a few hundred steps;
- *  - a probe on many threads ends as soon as it is twice as slow as one thread, and a
- *    stretch on many threads falls back to one thread after any window of
- *    MPM_PROBE_STEPS steps slower in total than one thread's;
- *  - after a probe that lost, the stretch on one thread is long enough that the time
- *    the probe lost is at most MPM_PROBE_SHARE of it, and twice that after each further
- *    loss in a row.
- * The clock is read once per step (mpm_threads_tick at the top of mpm_sim_step); the
- * interval between two ticks is charged to the step that ran in it.
+ * (mpm_sim_alloc with nthreads <= 0).  Results do not depend on the count (mpm_sort.c),
+ * so it may change between any two steps.  On a machine whose other cores are busy,
+ * OpenMP's threads wait at every barrier for a descheduled partner, so the count is
+ * measured, not guessed (docs/findings.md, "Threads and speed"):
+ *  - below MPM_THREADS_MIN_PARTICLES particles, or with no idle core (load average at
+ *    least the cores less one half), one thread;
+ *  - otherwise a probe (MPM_PROBE_STEPS steps on one thread, as many on all) alternates
+ *    with a stretch on the faster count, doubling while the choice holds (up to
+ *    MPM_PERIOD_MAX steps); a many-thread probe or stretch slower than one thread falls
+ *    back early, and a lost probe costs at most MPM_PROBE_SHARE of the next stretch.
+ * The clock is read once per step (mpm_threads_tick).
  */
 #include <stdio.h>
 #include <time.h>

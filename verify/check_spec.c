@@ -1,18 +1,14 @@
 /*
  * check_spec.c - `delam check` on a split beam's folder (specimen.type = dcb or els,
  * docs/specimens.md): the run against references it did not make.
- *  - compliance: delta / P of the first row (the linear branch) against the 2-D
- *    finite-element C(a0) of data/fe (FreeFEM; scaled by 1024 / E);
- *  - peak (DCB): the peak load and delta there against the cohesive beam (a Timoshenko
- *    arm on the paper's law in series with the ligament's elastic foundation,
- *    analytic/ana_spec_czm.c);
- *  - branch: the load once the crack front is two arm thicknesses past a0 against the
- *    2-D LEFM branch, P = sqrt(2 G_c / C'(a)), delta = C P with C(a) and C'(a) of data/fe
- *    and G_c = q U0 / (q + 1);
- *  - crack_tip never decreasing; D = U0 x growth along the propagation (the slope of D
- *    against crack_tip); the ledger W_ext = SE + W_coh at every row;
- *  - ELS: how far delta falls back after the peak (the unstable growth; information)
- *    and the pre-crack's faces not overlapping (summary.json's gap_min >= -1e-6 h).
+ *  - compliance: delta / P of the linear branch against the 2-D finite-element C(a0) of
+ *    data/fe (FreeFEM; scaled by 1024 / E);
+ *  - peak (DCB): against the cohesive beam (analytic/ana_spec_czm.c);
+ *  - branch: the load two arm thicknesses past a0 against the 2-D LEFM branch,
+ *    P = sqrt(2 G_c / C'(a)), delta = C P (C, C' of data/fe, G_c = q U0 / (q + 1));
+ *  - crack_tip never decreasing; D = U0 x growth; W_ext = SE + W_coh at every row;
+ *  - ELS: delta's fall after the peak (information) and the pre-crack's faces not
+ *    overlapping (gap_min >= -1e-6 h).
  * Tolerances grow with h / t where the measured error does (docs/specimens.md, table).
  */
 #include <math.h>

@@ -76,7 +76,7 @@ static void cut_band(mpm_sim *s)
   mpm_particle_view v;
   mpm_sim_particles(s, &v);
   const mpm_particle_view *p = &v;
-  const double a = sc->alpha_deg * (3.14159265358979323846 / 180.0), d = sc->h / sqrt((double)sc->ppc);
+  const double a = sc->alpha_deg * (ANA_PI / 180.0), d = sc->h / sqrt((double)sc->ppc);
   const int nrow = (int)lround(sc->H / d);
   for (int j = 0; j < nrow; j++) {
     const double y = (j + 0.5) * d, xl = 0.5 * sc->L + (y - 0.5 * sc->H) * cos(a) / sin(a);

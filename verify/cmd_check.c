@@ -1,26 +1,16 @@
 /*
  * cmd_check.c - `delam check [--scene SCENE] DIR`: judges a run folder that any code
- * wrote, with the checks `delam verify` applies to delam's own runs (policy.c, the
- * measurements of metrics.h; nothing here decides a tolerance).  A folder delam wrote
- * is judged against its own scene.ini (the effective scene the run computed); SCENE and
- * the options, if given, must agree with it on every key a check reads (ver_check_scene).
- * Another code's folder (no scene.ini) is judged against SCENE with the options.
+ * wrote, with the checks `delam verify` applies to delam's own runs (policy.c, metrics.h;
+ * nothing here decides a tolerance).  A delam folder is judged against its own scene.ini
+ * (SCENE and the options must agree with it: ver_check_scene); another code's folder
+ * against SCENE with the options.
  *
- * Input (docs/output-formats.md, "Checking a run of another code"):
- *   DIR/load.csv     required: a header naming at least delta and P_grip (P_fixed is
- *                    used when present), then one row per output time;
- *   DIR/energy.csv   optional: W_ext, KE, SE, W_coh, D (and delam's ledger L_bc, L_flip,
- *                    L_scheme, W_head, L_contact where present); gives the dissipation and the
- *                    energy balance; without it the external work is the area under
- *                    the load-deflection curve and those two checks are left out;
- *   DIR/final.csv    optional (or --particles FILE): the final particles, x0, y0 and
- *                    lambda; gives the band width and the crack angle.
- * A first line starting with '#' (delam's schema line) and blank lines are skipped.
- * Output: one line per check, an informational line (D at the separation, never judged),
- * the verdict, DIR/check.json.  Exit status 0 every check
- * passed (or is within a known limit), 1 a check failed or check.json could not be
- * written, 2 unusable input (the file, line and column are named): also a run that did
- * not finish and files that disagree (read_inputs).
+ * Input (docs/output-formats.md, "Checking a run of another code"): DIR/load.csv
+ * (required: delta and P_grip, P_fixed if present), DIR/energy.csv (optional: W_ext, KE,
+ * SE, W_coh, D and delam's ledger; without it the external work is the curve's area)
+ * and DIR/final.csv or --particles FILE (optional: x0, y0, lambda).  Output: one line
+ * per check, the verdict, DIR/check.json.  Exit status 0 every check passed (or within a
+ * known limit), 1 a check failed or check.json could not be written, 2 unusable input.
  */
 #include <errno.h>
 #include <math.h>

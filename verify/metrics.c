@@ -11,7 +11,6 @@
 
 #include "metrics.h"
 
-#define PI 3.14159265358979323846
 
 int ver_fit_line(const double *x, const double *y, size_t n, double *slope, double *icpt)
 {
@@ -132,7 +131,7 @@ double ver_drop_width(const double *delta, const double *P, size_t n)
 double ver_band_width(const double *x0, const double *y0, const double *lam, size_t n, double thr,
                       double alpha_deg, double h, int ppc, double H, double *extent, size_t *count)
 {
-  const double a = alpha_deg * PI / 180.0, nx = sin(a), ny = -cos(a);
+  const double a = alpha_deg * ANA_PI / 180.0, nx = sin(a), ny = -cos(a);
   double lo = INFINITY, hi = -INFINITY;
   size_t c = 0;
   for (size_t i = 0; i < n; i++) {
@@ -222,7 +221,7 @@ double ver_crack_angle(const double *x0, const double *y0, const double *lam, si
   /* principal axis of the scatter matrix: tan 2 theta = 2 sxy / (sxx - syy) */
   if (sxy == 0.0 && sxx == syy)
     return NAN;
-  double th = 0.5 * atan2(2.0 * sxy, sxx - syy) * 180.0 / PI;
+  double th = 0.5 * atan2(2.0 * sxy, sxx - syy) * 180.0 / ANA_PI;
   if (th < 0)
     th += 180.0;
   if (th >= 180.0)

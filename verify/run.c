@@ -1,24 +1,15 @@
 /*
  * run.c - the time loop of one scene and its outputs.
  *
- * Stop rule: a run answers its question once the bar has separated.  Separation is
- * detected in two ways, and the first one counts:
- *  - kinematically: the separated particles (lambda past the separation threshold,
- *    eqs. 56-58) cut every row of particles, so no row still holds the bar together;
- *  - by the load: after the peak, the load averaged over the bar's longest natural
- *    period (4 L / c, so that ringing after a sudden release averages out) falls below
- *    run.sep_load times the peak (delta at the centre of that window).
- * The kinematic test catches inclined bands, where one velocity per cell keeps a few %
- * of the load on the grip after the band has failed and the load test never fires.
- * The run goes on for run.stop_margin more end displacement (so the opening grows past
- * ubar0 and the dissipation settles), and past the last requested snapshot, and never
- * beyond run.end_delta.
+ * Stop rule: the run has answered once the bar has separated, detected the first of two
+ * ways: kinematically, separated particles (eqs. 56-58) cut every particle row; or by
+ * the load, after the peak its mean over the bar's longest period 4 L / c falls below
+ * run.sep_load times the peak.  The run goes on for run.stop_margin more end
+ * displacement and past the last requested snapshot, never beyond run.end_delta.
  *
  * Loads are written as averages over each output interval (impulse / time), which is
- * what a load cell reads; the instantaneous reaction rings at the grid's frequencies.
- *
- * Every file is written under a temporary name and renamed when complete;
- * summary.json, written last, says complete: true only for a finished run.
+ * what a load cell reads.  Every file is written under a temporary name and renamed when
+ * complete; summary.json, written last, says complete: true only for a finished run.
  */
 #include <errno.h>
 #include <math.h>
@@ -170,7 +161,7 @@ static int run_setup(run_state *r, char *err, size_t errlen)
     r->last_snap = fmax(r->last_snap, r->vs->snap[i]);
   ver_scene_case_id(r->vs, r->id, sizeof r->id);
   mpm_sim_energy(r->s, &r->e0);
-  r->kmode = sc->vib_mode * 3.14159265358979323846 / sc->L;
+  r->kmode = sc->vib_mode * ANA_PI / sc->L;
   r->modal_prev = sc->vib_mode > 0 ? modal_velocity(r->s, r->kmode) : 0.0;
   r->cross_first = r->cross_last = -1.0;
   return 0;

@@ -194,7 +194,7 @@ static void scene_defaults(ver_scene *vs, const char *path)
 static void resolve_damping(ver_scene *vs)
 {
   if (vs->damping_critical && vs->sc.L > 0.0 && vs->sc.rho > 0.0 && vs->sc.E > 0.0)
-    vs->sc.damping = 2.0 * 3.14159265358979323846 * sqrt(vs->sc.E / vs->sc.rho) / vs->sc.L;
+    vs->sc.damping = 2.0 * ANA_PI * sqrt(vs->sc.E / vs->sc.rho) / vs->sc.L;
   /* time.damping_beta = cell: h / c, the beta that damps the grid's fastest axial mode,
    * omega = 2 c / h on a lumped 1-D lattice, critically (beta omega / 2 = 1) */
   if (vs->damping_beta_cell && vs->sc.h > 0.0 && vs->sc.rho > 0.0 && vs->sc.E > 0.0)
@@ -340,7 +340,7 @@ int ver_scene_set(ver_scene *vs, const char *assignment, char *err, size_t errle
 
 double ver_scene_vib_period(const mpm_scene *sc)
 {
-  const double c = sqrt(sc->E / sc->rho), k = sc->vib_mode * 3.14159265358979323846 / sc->L;
+  const double c = sqrt(sc->E / sc->rho), k = sc->vib_mode * ANA_PI / sc->L;
   return 2.0 * sc->L / (sc->vib_mode * c) * sqrt(1.0 + sc->nu * sc->nu * k * k * sc->H * sc->H / 12.0);
 }
 

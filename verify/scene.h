@@ -51,9 +51,9 @@ typedef struct {
 int ver_method_find(const char *name);        /* index of a preset, or -1            */
 const char *ver_method_name(int preset);      /* its name; "none" for -1             */
 int ver_method_rows(int preset, const char *const **sets); /* its rows: how many     */
-int ver_method_key(int ki);
-int ver_method_held(int ki); /* 1: a method key the presets hold, listed apart */
-const char *ver_method_where(const ver_scene *vs); /* "scene file", "command line" or "none" */                   /* 1 if key ki of the table is a method key */
+int ver_method_key(int ki);                   /* 1 if key ki of the table is a method key */
+int ver_method_held(int ki);                  /* 1: a method key the presets hold, listed apart */
+const char *ver_method_where(const ver_scene *vs); /* "scene file", "command line" or "none" */
 void ver_method_list(char *buf, size_t len);  /* "paper, band or interface"         */
 int ver_method_apply_file(ver_scene *vs, int line, char *msg, size_t len);
 int ver_method_apply_cmd(ver_scene *vs, char *msg, size_t len);

@@ -1,33 +1,16 @@
 /*
  * test_mpm_damping.c - the damping of the nodal velocities about their slow drift
  * (time.damping = c, mpm_damping.c) against values that do not come from the code:
- *  - free vibration of the elastic bar of vibration.ini (h 8, 1 ppc, MUSL, consistent
- *    boundaries, first axial mode) with c = 0.05 and a low-pass too slow to follow the
- *    swing (tau = 1e6, so the drift stays the loading's, 0): every free node's velocity
- *    then feels the force -c m v, mass-proportional damping, under which a mode's
- *    energy decays as exp(-c t) (u'' + c u' + w^2 u = 0, light damping, c / w = 0.1).
- *    Over two periods (t = 24) the energy kept is the undamped run's times exp(-c t)
- *    (0.301), within 2 % (the held end columns are not damped; the decay's own ripple
- *    is of order c / w);
- *  - the ledger: W_ext + E0 = KE + SE + W_coh + the booked terms including L_damp, to
- *    1e-9 of E0, and L_damp > 0;
- *  - a quasi-static pull of the same bar (grip at speed 1e-3, no vibration) feels no
- *    damping: the grip load at delta 0.2 is E H delta / L (the bar's elastic slope;
- *    plane stress, free lateral faces) within 1 % with and without damping (c = 0.1),
- *    and the two loads agree to 0.1 % (the drift the damping is taken about starts from
- *    the loading's own steady field);
- *  - a damped decohesion run (fig8's bar at h 4, uGIMP, two velocity fields, MUSL, a
- *    ten times faster grip) through the cut to delta 1 gives the same bits on 1 and 2
- *    threads, and up to the cut the bits of the same run undamped (time.damping_from =
- *    cut: nothing acts before the band has cut the bar); damped about the parts
- *    (time.damping_about = parts) the same, and its ledger closes to 1e-6 of W_ext;
- *  - damping about the parts (mpm_damping_parts) on a bar held in x at both ends and cut
- *    by a separated particle column: the grip's part keeps its y translation (free) and
- *    the grip's x velocity, and a stretch of it, v_x = eps (x - 44) (44 the centre of
- *    the rectangle of particle centres 4-84), keeps (1 - c dt) of itself; a rotation of
- *    the fixed end's part (held, so not its rigid motion) keeps (1 - c dt); the
- *    separated column is left alone; L_damp gains the kinetic energy lost, (1 - (1 -
- *    c dt)^2) times the stretch's and the rotation's.
+ *  - free vibration of vibration.ini's bar (h 8, 1 ppc, MUSL, first mode) with c = 0.05
+ *    and a low-pass too slow to follow it: mass-proportional damping, so the energy kept
+ *    over two periods is the undamped run's times exp(-c t) within 2 %;
+ *  - the ledger closes with L_damp to 1e-9 of E0, and L_damp > 0;
+ *  - a quasi-static pull feels no damping: the grip load at delta 0.2 is E H delta / L
+ *    within 1 % with and without c = 0.1, the two within 0.1 %;
+ *  - a damped decohesion run gives the same bits on 1 and 2 threads, and up to the cut
+ *    the undamped run's bits (damping_from = cut); damped about the parts the same;
+ *  - damping about the parts (test_damping_parts): a part's rigid motion with its held
+ *    end is kept, a stretch and a rotation keep (1 - c dt), L_damp gains what they lose.
  */
 #include <math.h>
 #include <setjmp.h>

@@ -1,17 +1,14 @@
 /*
  * test_mpm_decohesion.c - the pure constitutive update mpm_dcoh_update (secs. 3-4;
- * docs/model.md secs. 1, 3, 4) driven at a single particle, checked against values that do
- * not come from the update itself:
- *  - plane-stress elasticity C computed here from E and nu (docs/model.md sec. 1);
+ * docs/model.md secs. 1, 3, 4) at a single particle, against values that do not come
+ * from the update itself:
+ *  - plane-stress elasticity C computed here from E and nu;
  *  - the softening branch of a strain-driven particle, solved here by bisection from
- *    F = 0 (eq. 23) and the weak compatibility of eqs. 39-41 (see softening_root);
- *  - the traction work per unit area at separation, UF = q U0 / (q + 1) (eq. 25),
- *    and the dissipation U0 lambda -> U0;
+ *    F = 0 (eq. 23) and the weak compatibility of eqs. 39-41 (softening_root);
+ *  - the traction work at separation UF = q U0 / (q + 1) (eq. 25), dissipation -> U0;
  *  - the flow directions of eqs. 24 (Model 1) and 26 (Model 2) evaluated here;
- *  - the decisions in the header of mpm_decohesion.c: Macaulay bracket, contact of a
- *    separated particle, purity, and the reversed-shear option (closing).
- * The algorithmic tangent mpm_dcoh_tangent is checked against central differences of
- * mpm_dcoh_update on every path (and against the closed form of a Mode I band).
+ *  - the Macaulay bracket, contact of a separated particle, purity, reversed shear;
+ *  - the algorithmic tangent against central differences on every path.
  * Material (the paper's Fig. 6 data): E 1024, nu 0.25, rho 1, U0 0.375, s0 1,
  * separation threshold 0.98, Le 8 (one cell of the Fig. 6 grid).
  */

@@ -1,28 +1,16 @@
 /*
- * test_mpm_energy.c - the energy the step keeps and the ledger that books what it
- * loses (mpm_step.c "Energy"), on the free vibration of the elastic bar held in x at
- * both ends (data/scenes/vibration.ini: L 192, H 32, E 1024, nu 0.25, rho 1, 1 ppc,
- * dt = 0.1 h / 8, released from the first axial mode vx = 0.03 sin(pi X / L), 25
- * periods), against values that do not come from the code:
- *  - the period against the bar's, T = 2 L / c, c = sqrt(E / rho), times Love's
- *    lateral-inertia factor sqrt(1 + nu^2 k^2 H^2 / 12), k = pi / L (+0.07 %): bilinear
- *    cells with lumped mass are second order in h, so the bound is 0.5 % at h 8 and a
- *    quarter of it at h 4 (measured +0.31 % and +0.08 % for every scheme);
- *  - the energy kept, (KE + SE)(end) / (KE + SE)(0), against 1 (nothing in the scene
- *    does work); bounds from the issue that asked for them: USL >= 0.90 at h 8 (its own
- *    dissipation, 7.5 % measured), the default scheme (MUSL) and USF within 3 % and
- *    USAVG within 4 % (measured -2.0, +2.0, -3.5 %), every scheme within 1.5 % at h 4
- *    (measured at most 1.4 %);
- *  - the order at which the loss falls with h: at least 3.5 per halving (measured
- *    USL 5.4 and 4.5, MUSL 7.4 and 6.6 from h 8 to 4 to 2), i.e. nearly second order;
- *  - the energy balance: W_ext + KE(0) + SE(0) = KE + SE + W_coh + the booked terms,
- *    to 1e-9 of the start (the booked terms are sums over nodes and particles that the
- *    step forms; KE and SE are summed from the particle state afterwards), and
- *    L_flip >= 0 (a projection cannot create kinetic energy), L_bc = 0 for the
- *    consistent boundary treatment;
- *  - Fig. 6 with a brittle bar (U0 = 0.01, eq. 35: g = 0.053, a snapback) to delta 0.6:
- *    the balance with the booked terms closes to 1 % of W_ext although KE + SE keep
- *    almost nothing of the released energy;
+ * test_mpm_energy.c - the energy the step keeps and the ledger that books what it loses
+ * (docs/verification.md), on the free vibration of vibration.ini's bar (first axial
+ * mode, 25 periods), against values that do not come from the code:
+ *  - the period against T = 2 L / c times Love's factor sqrt(1 + nu^2 k^2 H^2 / 12),
+ *    k = pi / L: within 0.5 % at h 8, a quarter of it at h 4 (second order in h);
+ *  - the energy kept against 1: USL >= 0.90 at h 8, MUSL and USF within 3 %, USAVG
+ *    within 4 %, every scheme within 1.5 % at h 4; the loss falls at least 3.5 times per
+ *    halving of h;
+ *  - the balance W_ext + E0 = KE + SE + W_coh + the booked terms to 1e-9 of E0,
+ *    L_flip >= 0, L_bc = 0 for the consistent boundaries;
+ *  - Fig. 6 with a brittle bar (U0 = 0.01, g = 0.053 by eq. 35) to delta 0.6: the
+ *    balance closes to 1 % of W_ext;
  *  - USF and USAVG give the same bits on 1 and 2 threads.
  */
 #include <math.h>

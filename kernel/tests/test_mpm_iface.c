@@ -1,37 +1,17 @@
 /*
  * test_mpm_iface.c - the crack as a cohesive interface (decohesion.path = interface,
  * mpm_iface.c) on the paper's inclined bar (L 192, H 32, alpha 60), against closed forms
- * and conservation laws, not against the code's own output:
- *  - Mode I (Fig. 7's strengths, snf 1, stf 10) and Mode II (Fig. 8's, snf 10, stf 1),
- *    h 8, 4 ppc: the elastic slope is E H / L; the peak is r0 H with r0 the uniaxial
- *    stress at which the plane at alpha reaches eq. 8's surface,
- *    1 / sqrt((sin^2 a / snf)^2 + (sin a cos a / stf)^2); the dissipation is U0 x area
- *    (eq. 10 over the crack, area H / sin a) and the interface's cohesive work is
- *    UF x area = U0 / 2 x area (eq. 24) by the time the bar is cut; the cut bar carries
- *    under 2 % of the peak; the ledger closes (W_ext + E0 = KE + SE + W_coh + the
- *    booked terms, to 1e-6 of W_ext);
- *  - no particle softens (every one stays elastic: lambda 0);
- *  - results do not depend on the number of threads (bit for bit);
- *  - the scene check refuses what the interface does not implement;
- *  - at alpha 90 (Fig. 6's bar, iface90.ini's method) the flaw's particle column lies on
- *    the line and goes to one part whole, at 1 and 4 ppc and either decohesion.share:
- *    after the cut its particles all move with one of its neighbour columns (the
- *    rounding of cos 90 deg once split it at the flaw's height), and D is U0 H;
- *  - with decohesion.share = line, in the softening the crack's traction is even along
- *    the line: sigma_xx in the four particle columns beside a crack on a node column
- *    (h 1, 4 ppc, a short bar) varies along y, away from the free edges, by under 5 % of
- *    its mean (the bar in uniaxial tension with a uniform cohesive plane: 0; share =
- *    stick grows a mode there, 17-48 %, docs/findings.md);
- *  - with grid.weights = laid the particles still move (within 1e-2 of the usual
- *    weights' positions before the cut), D = U0 H and the ledger closes through the cut;
- *    a slow softening stays quasi-static (the kinetic energy under 1 % of the strain
- *    energy), where the weights at the particles' positions grow a wave
- *    (docs/findings.md); laid is refused off the stretched grid;
- *  - share = line carries no shear on a softening segment's capped steps, and Fig. 6's
- *    bar at h 4, 4 ppc and a sixteenth of the speed stays near the steady loading's
- *    kinetic energy (with shear a wave grows, docs/findings.md).
- * The two slow runs (a sixteenth of the grip speed) are the build with IFACE_SLOW, test
- * mpm_iface_slow, outside the sanitizers' suites.
+ * and conservation laws:
+ *  - Mode I and Mode II (bar_case): elastic slope E H / L, peak r0 H (eq. 8's surface),
+ *    D = U0 x area and W_coh = U0 / 2 x area (eqs. 10, 24) by the cut, the cut bar under
+ *    2 % of the peak, the ledger to 1e-6 of W_ext; no particle softens;
+ *  - the same bits on 1 and 2 threads; the scene check refuses what is not implemented;
+ *  - at alpha 90 (iface90.ini) the flaw's column goes to one part whole, D = U0 H;
+ *  - share = line: the traction even along the crack within 5 % of its mean;
+ *  - grid.weights = laid: the particles still move, D = U0 H, a slow softening stays
+ *    quasi-static (kinetic energy under 1 % of the strain energy); refused off the
+ *    stretched grid; share = line carries no shear on capped steps.
+ * The two slow runs (a sixteenth of the speed) are the IFACE_SLOW build, mpm_iface_slow.
  */
 #include <math.h>
 #include <setjmp.h>

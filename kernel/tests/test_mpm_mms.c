@@ -1,32 +1,16 @@
 /*
- * test_mpm_mms.c - code verification of the MPM step by a manufactured solution: the
- * order of accuracy of the particle displacement on three grids.
- *
- * The solution (after Wallstedt and Guilkey's axis-aligned one, reduced to small strain,
- * plane stress and nu = 0, so that the faces y = 0, H are traction-free and the problem
- * is exact in the 2-D kernel):
- *   u(X, t) = A sin(pi X / L) sin(w t),  v = 0.
- * Then eps_xx = A (pi / L) cos(pi X / L) sin(w t), every other strain 0, sigma_xx = E eps_xx
- * (plane stress, nu = 0), sigma_yy = sigma_xy = 0; u = 0 at X = 0 and L, where the bar is
- * held.  Momentum, rho u_tt = d sigma_xx / dX + rho b_x, gives the body force
+ * test_mpm_mms.c - code verification of the MPM step by a manufactured solution (after
+ * Wallstedt and Guilkey's, small strain, plane stress, nu = 0): the order of accuracy of
+ * the particle displacement on three grids.
+ *   u(X, t) = A sin(pi X / L) sin(w t),  v = 0,  w = 1.5 pi c / L,
  *   b_x = u_tt - (E / rho) u_XX = A ((pi c / L)^2 - w^2) sin(pi X / L) sin(w t),
- * c = sqrt(E / rho): zero only at the bar's own frequency w = pi c / L (then it is the free
- * vibration of test_mpm_energy).  Here w = 1.5 pi c / L, a forced vibration off resonance.
- * Start: u = 0, stress 0, vx = A w sin(pi X / L) (the kernel's vibration.mode = 1 start
- * with amplitude A w).
- *
- * Error: RMS over the particles of (x - X - u(X, t)) / A at t = 10 (1.3 forcing periods),
- * h = 8, 4, 2 with dt = 0.1 h / 8 (Courant number 0.4), 1 particle per cell.  The strain
- * amplitude is A pi / L = 4.9e-4 and |u| <= A = 0.03 < h / 60: no particle leaves its cell, so the
- * bilinear step keeps the second order of the linear finite element it then is (the
- * particles at the cell centres are the 1-point midpoint quadrature, O(h^2) for smooth
- * fields; the time step is the symplectic Euler of a linear system, O(dt^2) in phase).
- * Asserted: observed order >= 1.8 (2 less a margin for the three-point fit) for USL and
- * MUSL (the paper's and the inclined scenes' schemes) with grid.bc = consistent, and USL
- * with lagrangian, and the error at h 2 below 1 %.  Measured: USL 2.00 (consistent) and
- * 2.04 (lagrangian), MUSL 2.00 (consistent); MUSL with lagrangian falls to 1.65 (pairs
- * 1.94, 1.36): with the hold on v^L only, MUSL's re-projected velocity at the held nodes
- * is not the held one (not asserted; docs/verification.md).
+ * held at X = 0, L; start u = 0, vx = A w sin(pi X / L).  Error: RMS over the particles
+ * of (x - X - u(X, t)) / A at t = 10, h = 8, 4, 2, dt = 0.1 h / 8, 1 ppc.  |u| < h / 60,
+ * so no particle leaves its cell and the step is a linear finite element with midpoint
+ * quadrature: second order.  Asserted: observed order >= 1.8 for USL and MUSL with
+ * grid.bc = consistent and USL with lagrangian, and the error at h 2 below 1 %.  MUSL
+ * with lagrangian (1.65, its v' at held nodes not the held one) is not asserted
+ * (docs/verification.md).
  */
 #include <math.h>
 #include <setjmp.h>

@@ -2,27 +2,15 @@
  * test_mpm_static_mms.c - code verification of the quasi-static solver where stress
  * varies: the manufactured solution of kernel/mpm_static_mms.c,
  *   u_x = A sin(pi X / L) cos(pi Y / H),  u_y = A cos(pi X / L) sin(pi Y / (2 H)),
- * on the bar 192 x 32, plane stress, E 1024, nu 0.25, elastic, its body force
- * b = -div sigma(u), the exact u held on the body's perimeter nodes, one linear solve.
- *
- * Expected: second order in h for the displacement at the particles.  The particles are
- * the quadrature points of a bilinear finite element (total Lagrangian: shape functions
- * where they were laid); at 4 and 9 ppc they sit at the centres of equal squares that
- * tile each cell, a composite midpoint rule exact for the bilinear terms of the
- * stiffness, so the solution keeps the element's O(h^2) in L2 (Strang's lemma), and
- * the held perimeter is the element's own interpolation of the boundary data.
- * Asserted, per shape at 4 ppc and bilinear at 9 ppc, on h 8, 4, 2:
- *  - the observed order of the particle error (log2 of successive ratios, each pair)
- *    and of the free nodes' error >= 1.8 (2 less a margin for a pre-asymptotic h 8: 4
- *    cells across H carry a half wave of cos(pi Y / H));
+ * with its body force and the exact u on the perimeter nodes, one linear solve.  The
+ * particles are a bilinear element's midpoint quadrature, so second order (Strang's
+ * lemma).  Asserted per shape at 4 ppc and bilinear at 9 ppc, h 8, 4, 2:
+ *  - the observed order of the particle and free-node errors >= 1.8;
  *  - at h 2 the particle error within 10 % of the bilinear interpolant's own error of
- *    the same field at the same points, computed here from the closed form alone: the
- *    solve adds almost nothing to what the shape functions cannot represent (measured
- *    0.990 at 4 ppc, 0.981 at 9);
- *  - uGIMP's errors equal bilinear's to 1e-9: at the laid places each particle's square
- *    lies inside one cell, where the hat is linear, so uGIMP's averaged weights and
- *    gradients are the bilinear ones at the particle (docs/static.md);
- *  - the error paths: a shape, h or ppc the solver cannot take is MPM_EINVAL.
+ *    the field at the same points (interp_error, from the closed form alone);
+ *  - uGIMP's errors equal bilinear's to 1e-9 (at the laid places its weights are the
+ *    hats'; docs/static.md);
+ *  - a shape, h or ppc the solver cannot take is MPM_EINVAL.
  */
 #include <math.h>
 #include <setjmp.h>

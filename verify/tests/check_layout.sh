@@ -6,7 +6,9 @@
 #   include-circle   no header of kernel/, analytic/ or verify/ includes itself through others;
 #   function-length  no function of kernel/, analytic/ or verify/ is over 100 lines (from
 #                    the line naming it to its closing brace at column 0);
-#   verify-files     no file of verify/ is over 600 lines.
+#   verify-files     no file of verify/ is over 600 lines;
+#   file-headers     no C file of kernel/, analytic/ or verify/ (or their tests/) opens with
+#                    a comment of over 15 lines (check_headers.py).
 # Prints TAP; exits 1 if a check failed.
 set -u
 src=${1:?usage: check_layout.sh SRC}
@@ -66,6 +68,9 @@ result function-length "$([ -z "$long" ] && grep -q '^LONG' <<<"$out" || echo "o
 
 big=$(wc -l verify/*.[ch] | awk '$2 != "total" && $1 > 600 {printf "%s %s ", $2, $1}')
 result verify-files "$([ -z "$big" ] || echo "over 600 lines: $big")"
+
+heads=$(python3 verify/tests/check_headers.py . 15 2>&1 | paste -sd' ')
+result file-headers "$([ -z "$heads" ] || echo "headers over 15 lines: $heads")"
 
 echo "1..$n"
 [ "$fail" -eq 0 ]

@@ -1,18 +1,13 @@
 /*
  * test_ver_fig3.c - two of Fig. 3's bars computed by the kernel against eq. 34, as the
- * report draws them (report_qs.c): data/scenes/iface90.ini (the crack as a cohesive
- * interface at 90 deg) on the quasi-static solver at h 8, 4 ppc, with q set and U0 set
- * for g = 0.75 (eq. 35, g = E U0 / (L r0^2)): q = 1.2, a snapback with q other than 1,
- * which the kernel's own static test (q 1) does not cover, and q = 0.8, whose branch
- * leaves the peak with an infinite slope and turns back at once (on fig6.ini's band each
- * particle's onset is a snapback of its own and the path stops at the peak).
- *  - fig3-1: every softening row (0.05 < sigma* < 0.95 after the peak) lies on eq. 34,
- *    E e_ave / r0 = s* + (1 - s*)^(1/q) g, written out here, within 1e-4 (the interface's
- *    uniform opening is a discrete solution; the band's flaw put it 0.0052 off);
- *  - fig3-2: the grip moved back on the way (the least E e / r0 after the peak below
- *    0.85, where the closed form's branch ends at g = 0.75): a snapback traced, not a drop;
- *  - fig3-3: the distance from the analytic path (ver_curve_path against analytic/)
- *    under 0.005, delam check's bound for a static run (the chords of a curved branch);
+ * report draws them (report_qs.c): iface90.ini on the quasi-static solver at h 8, 4 ppc
+ * with g = 0.75 (eq. 35) and q = 1.2 (a snapback with q other than 1) or q = 0.8 (a
+ * branch that leaves the peak with an infinite slope).
+ *  - fig3-1: every softening row (0.05 < sigma* < 0.95) lies on eq. 34,
+ *    E e_ave / r0 = s* + (1 - s*)^(1/q) g, within 1e-4;
+ *  - fig3-2: the grip moved back on the way (least E e / r0 after the peak below 0.85):
+ *    a snapback traced, not a drop;
+ *  - fig3-3: the distance from the analytic path under 0.005 (delam check's static bound);
  *  - fig3-4: the dissipation is U0 H (eq. 10 with the line open) within 1e-6.
  */
 #include <math.h>

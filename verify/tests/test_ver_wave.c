@@ -1,18 +1,14 @@
 /*
  * test_ver_wave.c - data/scenes/iface90.ini (Fig. 6's bar with the crack as a cohesive
- * interface, MUSL) against the exact solution at its own grip speed (analytic/ana_wave.c:
- * the 1-D wave solution with the plane as a cohesive line), not against the code's output:
- *  - the peak grip load is that solution's (the quasi-static r0 H plus the load the grip
- *    adds while the plane's unloading wave travels to it, +1.6 % at the speed 0.001)
- *    within 1 %, and above r0 H by more than half that overshoot, so the run carries the
- *    dynamics the quasi-static curve leaves out;
- *  - the RMS of P - P_wave over Pmax, up to where lambda reaches 0.98, is under 1 % at
- *    h 8 and h 4 (1 ppc), and smaller at h 4 than at h 8 (the run converges to it);
+ * interface, MUSL) against the exact solution at its own grip speed (analytic/ana_wave.c):
+ *  - the peak grip load is that solution's (r0 H plus the load the grip adds while the
+ *    plane's unloading wave travels to it, +1.6 % at speed 0.001) within 1 %, and above
+ *    r0 H by more than half that overshoot;
+ *  - the RMS of P - P_wave over Pmax, up to lambda 0.98, is under 1 % at h 8 and h 4
+ *    (1 ppc), and smaller at h 4 than at h 8;
  *  - the dissipation is U0 H (eq. 10 on the open line) within 1e-6.
- * The bounds: docs/verification.md "The exact solution at the grip speed" (measured
- * 0.0073 and 0.0047 at h 8 and 4; 0.0090 and 0.0045 with weights laid at the nodes
- * and shearless capped steps, 0.0087 and 0.0053 with the share by segment; the
- * quasi-static curve itself is 0.0157 away).
+ * The bounds and their measurements: docs/verification.md, "The exact solution at the
+ * grip speed".
  */
 #include <math.h>
 #include <setjmp.h>
