@@ -314,12 +314,12 @@ static long tied_at_initiation(const mpm_static *q, double k)
 }
 
 /* The linear first increment scaled to 1 / MPM_QS_NEL of the first initiation (F = 0,
- * eq. 23); the grip's step is set to the rest's share.  MPM_ESTALL where more particles
- * than a cell holds reach their strength together (a uniform stress without a flaw): the
- * uniform state bifurcates there, every band is a branch and the uniform softening one is
- * unstable (fig6 without its flaw followed it to D = 13 U0 H); the run stops and says how
- * to choose the branch. */
-static mpm_status scale_to_initiation(mpm_static *q, char *err, size_t errlen)
+ * eq. 23); the grip's step is set to the rest's share.  Where more particles than a cell
+ * holds reach their strength together (a uniform stress without a flaw) the uniform state
+ * bifurcates there, every band is a branch and the uniform softening one is unstable (fig6
+ * without its flaw followed it to D = 13 U0 H): q->tie counts them, the linear branch is
+ * run to the tie and the run stops there (tie_stop). */
+static void scale_to_initiation(mpm_static *q)
 {
   const mpm_sim *s = q->s;
   double kmin = INFINITY;
@@ -332,21 +332,17 @@ static mpm_status scale_to_initiation(mpm_static *q, char *err, size_t errlen)
       kmin = fmin(kmin, 1.0 / se);
   }
   const long tied = isfinite(kmin) ? tied_at_initiation(q, kmin) : 0;
-  if (tied > s->sc.ppc) {
-    snprintf(err, errlen, "static solver: %ld softening particles reach their strength together at delta = %.9g: "
-             "the uniform state bifurcates there (each band is a branch, the uniform softening is unstable); give "
-             "the bar a flaw to choose the branch (imperfection.snf_factor below 1) or use decohesion.path = "
-             "interface", tied, q->dt * kmin);
-    return MPM_ESTALL;
-  }
+  q->tie = tied > s->sc.ppc ? tied : 0;
   for (int pi = 0; pi < q->npair; pi++) { /* the interface's ties */
     const mpm_dstate *o = &q->ptr[pi];
     const double se = mpm_dcoh_F(&q->imat, o->sxx, o->syy, o->sxy, 0.0) + 1.0;
     if (se > 0.0)
       kmin = fmin(kmin, 1.0 / se);
   }
-  if (!(kmin > 1.0) || !isfinite(kmin))
-    return MPM_OK;
+  if (!(kmin > 1.0) || !isfinite(kmin)) {
+    q->tie = 0; /* no equal steps to a tie */
+    return;
+  }
   const double k = kmin * (1.0 - 1e-12) / MPM_QS_NEL;
   for (size_t i = 0; i < 2 * q->nslot; i++)
     if (q->eq[i] >= 0)
@@ -355,7 +351,37 @@ static mpm_status scale_to_initiation(mpm_static *q, char *err, size_t errlen)
   q->step_d = q->dt;
   q->nel = MPM_QS_NEL - 1;
   mpm_static_eval(q, 1);
-  return MPM_OK;
+}
+
+/* The uniform state's tie met (scale_to_initiation): MPM_ESTALL and how to choose the
+ * branch, after the linear branch's rows up to it. */
+static mpm_status tie_stop(const mpm_static *q, char *err, size_t errlen)
+{
+  snprintf(err, errlen, "static solver: %ld softening particles reach their strength together at delta = %.9g, "
+           "increment %ld: the uniform state bifurcates there (each band is a branch, the uniform softening is "
+           "unstable); give the bar a flaw to choose the branch (imperfection.snf_factor below 1) or use "
+           "decohesion.path = interface", q->tie, q->dn, q->s->step);
+  return MPM_ESTALL;
+}
+
+/* The committed state's stability: the sign of det K (the tangent with the grip held, the
+ * stiffness under displacement control; its factors are the predictor's) and, where it
+ * changed since the last increment, the critical point crossed: a limit point of delta
+ * where the sign of det K pden did not change (pden = d C / d delta along the path turns
+ * with delta; det K pden is the bordered system's), or, where C does not answer delta on
+ * either side (pden 0: an elastic state, a separated one), where delta turned between the
+ * two increments; else a bifurcation. */
+static void stability(mpm_static *q)
+{
+  const int was = q->st.det_sign, wasx = q->xsign, turned = (q->dlast > 0.0) != (q->dprev > 0.0);
+  q->st.det_sign = q->have_pred ? mpm_lin_det_sign(q->lin) : 0;
+  q->xsign = q->st.det_sign * ((q->pden > 0.0) - (q->pden < 0.0));
+  q->dprev = q->dlast;
+  q->st.crit = 0;
+  if (q->st.increments == 0 || was == 0 || q->st.det_sign != -was)
+    return;
+  const int limit = wasx != 0 && q->xsign != 0 ? q->xsign == wasx : turned;
+  q->st.crit = limit ? MPM_QS_LIMIT : MPM_QS_BIFURCATION;
 }
 
 /* Makes the trial state the committed one: particles, displacements, loads, energies. */
@@ -561,6 +587,8 @@ static mpm_status path_sound(mpm_static *q, char *err, size_t errlen)
 mpm_status mpm_static_step(mpm_static *q, char *err, size_t errlen)
 {
   mpm_sim *s = q->s;
+  if (q->tie > 0 && q->nel == 0)
+    return tie_stop(q, err, errlen);
   for (int cut = 0; cut <= MPM_QS_MAXCUT; cut++) {
     int iters = 0;
     int r = increment(q, &iters);
@@ -592,9 +620,8 @@ mpm_status mpm_static_step(mpm_static *q, char *err, size_t errlen)
     }
     if (r == 1) {
       const int first = s->step == 0;
-      const mpm_status si = first && q->mode == MPM_QS_GRIP ? scale_to_initiation(q, err, errlen) : MPM_OK;
-      if (si != MPM_OK)
-        return si;
+      if (first && q->mode == MPM_QS_GRIP)
+        scale_to_initiation(q);
       const double Cprev = q->Cn;
       commit(q);
       const int grip_stalls = (q->mode == MPM_QS_GRIP && q->nel == 0 && q->step_d < 1e-9 * fmax(q->dn, 1e-300)) ||
@@ -633,9 +660,12 @@ mpm_status mpm_static_step(mpm_static *q, char *err, size_t errlen)
       q->have_pred = 0;
       if (predictor(q) != MPM_OK)
         q->have_eval = 0;
+      stability(q);
       q->st.increments++;
       q->st.mode = q->mode;
       next_step(q, iters, first);
+      if (q->tie > 0 && q->nel == 0)
+        q->st.crit = MPM_QS_TIE;
       return s->cut && !q->pinned ? pin(q, err, errlen) : MPM_OK;
     }
     shrink(q);

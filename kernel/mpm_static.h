@@ -21,6 +21,8 @@ size_t mpm_lin_nnz(const mpm_lin *l);
 mpm_status mpm_lin_factor(mpm_lin *l);
 /* x = A^-1 b with the last factors; x and b may not alias. */
 mpm_status mpm_lin_solve(mpm_lin *l, const double *b, double *x);
+/* The sign of the last factors' determinant (+1, -1; 0: none held). */
+int mpm_lin_det_sign(const mpm_lin *l);
 
 /* ---- a bar particle's stencil at its reference place (total Lagrangian) ---- */
 #define MPM_ST_MAX 9 /* uGIMP: 3 x 3 nodes */
@@ -85,6 +87,9 @@ struct mpm_static {
   int have_pred;          /* pdir, pden are the committed state's                        */
   double *pdir;           /* d u / d delta at the committed state (unknowns)             */
   double pden;            /* d C / d delta along pdir                                    */
+  int xsign;              /* the sign of det K pden at the committed state (stability)   */
+  double dprev;           /* the increment before's change of delta (stability)          */
+  long tie;               /* particles tied at the first initiation (> ppc: a uniform state) */
   mpm_static_stats st;
   /* decohesion.path = interface (mpm_static_iface.c): the line's law between the two
    * copies of each split node, as a stiff elastic tie until it initiates */

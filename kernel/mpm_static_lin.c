@@ -150,3 +150,27 @@ mpm_status mpm_lin_solve(mpm_lin *l, const double *b, double *x)
   const int st = umfpack_di_solve(UMFPACK_A, l->Ap, l->Ai, l->Ax, x, b, l->num, l->ctl, l->info);
   return st == UMFPACK_OK ? MPM_OK : MPM_ENOTFINITE;
 }
+
+/* The sign of the last factorization's determinant, 0 where no factors are held (LU with
+ * partial pivoting: det = (-1)^(row exchanges) times the product of U's diagonal; UMFPACK
+ * computes it from its factors with their scaling).  The count of U's negative pivots is
+ * not the matrix's inertia once rows are exchanged, so only the sign is given. */
+int mpm_lin_det_sign(const mpm_lin *l)
+{
+  if (!l->num)
+    return 0;
+  if (!l->AB) {
+    double mx = 0.0, ex = 0.0;
+    if (umfpack_di_get_determinant(&mx, &ex, l->num, NULL) != UMFPACK_OK)
+      return 0;
+    return (mx > 0.0) - (mx < 0.0);
+  }
+  int s = 1;
+  for (int j = 0; j < l->n; j++) {
+    if (gsl_matrix_get(l->AB, (size_t)j, 2 * l->p) < 0.0)
+      s = -s;
+    if (gsl_vector_uint_get(l->piv, (size_t)j) != (unsigned)j)
+      s = -s;
+  }
+  return s;
+}

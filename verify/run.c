@@ -194,6 +194,14 @@ static void take_step(run_state *r, ver_summary *u, double delta)
   w->Pg = r->acc_g / r->acc_n;
   w->Pf = r->acc_f / r->acc_n;
   w->tip = in.crack_tip;
+  w->det = NAN;
+  if (r->q) { /* the state's stability and the critical point crossed to it (docs/static.md) */
+    mpm_static_stats qs;
+    mpm_static_stats_get(r->q, &qs);
+    w->det = qs.det_sign;
+    if (qs.crit && u->ncrit++ < VER_CRIT_MAX)
+      u->crit[u->ncrit - 1] = (ver_crit){in.step, delta, w->Pg, qs.crit};
+  }
   r->acc_g = r->acc_f = 0.0;
   r->acc_n = 0;
   mpm_sim_energy(s, &w->e);
