@@ -365,23 +365,29 @@ static mpm_status tie_stop(const mpm_static *q, char *err, size_t errlen)
 }
 
 /* The committed state's stability: the sign of det K (the tangent with the grip held, the
- * stiffness under displacement control; its factors are the predictor's) and, where it
- * changed since the last increment, the critical point crossed: a limit point of delta
+ * stiffness under displacement control; its factors are the predictor's; 0 on a cut bar
+ * before its part is pinned, whose vertical rigid motion K does not hold) and, where it
+ * changed since the last nonzero one, the critical point crossed: a limit point of delta
  * where the sign of det K pden did not change (pden = d C / d delta along the path turns
  * with delta; det K pden is the bordered system's), or, where C does not answer delta on
  * either side (pden 0: an elastic state, a separated one), where delta turned between the
  * two increments; else a bifurcation. */
 static void stability(mpm_static *q)
 {
-  const int was = q->st.det_sign, wasx = q->xsign, turned = (q->dlast > 0.0) != (q->dprev > 0.0);
-  q->st.det_sign = q->have_pred ? mpm_lin_det_sign(q->lin) : 0;
-  q->xsign = q->st.det_sign * ((q->pden > 0.0) - (q->pden < 0.0));
+  const int turned = (q->dlast > 0.0) != (q->dprev > 0.0);
+  const int sign = q->have_pred && !(q->s->cut && !q->pinned) ? mpm_lin_det_sign(q->lin) : 0;
+  const int x = sign * ((q->pden > 0.0) - (q->pden < 0.0));
   q->dprev = q->dlast;
+  q->st.det_sign = sign;
   q->st.crit = 0;
-  if (q->st.increments == 0 || was == 0 || q->st.det_sign != -was)
+  if (sign == 0)
     return;
-  const int limit = wasx != 0 && q->xsign != 0 ? q->xsign == wasx : turned;
-  q->st.crit = limit ? MPM_QS_LIMIT : MPM_QS_BIFURCATION;
+  if (q->wsign == -sign) {
+    const int limit = q->xsign != 0 && x != 0 ? x == q->xsign : turned;
+    q->st.crit = limit ? MPM_QS_LIMIT : MPM_QS_BIFURCATION;
+  }
+  q->wsign = sign;
+  q->xsign = x;
 }
 
 /* Makes the trial state the committed one: particles, displacements, loads, energies. */

@@ -87,7 +87,7 @@ struct mpm_static {
   int have_pred;          /* pdir, pden are the committed state's                        */
   double *pdir;           /* d u / d delta at the committed state (unknowns)             */
   double pden;            /* d C / d delta along pdir                                    */
-  int xsign;              /* the sign of det K pden at the committed state (stability)   */
+  int wsign, xsign;       /* the last nonzero sign of det K, and of det K pden (stability) */
   double dprev;           /* the increment before's change of delta (stability)          */
   long tie;               /* particles tied at the first initiation (> ppc: a uniform state) */
   mpm_static_stats st;
