@@ -223,13 +223,16 @@ static int increment(mpm_static *q, int *iters)
   const int grip = q->mode == MPM_QS_GRIP || q->kick;
   double dd = q->kick ? q->kick_d : q->step_d;
   if (!grip) {
-    /* q < 1 and nothing dissipated beyond rounding (a line at its strength everywhere
-     * can have one segment at lambda 4e-16 after the linear branch's last increment): a
-     * grip increment starts the softening, not a predictor from that one segment's
-     * tangent, which has the law's infinite slope and sent Newton after it alone (a45,
-     * a30 at q 0.8 stopped at the peak); for q >= 1 that tangent is finite and the
-     * predictor is cheaper (a grip increment here triples Newton's work on a30) */
-    if (q->s->sc.q < 1.0 && !(q->Cn > MPM_QS_CMIN * q->Dref) && q->nkick < 3)
+    /* nothing dissipated beyond rounding: a grip increment starts the softening, not a
+     * predictor from the committed state's tangent.  The linear branch ends just short of
+     * the first initiation, but where a line is at its strength everywhere rounding can
+     * leave some of its segments at lambda 4e-16 and the rest at 0, and the predictor then
+     * sends Newton after those alone: which branch the path took depended on the build
+     * (iface90 with U0 0.01875, h 4: one side opening, curve_path 0.030, with -O3; the
+     * uniform opening, 4e-7, with -O0; a45, a30 at q 0.8 stopped at the peak).  A grip
+     * increment loads every tied point past its strength alike: the same branch on every
+     * build (docs/static.md, "Stability") */
+    if (!(q->Cn > MPM_QS_CMIN * q->Dref) && q->nkick < 3)
       return -2;
     /* pden < 0: C grows as delta falls, the snapback branch */
     if (fabs(q->pden) * fmax(q->dn, 1e-300) > 1e-9 * q->Dref)
@@ -365,29 +368,33 @@ static mpm_status tie_stop(const mpm_static *q, char *err, size_t errlen)
 }
 
 /* The committed state's stability: the sign of det K (the tangent with the grip held, the
- * stiffness under displacement control; its factors are the predictor's; 0 on a cut bar
- * before its part is pinned, whose vertical rigid motion K does not hold) and, where it
- * changed since the last nonzero one, the critical point crossed: a limit point of delta
+ * stiffness under displacement control; its factors are the predictor's), 0 where it is
+ * not the state's: on a cut bar before its part is pinned (K holds no vertical rigid
+ * motion) and at a tie, points on the softening path that dissipated only rounding (C at
+ * most MPM_QS_CMIN, C answering delta: which of them K softens is rounding's).  Where the
+ * sign changed since the last state that had one, the critical point crossed: across a
+ * tie a bifurcation (every tied point's opening is a branch); else a limit point of delta
  * where the sign of det K pden did not change (pden = d C / d delta along the path turns
  * with delta; det K pden is the bordered system's), or, where C does not answer delta on
- * either side (pden 0: an elastic state, a separated one), where delta turned between the
- * two increments; else a bifurcation. */
+ * either side (pden 0), where delta's way turned; else a bifurcation. */
 static void stability(mpm_static *q)
 {
-  const int turned = (q->dlast > 0.0) != (q->dprev > 0.0);
-  const int sign = q->have_pred && !(q->s->cut && !q->pinned) ? mpm_lin_det_sign(q->lin) : 0;
-  const int x = sign * ((q->pden > 0.0) - (q->pden < 0.0));
-  q->dprev = q->dlast;
+  const int tie = !(q->Cn > MPM_QS_CMIN * q->Dref) && q->pden != 0.0;
+  const int sign = q->have_pred && !(q->s->cut && !q->pinned) && !tie ? mpm_lin_det_sign(q->lin) : 0;
+  const int x = sign * ((q->pden > 0.0) - (q->pden < 0.0)), dir = q->dlast > 0.0 ? 1 : -1;
   q->st.det_sign = sign;
   q->st.crit = 0;
+  q->wtie |= tie;
   if (sign == 0)
     return;
   if (q->wsign == -sign) {
-    const int limit = q->xsign != 0 && x != 0 ? x == q->xsign : turned;
+    const int limit = q->wtie ? 0 : q->xsign != 0 && x != 0 ? x == q->xsign : dir != q->wdir;
     q->st.crit = limit ? MPM_QS_LIMIT : MPM_QS_BIFURCATION;
   }
   q->wsign = sign;
   q->xsign = x;
+  q->wdir = dir;
+  q->wtie = 0;
 }
 
 /* Makes the trial state the committed one: particles, displacements, loads, energies. */
@@ -609,7 +616,9 @@ mpm_status mpm_static_step(mpm_static *q, char *err, size_t errlen)
        * does not, the grip leads to the end */
       if (q->nkick < 3) {
         q->kick = 1;
-        q->kick_d = 1e-4 * q->dn;
+        /* a kick after a kick starts from the size that passed (at a snapback's peak
+         * the first is halved from 1e-4 of delta to 1e-8 before Newton finds a state) */
+        q->kick_d = q->nkick > 0 ? q->kick_d : 1e-4 * q->dn;
       } else
         set_mode(q, MPM_QS_GRIP);
       continue;

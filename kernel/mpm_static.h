@@ -87,8 +87,8 @@ struct mpm_static {
   int have_pred;          /* pdir, pden are the committed state's                        */
   double *pdir;           /* d u / d delta at the committed state (unknowns)             */
   double pden;            /* d C / d delta along pdir                                    */
-  int wsign, xsign;       /* the last nonzero sign of det K, and of det K pden (stability) */
-  double dprev;           /* the increment before's change of delta (stability)          */
+  int wsign, xsign, wdir; /* at the last state with det K's sign: it, det K pden's, delta's way */
+  int wtie;               /* a tie's states since it (their sign is rounding's)            */
   long tie;               /* particles tied at the first initiation (> ppc: a uniform state) */
   mpm_static_stats st;
   /* decohesion.path = interface (mpm_static_iface.c): the line's law between the two

@@ -11,6 +11,7 @@
  *  - UMFPACK (SuiteSparse) beyond, with its fill-reducing ordering computed once per run
  *    (the pattern is fixed), where a band would cost n p^2.
  */
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -21,6 +22,7 @@
 #include "mpm_static.h"
 
 #define MPM_LIN_BAND_MAX 160 /* bands up to this many unknowns either side of the diagonal */
+#define MPM_LIN_SING 1e-12   /* a least pivot below this share of the largest: singular to rounding */
 
 struct mpm_lin {
   int n;
@@ -151,26 +153,34 @@ mpm_status mpm_lin_solve(mpm_lin *l, const double *b, double *x)
   return st == UMFPACK_OK ? MPM_OK : MPM_ENOTFINITE;
 }
 
-/* The sign of the last factorization's determinant, 0 where no factors are held (LU with
- * partial pivoting: det = (-1)^(row exchanges) times the product of U's diagonal; UMFPACK
- * computes it from its factors with their scaling).  The count of U's negative pivots is
- * not the matrix's inertia once rows are exchanged, so only the sign is given. */
+/* The sign of the last factorization's determinant (LU with partial pivoting: det =
+ * (-1)^(row exchanges) times the product of U's diagonal; UMFPACK computes it from its
+ * factors with their scaling); 0 where no factors are held or the matrix is singular to
+ * rounding, its least pivot below MPM_LIN_SING of the largest (UMFPACK's rcond is that
+ * ratio): there the sign is rounding's (one quadrature point a cell, whose hourglass
+ * modes leave pivots of 1e-16 of the largest; the interface's stiff ties 1e-5).  The
+ * count of U's negative pivots is not the matrix's inertia once rows are exchanged, so
+ * only the sign is given. */
 int mpm_lin_det_sign(const mpm_lin *l)
 {
   if (!l->num)
     return 0;
   if (!l->AB) {
     double mx = 0.0, ex = 0.0;
-    if (umfpack_di_get_determinant(&mx, &ex, l->num, NULL) != UMFPACK_OK)
+    if (!(l->info[UMFPACK_RCOND] >= MPM_LIN_SING) || umfpack_di_get_determinant(&mx, &ex, l->num, NULL) != UMFPACK_OK)
       return 0;
     return (mx > 0.0) - (mx < 0.0);
   }
   int s = 1;
+  double umin = INFINITY, umax = 0.0;
   for (int j = 0; j < l->n; j++) {
-    if (gsl_matrix_get(l->AB, (size_t)j, 2 * l->p) < 0.0)
+    const double u = gsl_matrix_get(l->AB, (size_t)j, 2 * l->p);
+    umin = fmin(umin, fabs(u));
+    umax = fmax(umax, fabs(u));
+    if (u < 0.0)
       s = -s;
     if (gsl_vector_uint_get(l->piv, (size_t)j) != (unsigned)j)
       s = -s;
   }
-  return s;
+  return umin >= MPM_LIN_SING * umax ? s : 0;
 }

@@ -490,6 +490,10 @@ int ver_run(const ver_scene *vs, const ver_run_opts *o, ver_summary *u, char *er
   r.o = o;
   /* the kernel's refusal (a scene it cannot lay out) leaves the folder as it was */
   char kerr[512];
+  if (ver_static_refusal(&vs->sc, kerr, sizeof kerr)) {
+    snprintf(err, errlen, "%s: %s", vs->path, kerr);
+    return 2;
+  }
   const mpm_status st = mpm_sim_alloc(&vs->sc, o->threads, &r.s, kerr, sizeof kerr);
   if (st != MPM_OK) {
     snprintf(err, errlen, "%s: %s", vs->path, kerr);

@@ -293,8 +293,9 @@ static void stab_case(double g)
     first = first ? first : t.crit[i] ? i : 0;
   }
   for (int i = 1; i < t.n; i++) {
-    /* (the peak's row, the initiation, already has the softening tangent: not judged) */
-    const int want = i < ipk ? 1 : i > ipk && t.P[i] > 0.05 * Pmax && t.P[i] < 0.95 * Pmax ? (g < 1.0 ? -1 : 1) : 0;
+    /* (the rows at the peak, the tie at initiation, not judged) */
+    const int band = t.P[i] > 0.05 * Pmax && t.P[i] < 0.95 * Pmax;
+    const int want = i < ipk && t.P[i] < 0.95 * Pmax ? 1 : i > ipk && band ? (g < 1.0 ? -1 : 1) : 0;
     on += want != 0;
     wrong += want != 0 && t.det[i] != want;
   }
@@ -302,8 +303,9 @@ static void stab_case(double g)
                 "at row %d (kind %d)\n", g, on, wrong, ipk, first, first ? t.crit[first] : 0);
   assert_true(on >= 10);
   assert_int_equal(wrong, 0);
-  if (g < 1.0) /* the sign changes at the peak's row or the next (the tie at initiation) */
-    assert_true(first == ipk || first == ipk + 1);
+  if (g < 1.0) /* the sign changes at the peak's row or within the 3 grip increments that
+                  start the softening from the tie (det_sign 0 on them) */
+    assert_true(first >= ipk && first <= ipk + 4);
   else
     assert_int_equal(first, 0);
 }
