@@ -63,6 +63,7 @@
 #define MPM_QS_NEL 8      /* equal increments of the linear branch up to the first initiation */
 #define MPM_QS_PUSH 0.01  /* of the peak: an interface's load below minus this stops the run */
 #define MPM_QS_LEDGER 1e-4 /* of the largest W_ext: W_ext - SE - W_coh beyond this stops the run */
+#define MPM_QS_KICK 1e-4  /* of delta: the first grip increment that starts the softening     */
 
 void mpm_static_free(mpm_static *q)
 {
@@ -300,8 +301,9 @@ static int increment(mpm_static *q, int *iters)
   return 0;
 }
 
-/* The softening particles that reach their strength within 1e-9 of the first (scale k:
- * the linear increment times k meets F = 0, eq. 23). */
+/* The softening particles that reach their strength within MPM_QS_KICK of the first
+ * (scale k: the linear increment times k meets F = 0, eq. 23): the first grip increment
+ * past the initiation, MPM_QS_KICK of delta, starts them all. */
 static long tied_at_initiation(const mpm_static *q, double k)
 {
   const mpm_sim *s = q->s;
@@ -311,7 +313,7 @@ static long tied_at_initiation(const mpm_static *q, double k)
     if (m->model == MPM_DCOH_NONE)
       continue;
     const double se = mpm_dcoh_F(m, q->tst[c].sxx, q->tst[c].syy, q->tst[c].sxy, 0.0) + 1.0;
-    n += se > 0.0 && 1.0 / se <= k * (1.0 + 1e-9);
+    n += se > 0.0 && 1.0 / se <= k * (1.0 + MPM_QS_KICK);
   }
   return n;
 }
@@ -618,7 +620,7 @@ mpm_status mpm_static_step(mpm_static *q, char *err, size_t errlen)
         q->kick = 1;
         /* a kick after a kick starts from the size that passed (at a snapback's peak
          * the first is halved from 1e-4 of delta to 1e-8 before Newton finds a state) */
-        q->kick_d = q->nkick > 0 ? q->kick_d : 1e-4 * q->dn;
+        q->kick_d = q->nkick > 0 ? q->kick_d : MPM_QS_KICK * q->dn;
       } else
         set_mode(q, MPM_QS_GRIP);
       continue;
