@@ -133,6 +133,16 @@ void mpm_static_iface_free(mpm_static *q);
 int mpm_static_iface_npieces(const mpm_static *q);
 int mpm_static_iface_piece(const mpm_static *q, int i, double xy[4], double *lam, int *state);
 
+/* mpm_static.c: Newton's method on one increment under the current control (1 converged,
+ * the trial state the increment's; 0 not; -2 the dissipation cannot lead: nothing
+ * softens), the committed state's tangent and predictor, the trial state committed.  The
+ * path control that calls them: mpm_static_path.c (mpm_static_step). */
+#define MPM_QS_CMIN 1e-12 /* of U0 H / sin a: less dissipated is nothing (rounding)     */
+#define MPM_QS_NEL 8      /* equal increments of the linear branch up to the first initiation */
+int mpm_static_increment(mpm_static *q, int *iters);
+mpm_status mpm_static_predict(mpm_static *q);
+void mpm_static_commit(mpm_static *q);
+
 /* mpm_static_asm.c: the stencils and unknowns (setup), the trial state of every particle
  * from Ut with the residual, tangent and the dissipation's gradient (eval). */
 mpm_status mpm_static_setup(mpm_static *q, char *err, size_t errlen);
