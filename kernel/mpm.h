@@ -142,7 +142,7 @@ typedef struct {
   double t;                /* time                                                     */
   double P_grip, P_fixed;  /* loads of the last step at the grip and the fixed end (tension > 0) */
   int cut;                 /* 1 once the band has cut the bar (a separated particle in every row) */
-  double crack_tip;        /* dcb, els: the crack front's x (a0 before growth); bar: NAN */
+  double crack_tip, zone_end; /* dcb, els: the front's x (a0 before growth), the process zone's far end; bar: NAN */
   double gap_min;          /* the static interface's least normal opening (< 0: overlap) */
   long n_soften, n_separate, n_bracketed; /* decohesion updates by path; bracketed solves */
   long n_debris;           /* separated particles that left the grid                  */

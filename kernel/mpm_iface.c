@@ -397,6 +397,8 @@ static void advance(mpm_sim *s, mpm_iface *f)
       const double dw = f->wn[b] / f->A[b], r = 1.0 - f->lam[b];
       if (dw > 0.0)
         f->lam[b] = 1.0 - sqrt(fmax(0.0, r * r - 2.0 * dw / s->sc.U0));
+      if (f->lam[b] > 0.0 && isfinite(s->zone_end)) /* the process zone's far end */
+        s->zone_end = fmax(s->zone_end, f->lx + (f->smin + (b + 1) * f->sw) * f->tx);
       if (f->lam[b] >= s->sc.sep_threshold) { /* open: no traction is left, the surface
                                                 * se <= 1 - lambda of lambda = 1 (the band's
                                                 * separated particle reaches it by its opening) */

@@ -327,6 +327,7 @@ struct mpm_sim {
   struct mpm_bc *bc;       /* the constrained node components (mpm_specimen.h), in the   */
   int nbc;                 /*   order the step takes them                               */
   double crack_tip;        /* x of the interface's farthest separated point (NAN: none)  */
+  double zone_end;         /* x of its farthest softened point (>= crack_tip; NAN: none) */
   double gap_min;          /* the static interface's least normal opening so far         */
   double line_x, line_y;   /* a point of the interface's line (the specimen's)           */
   struct mpm_static *qs;   /* the static solver on this sim, or NULL (its line's pieces)  */

@@ -379,7 +379,7 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
         s->bc[j++] = s->bc[i];
     s->nbc = j;
   }
-  s->crack_tip = spec->precrack ? sc->a0 : NAN;
+  s->crack_tip = s->zone_end = spec->precrack ? sc->a0 : NAN;
   s->gap_min = INFINITY;
   spec->line_point(s, imp, &s->line_x, &s->line_y);
   if (sc->model && sc->path == MPM_PATH_IFACE && (spec->explicit_iface || sc->solver == MPM_SOLVER_EXPLICIT) &&

@@ -33,6 +33,43 @@ static void bar_start_velocity(const mpm_scene *sc, double x, double y, double *
   *vy = 0.0;
 }
 
+/* The explicit step's end: the head is rigid; in x it moves with the grip; in y it is free, as one body whose
+ * momentum is the sum its particles received this step (no y constraint, so the bar's
+ * end may rise, as the paper's Fig. 8 shows).  Serial, in particle order: the same sums
+ * whatever the threads. */
+static void bar_step_end(mpm_sim *s)
+{
+  mpm_particles *p = s->p;
+  double m = 0.0, my = 0.0, ke0 = 0.0;
+  for (size_t i = 0; i < s->nhead; i++) {
+    const size_t k = s->head[i];
+    m += p->m[k];
+    my += p->m[k] * p->vy[k];
+    ke0 += 0.5 * p->m[k] * (p->vx[k] * p->vx[k] + p->vy[k] * p->vy[k]);
+  }
+  mpm_ledger *L = &s->led;
+  /* the ledger: what the head (the machine) took, its KE change and what its
+   * projection below removes */
+  L->W_head = ke0 - L->KE_head0 + L->head_reset;
+  if (s->nbc == 0)
+    return; /* the head is the grip: without one (tests of the bare step) it is left alone */
+  if (!(m > 0.0))
+    return;
+  const double vy = my / m, dx = -mpm_sim_grip_u(s, 1);
+  s->head_dy += vy * s->sc.dt;
+  double ke1 = 0.0;
+  for (size_t i = 0; i < s->nhead; i++) {
+    const size_t k = s->head[i];
+    p->vx[k] = -s->vgrip;
+    p->vy[k] = vy;
+    p->x[k] = p->x0[k] + dx;
+    p->y[k] = p->y0[k] + s->head_dy;
+    ke1 += 0.5 * p->m[k] * (p->vx[k] * p->vx[k] + vy * vy);
+  }
+  L->head_reset += ke0 - ke1;
+  L->W_head = ke1 - L->KE_head0 + L->head_reset;
+}
+
 /* The head: stress-free particles of the bar's density beyond x = 0 (MPM_MAT_HEAD). */
 static void bar_place_head(mpm_sim *s, const mpm_layout *l)
 {
@@ -132,6 +169,7 @@ const mpm_specimen_type mpm_spec_bar = {
   .name = "bar",
   .left_cells = bar_left_cells,
   .place_head = bar_place_head,
+  .step_end = bar_step_end,
   .start_velocity = bar_start_velocity,
   .rise_cells = bar_rise_cells,
   .bcs = bar_bcs,

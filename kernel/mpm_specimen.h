@@ -51,6 +51,9 @@ typedef struct mpm_specimen_type {
   int (*rise_cells)(const mpm_scene *sc);
   /* the head's particles after the body's (NULL: none) */
   void (*place_head)(mpm_sim *s, const mpm_layout *l);
+  /* the explicit step's end for the loading machine's particles (the bar's rigid head:
+   * its motion and its ledger, W_head); NULL: none */
+  void (*step_end)(mpm_sim *s);
   /* the constrained components into out (at most the count with out NULL); returns how
    * many.  The explicit step and the static solver take them in this order. */
   int (*bcs)(const mpm_sim *s, const mpm_layout *l, mpm_bc *out);

@@ -620,7 +620,7 @@ void mpm_static_iface_commit(mpm_static *q)
   mpm_sim *s = q->s;
   int open = 0, on = 0;
   double w = 0.0;
-  double tip = s->crack_tip;
+  double tip = s->crack_tip, zone = s->zone_end;
   for (int g = 0; g < q->nseg; g++) {
     q->pst[g] = q->ptr[g];
     w += q->pw[g];
@@ -628,8 +628,11 @@ void mpm_static_iface_commit(mpm_static *q)
     open += q->pA[g] > 0.0 && q->pst[g].sep;
     if (q->pst[g].sep && !q->spre[g] && q->pA[g] > 0.0 && q->segx[g] > tip) /* the crack's front */
       tip = q->segx[g];
+    if (q->pst[g].lam > 0.0 && !q->spre[g] && q->pA[g] > 0.0 && q->segx[g] > zone) /* the zone's far end */
+      zone = q->segx[g];
   }
   s->crack_tip = tip;
+  s->zone_end = fmax(zone, tip);
   /* the least normal opening at a node of the line (contact keeps it near 0 from below) */
   for (int a = 0; a < (q->nseg > 0 ? q->segstart[q->nseg] : 0); a++) {
     const int i = q->sorder[a];

@@ -513,43 +513,6 @@ static void ledger_step(mpm_sim *s)
   s->D_run += t[MPM_LED_D];
 }
 
-/* The head is rigid: in x it moves with the grip; in y it is free, as one body whose
- * momentum is the sum its particles received this step (no y constraint, so the bar's
- * end may rise, as the paper's Fig. 8 shows).  Serial, in particle order: the same sums
- * whatever the threads. */
-static void head_rigid(mpm_sim *s)
-{
-  mpm_particles *p = s->p;
-  double m = 0.0, my = 0.0, ke0 = 0.0;
-  for (size_t i = 0; i < s->nhead; i++) {
-    const size_t k = s->head[i];
-    m += p->m[k];
-    my += p->m[k] * p->vy[k];
-    ke0 += 0.5 * p->m[k] * (p->vx[k] * p->vx[k] + p->vy[k] * p->vy[k]);
-  }
-  mpm_ledger *L = &s->led;
-  /* the ledger: what the head (the machine) took, its KE change and what its
-   * projection below removes */
-  L->W_head = ke0 - L->KE_head0 + L->head_reset;
-  if (s->nbc == 0)
-    return; /* the head is the grip: without one (tests of the bare step) it is left alone */
-  if (!(m > 0.0))
-    return;
-  const double vy = my / m, dx = -mpm_sim_grip_u(s, 1);
-  s->head_dy += vy * s->sc.dt;
-  double ke1 = 0.0;
-  for (size_t i = 0; i < s->nhead; i++) {
-    const size_t k = s->head[i];
-    p->vx[k] = -s->vgrip;
-    p->vy[k] = vy;
-    p->x[k] = p->x0[k] + dx;
-    p->y[k] = p->y0[k] + s->head_dy;
-    ke1 += 0.5 * p->m[k] * (p->vx[k] * p->vx[k] + vy * vy);
-  }
-  L->head_reset += ke0 - ke1;
-  L->W_head = ke1 - L->KE_head0 + L->head_reset;
-}
-
 /* grid.weights = laid, when a step ends (mpm_sim_step, failed or not): the step moved
  * each particle from its laid place; it is where it was plus that move (the next
  * lay_grid writes the offsets afresh) */
@@ -722,11 +685,14 @@ static void nodes(mpm_sim *s)
   mpm_phase_time(s, MPM_T_GRID);
 }
 
-/* The step's end: the rigid head, the ledger, the grip and the clock. */
+/* The step's end: the specimen's loading machine (the bar's rigid head), the ledger,
+ * the grip and the clock. */
 static void finish(mpm_sim *s)
 {
   mpm_phase_hooks(s, MPM_PH_GATHER);
-  head_rigid(s);
+  const mpm_specimen_type *spec = mpm_specimen_of(&s->sc);
+  if (spec->step_end)
+    spec->step_end(s);
   mpm_phase_hooks(s, MPM_PH_END);
   ledger_step(s);
   s->ugrip += s->vgrip * s->sc.dt;

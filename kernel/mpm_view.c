@@ -19,7 +19,7 @@ const mpm_scene *mpm_sim_scene(const mpm_sim *s)
 
 void mpm_sim_info_get(const mpm_sim *s, mpm_sim_info *out)
 {
-  *out = (mpm_sim_info){.step = s->step, .t = s->t, .P_grip = s->P_grip, .P_fixed = s->P_fixed, .cut = s->cut, .crack_tip = s->crack_tip, .gap_min = s->gap_min,
+  *out = (mpm_sim_info){.step = s->step, .t = s->t, .P_grip = s->P_grip, .P_fixed = s->P_fixed, .cut = s->cut, .crack_tip = s->crack_tip, .zone_end = s->zone_end, .gap_min = s->gap_min,
                         .n_soften = s->n_soften, .n_separate = s->n_separate, .n_bracketed = s->n_bracketed,
                         .n_debris = s->n_debris};
   for (int q = 0; q < MPM_T_N; q++)

@@ -8,7 +8,7 @@ set multiplot layout 1,3 title "Convergence under refinement (lines: least-squar
 set logscale xy
 set xrange [0.8:10]
 set xtics (1, 2, 4, 8)
-set xlabel "grid spacing h"
+set xlabel "grid spacing h (dimensionless units, the paper's)"
 # below the plots: inside, the key would hide points of some scene
 set key below horizontal maxcols 1
 set bmargin 11
@@ -25,7 +25,10 @@ set ylabel "distance / P_{max}"
 # a line "at the floor" (every grid below a tenth of the bound) has no fitted order to draw
 atfloor(sc) = strstrt(value('v_static_'.sc), "at the floor") > 0
 set title "quasi-static solver, 4 ppc: distance from the analytic path;\nexplicit 4 ppc: distance from the static curve (the rate)"
-plot for [i=1:3] sprintf('data/sweep-%s-static.dat', word(scs, i)) u 1:($6 > 0.5 ? $2 : 1/0) w p pt 5 ps 1.4 lc i \
+# fig7's and fig8's static distances sit at the same floor (4e-7): each scene is drawn a
+# little beside h, with its own point shape, so that neither hides the other
+dodge(i) = (i == 1) ? 1 : (i == 2) ? 0.95 : 1.05
+plot for [i=1:3] sprintf('data/sweep-%s-static.dat', word(scs, i)) u ($1 * dodge(i)):($6 > 0.5 ? $2 : 1/0) w p pt (3 + 2 * i) ps 1.6 lc i \
        title (atfloor(word(scs, i)) ? sprintf("%s static (%s)", word(scs, i), value('v_static_'.word(scs, i))) \
               : sprintf("%s static (p = %.2f, %s)", word(scs, i), value('p_static_'.word(scs, i)), value('v_static_'.word(scs, i)))), \
      for [i=1:3] (atfloor(word(scs, i)) ? 1/0 : exp(value('c_static_'.word(scs, i))) * x**value('p_static_'.word(scs, i))) w l dt 1 lc i notitle, \
@@ -41,7 +44,7 @@ rnd = 1e-12; flr = 1e-6
 plot for [i=1:3] sprintf('data/sweep-%s-ppc1.dat', word(scs, i)) u 1:($5 > 0.5 && $3 >= rnd ? $3 : 1/0) w p pt 7 ps 1.5 lc i \
        title (value('exact_diss_'.word(scs, i)) ? sprintf("%s explicit (exact)", word(scs, i)) \
               : sprintf("%s explicit (p = %.2f)", word(scs, i), value('p_diss_'.word(scs, i)))), \
-     for [i=1:3] sprintf('data/sweep-%s-ppc1.dat', word(scs, i)) u ($1 * (0.94 + 0.04 * i)):($3 < rnd ? flr : 1/0) w p pt 11 ps 1.8 lc i notitle, \
+     for [i=1:3] sprintf('data/sweep-%s-ppc1.dat', word(scs, i)) u ($1 * dodge(i)):($3 < rnd ? flr : 1/0) w p pt 11 ps 1.8 lc i notitle, \
      1/0 w p pt 11 ps 1.8 lc rgb "black" title "exact to rounding (drawn at 10^{-6})", \
      for [i=1:3] sprintf('data/sweep-%s-ppc1.dat', word(scs, i)) u 1:($5 > 0.5 || $3 < rnd ? 1/0 : $3) w p pt 6 ps 1.5 lc i notitle, \
      for [i=1:3] (value('exact_diss_'.word(scs, i)) ? 1/0 : exp(value('c_diss_'.word(scs, i))) * x**value('p_diss_'.word(scs, i))) w l dt 2 lc i notitle

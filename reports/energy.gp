@@ -2,13 +2,15 @@
 # file as written), from energy.csv (columns by name): external work, strain and
 # kinetic energy, cohesive work, dissipation, and every loss the ledger books (the
 # held nodes' L_bc, the FLIP projection's L_flip, the scheme's L_scheme, the loading
-# head's W_head, contact, debris and the damper's L_damp); the dashed line is the
+# head's W_head, contact, debris and the damper's L_damp); L_flip and L_scheme, the two
+# halves of one exchange between the FLIP update and the scheme's strain (equal and
+# opposite, +-63 on fig8), as their sum; the dashed line is the
 # dissipation expected at the end, U0 x failure area (= 2 UF x area, Model 1, q = 1).
-W = 1500; Hgt = 640
+W = 1800; Hgt = 660
 load gpdir.'/common.gp'
 set multiplot layout 1,3 title "Energies against {/Symbol d}, each paper scene from its scene file"
-set xlabel "end displacement {/Symbol d}"
-set ylabel "energy"
+set xlabel "end displacement {/Symbol d} (dimensionless units, the paper's)"
+set ylabel "energy (dimensionless units, the paper's)"
 set key below horizontal maxrows 4 font ",10"
 set bmargin 11
 set tmargin 5
@@ -27,8 +29,7 @@ do for [i=1:3] {
          '' u (column("t")*spd):(column("D")) w l lw 3 lc rgb '#d62728' title 'D (dissipated)', \
          '' u (column("t")*spd):(column("W_coh")) w l lw 2 lc rgb '#ff9896' dt 2 title 'W_{coh}', \
          '' u (column("t")*spd):(column("L_damp")) w l lw 2 lc rgb '#2ca02c' title 'L_{damp}', \
-         '' u (column("t")*spd):(column("L_flip")) w l lw 1.5 lc rgb '#9467bd' title 'L_{flip}', \
-         '' u (column("t")*spd):(column("L_scheme")) w l lw 1.5 lc rgb '#8c564b' title 'L_{scheme}', \
+         '' u (column("t")*spd):(column("L_flip") + column("L_scheme")) w l lw 1.5 lc rgb '#9467bd' title 'L_{flip} + L_{scheme}', \
          '' u (column("t")*spd):(column("L_bc")) w l lw 1.5 lc rgb '#e377c2' title 'L_{bc}', \
          '' u (column("t")*spd):(column("W_head")) w l lw 1.5 lc rgb '#7f7f7f' title 'W_{head}', \
          '' u (column("t")*spd):(column("L_contact")) w l lw 1.5 lc rgb '#bcbd22' dt 3 title 'L_{contact}', \

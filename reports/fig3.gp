@@ -10,13 +10,16 @@ set yrange [0:1.45]
 set ytics 0, 0.2, 1
 set xlabel "average strain  E e_{ave} / r_0"
 set ylabel "{/Symbol s}* = {/Symbol s} / r_0"
-# the key above the curves (sigma* <= 1): lines by g, then the kernel's points
-set key top left vertical maxrows 3 font ',10' samplen 1.5 spacing 1.1
+# the key above the curves (sigma* <= 1), one column: the lines by g, then one entry for
+# the kernel's points (drawn in their g's colour); a point set only where it has a note
+set key top left vertical maxrows 4 font ',10' samplen 1.5 spacing 1.1 width -2
 do for [i=1:3] {
   set title sprintf("q = %s", word(qs, i))
   plot for [j=1:3] sprintf('data/fig3-q%s-g%s.csv', word(qs, i), word(gs, j)) u 1:2 w l lw 2.5 lc j \
        title sprintf("g = %s%s", word(gs, j), value(sprintf("f3_snap_%d_%d", i-1, j-1)) ? " (snapback)" : ""), \
        for [j=1:3] sprintf('data/fig3-kernel-q%s-g%s.csv', word(qs, i), word(gs, j)) u 1:2 w p pt 6 ps 0.7 lc j \
-       title value(sprintf("f3k_have_%d_%d", i-1, j-1)) ? sprintf("kernel%s", value(sprintf("f3k_note_%d_%d", i-1, j-1))) : "kernel: no run"
+       title (!value(sprintf("f3k_have_%d_%d", i-1, j-1)) ? sprintf("g = %s: no kernel run", word(gs, j)) \
+              : strlen(value(sprintf("f3k_note_%d_%d", i-1, j-1))) > 0 ? sprintf("g = %s kernel%s", word(gs, j), value(sprintf("f3k_note_%d_%d", i-1, j-1))) : ""), \
+       1/0 w p pt 6 ps 1 lc rgb 'black' title "kernel (points)"
 }
 unset multiplot

@@ -6,7 +6,7 @@ set multiplot layout rows,cols title ttl
 set size ratio -1
 if (exists("cbmax")) { set cbrange [0:cbmax] } else { set cbrange [0:1] }
 set cblabel "{/Symbol l}"
-set xlabel "x"
+set xlabel "x (x and y in dimensionless units, the paper's)"
 set ylabel "y"
 unset key
 unset grid

@@ -4,8 +4,8 @@ W = 1400; Hgt = 600
 load gpdir.'/common.gp'
 set multiplot layout 1,2 title "Fig. 6's bar at the grip speed: the exact 1-D wave solution (cohesive plane) against the quasi-static curve"
 set title "load against deflection, h = 2, 1 ppc"
-set xlabel "end displacement {/Symbol d}"
-set ylabel "load P"
+set xlabel "end displacement {/Symbol d} (dimensionless units, the paper's)"
+set ylabel "load P (dimensionless units, the paper's)"
 set xrange [0.15:0.42]
 set yrange [-3:35]
 set key top right
@@ -21,7 +21,7 @@ set logscale xy
 set xrange [0.8:10]
 set yrange [*:*]
 set xtics (1, 2, 4, 8)
-set xlabel "grid spacing h"
+set xlabel "grid spacing h (dimensionless units, the paper's)"
 set ylabel "RMS load error / P_{max}"
 set format y "10^{%T}"
 set key top right

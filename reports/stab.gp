@@ -9,7 +9,7 @@ set xrange [0:1.2]
 set yrange [*:2]
 set arrow 1 from 1, graph 0 to 1, graph 1 nohead dt 2 lc rgb '#888888'
 set arrow 2 from 0.1/dt_crit8, graph 0 to 0.1/dt_crit8, graph 1 nohead dt 3 lc rgb '#4444aa'
-set label 2 "paper's dt = 0.1" at 0.1/dt_crit8, graph 0.95 offset 0.5,0 font ',10'
+set label 2 sprintf("the paper's dt = 0.1\n= %.2f dt_{crit}", 0.1/dt_crit8) at 0.1/dt_crit8, graph 0.7 right offset -0.5,0 font ',10' tc rgb '#4444aa'
 set arrow 3 from 1/sqrt(2), graph 0 to 1/sqrt(2), graph 1 nohead dt 2 lc rgb '#cc6666'
 set label 3 "h/(c{/Symbol \326}2)" at 1/sqrt(2), graph 0.5 right offset -0.5,0 font ',10' tc rgb '#cc6666'
 set label 4 "h/c" at 1, graph 0.5 right offset -0.5,0 font ',10' tc rgb '#888888'

@@ -4,7 +4,7 @@
 set size ratio -1
 set cbrange [0:1]
 set cblabel "{/Symbol l}"
-set xlabel "x"
+set xlabel "x (x and y in dimensionless units, the paper's)"
 set ylabel "y"
 unset key
 unset grid

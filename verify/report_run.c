@@ -35,14 +35,18 @@ void ver_report_abs(const char *path, char *out, size_t len)
 }
 
 
-/* "decohesion.separation=0.8" -> "-separation0.8" appended to id. */
+/* "decohesion.separation=0.8" -> "-separation0.8" appended to id (ver_scene_id_part). */
 static void id_suffix(char *id, size_t len, const char *set)
 {
-  const char *dot = strchr(set, '.'), *eq = strchr(set, '=');
-  if (!dot || !eq || eq < dot)
+  if (!strchr(set, '='))
     return;
-  const size_t n = strlen(id);
-  snprintf(id + n, len - n, "-%.*s%s", (int)(eq - dot - 1), dot + 1, eq + 1);
+  char part[128];
+  ver_scene_id_part(set, part, sizeof part);
+  const size_t n = strlen(id), m = strlen(part);
+  if (n + m + 2 <= len) {
+    id[n] = '-';
+    memcpy(id + n + 1, part, m + 1);
+  }
 }
 
 int ver_report_add(rep_ctx *r, const char *scene, double h, int ppc, double dt, double until,

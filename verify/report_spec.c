@@ -1,14 +1,15 @@
 /*
  * report_spec.c - the split beams in `delam report` (report.h; docs/specimens.md): the
  * double cantilever beam (dcb.ini) and the end-loaded split (the same file with
- * specimen.type = els, snf 10, stf 1) at h 4 and 2, 4 ppc, on their file's static solver
- * (REP_SPEC, tag 0 the DCB, 1 the ELS).  The figure "specimens" draws them over the
+ * specimen.type = els, snf 10, stf 1) at h 8, 4 and 2, 4 ppc, on their file's static
+ * solver (REP_SPEC, tag 0 the DCB, 1 the ELS).  The figure "specimens" draws them over the
  * references `delam check` holds them to (verify/check_spec.c): data/fe's 2-D
  * finite-element compliance C(a), as the elastic line P = delta / C(a0) and the LEFM
  * branch P = sqrt(2 G_c / C'(a)), delta = C P; corrected beam theory's branch; and the
  * DCB's cohesive beam, a Timoshenko arm on the law and the ligament's foundation (the
- * curve of `delam analytic --specimen dcb --curve`, traced further).  The text's numbers
- * are ver_spec_judge's: the checks of `delam check` on the same folders.
+ * curve of `delam analytic --specimen dcb --curve`, traced further); its bottom row their
+ * errors against h (spec-conv.csv).  The text's numbers are ver_spec_judge's: the checks
+ * of `delam check` on the same folders.
  */
 #include <math.h>
 #include <stdio.h>
@@ -23,8 +24,8 @@
 
 #define SPEC_SCENE "dcb"
 #define SPEC_PPC 4
-#define SPEC_NH 2
-static const double spec_h[SPEC_NH] = {4.0, 2.0};
+#define SPEC_NH 3
+static const double spec_h[SPEC_NH] = {8.0, 4.0, 2.0}; /* the P-delta panels draw 4 and 2 */
 /* the ELS's law: docs/specimens-reference.md's defaults (mode II, shear the weaker) */
 static const char *const els_sets[3] = {"specimen.type=els", "decohesion.snf=10", "decohesion.stf=1"};
 static const char *const spec_name[2] = {"dcb", "els"};
@@ -199,6 +200,54 @@ static void write_czm(const rep_ctx *r, const spec_ref *f, FILE *vars)
     ana_czm_path_free(&cz);
 }
 
+/* `delam check DIR` on case c: its checks into chk (n of them), from the run's own
+ * scene.ini as check_folder.c reads it; 0, or -1 with why in err. */
+static int judge_case(const rep_case *c, ver_check *chk, int *n, char *err, size_t errlen)
+{
+  static ver_scene vs; /* large */
+  char p[REP_PATH + 32];
+  snprintf(p, sizeof p, "%s/scene.ini", c->dir);
+  *n = 0;
+  if (ver_scene_parse(p, &vs, err, errlen) != 0)
+    return -1;
+  vs.allow_unstable = 1;
+  return ver_scene_validate(&vs, err, errlen) == 0 && ver_spec_judge(c->dir, &vs, chk, VER_NCHECK, n, err, errlen) == 0
+             ? 0
+             : -1;
+}
+
+/* spec-conv.csv (spec, h, compliance, peak, branch): each run's |error| against the 2-D
+ * FE compliance, the cohesive beam's peak (the DCB) and the 2-D LEFM branch (RMS), as
+ * `delam check` measures them; empty fields where a check was skipped or the run is
+ * missing. */
+static void write_conv(const rep_ctx *r)
+{
+  FILE *o = ver_report_open_data(r, "spec-conv.csv");
+  if (!o)
+    return;
+  fprintf(o, "spec,h,compliance,peak,branch\n");
+  static const char *const want[3] = {"compliance", "peak_P", "branch"};
+  for (int s = 0; s < 2; s++)
+    for (int k = 0; k < SPEC_NH; k++) {
+      const rep_case *c = spec_case(r, s, spec_h[k]);
+      ver_check chk[VER_NCHECK];
+      char err[600];
+      int n = 0;
+      if (!c || judge_case(c, chk, &n, err, sizeof err) != 0)
+        continue;
+      fprintf(o, "%d,%g", s, spec_h[k]);
+      for (int w = 0; w < 3; w++) {
+        double e = NAN;
+        for (int j = 0; j < n; j++)
+          if (!strcmp(chk[j].name, want[w]))
+            e = fabs(chk[j].error);
+        fprintf(o, isnan(e) ? "," : ",%.6g", e);
+      }
+      fprintf(o, "\n");
+    }
+  ver_report_close_data(r, o, "spec-conv.csv");
+}
+
 /* The runs' ids (spec_<s>_h<h>) and their keys' notes: " (stopped at delta = X)" for a
  * run that ended early, else "". */
 static void write_ids(const rep_ctx *r, FILE *vars)
@@ -231,6 +280,7 @@ void ver_report_spec_write(const rep_ctx *r, FILE *vars)
     if (s == 0)
       write_czm(r, &f, vars);
   }
+  write_conv(r);
   write_ids(r, vars);
 }
 
@@ -295,16 +345,10 @@ static double tip_stats(const rep_case *c, const spec_ref *f, char *snap, size_t
  * the verdict; 0, or -1 (the verdict says why) where the folder could not be judged. */
 static int check_vars(report *R, const char *key, const rep_case *c)
 {
-  static ver_scene vs; /* large */
-  char k[96], buf[400], p[REP_PATH + 32], err[600] = "";
+  char k[96], buf[400], err[600] = "";
   ver_check chk[VER_NCHECK];
   int n = 0;
-  /* the run's own scene.ini, read as `delam check DIR` reads it (check_folder.c) */
-  snprintf(p, sizeof p, "%s/scene.ini", c->dir);
-  int ok = ver_scene_parse(p, &vs, err, sizeof err) == 0;
-  vs.allow_unstable = 1;
-  ok = ok && ver_scene_validate(&vs, err, sizeof err) == 0 &&
-       ver_spec_judge(c->dir, &vs, chk, VER_NCHECK, &n, err, sizeof err) == 0;
+  const int ok = judge_case(c, chk, &n, err, sizeof err) == 0;
   int fail = 0;
   char failed[200] = "";
   for (int i = 0; ok && i < n; i++) {

@@ -280,6 +280,8 @@ static void sweep_vars(report *R)
     char key[64];
     snprintf(key, sizeof key, "fit:%s", sc);
     num(R, key, "p_curve", R->fits[s].p_curve);
+    /* whether the curve approaches the analytic one, in words (fig6b's text) */
+    word(R, key, "approach", R->fits[s].p_curve >= 0.5 ? "approaches the analytic one" : "does NOT approach the analytic one");
     if (R->fits[s].n > 0 && R->fits[s].n_diss_exact == R->fits[s].n)
       word(R, key, "p_diss", "none (D exact to rounding on every grid)");
     else /* the fit leaves out any grid at rounding */

@@ -194,6 +194,7 @@ static void take_step(run_state *r, ver_summary *u, double delta)
   w->Pg = r->acc_g / r->acc_n;
   w->Pf = r->acc_f / r->acc_n;
   w->tip = in.crack_tip;
+  w->zone = in.zone_end;
   w->det = NAN;
   if (r->q) { /* the state's stability and the critical point crossed to it (docs/static.md) */
     mpm_static_stats qs;

@@ -52,6 +52,7 @@ int ver_method_find(const char *name);        /* index of a preset, or -1       
 const char *ver_method_name(int preset);      /* its name; "none" for -1             */
 int ver_method_rows(int preset, const char *const **sets); /* its rows: how many     */
 int ver_method_key(int ki);
+int ver_method_held(int ki); /* 1: a method key the presets hold, listed apart */
 const char *ver_method_where(const ver_scene *vs); /* "scene file", "command line" or "none" */                   /* 1 if key ki of the table is a method key */
 void ver_method_list(char *buf, size_t len);  /* "paper, band or interface"         */
 int ver_method_apply_file(ver_scene *vs, int line, char *msg, size_t len);
@@ -103,11 +104,19 @@ double ver_scene_rate_ratio(const mpm_scene *sc);
  * gyration).  For the default bar, mode 1, the correction is +0.07 %. */
 double ver_scene_vib_period(const mpm_scene *sc);
 /* Case id: scene, h and ppc, then every override but grid.h, grid.ppc and a time.dt
- * that only keeps the file's Courant number, e.g. "fig6-h4-ppc4" or
- * "fig6-h8-ppc1-material.E=2048" (the last value of each key; numbers in their shortest
- * exact form).  Two runs of different scenes never get the same id. */
+ * that only keeps the file's Courant number, each as ver_scene_id_part writes it, e.g.
+ * "fig6-h4-ppc4", "fig6-h8-ppc1-E2048", "fig6-h8-ppc4-static" (the last value of each
+ * key).  Two runs of different scenes never get the same id. */
 void ver_scene_case_id(const ver_scene *vs, char *buf, size_t len);
-/* v in the shortest %g form that reads back as v exactly (at most 17 digits). */
+/* One override "section.key=value" as a part of a folder name a person can type: the
+ * key and its number without exponent ("E2048", "separation0.98", "a0_100" after a
+ * digit), the word alone for a type or preset ("static", "els", "paper"), else the key
+ * and its word ("scheme_musl", "Le_zone"). */
+void ver_scene_id_part(const char *set, char *buf, size_t len);
+/* v as ver_scene_fmt_num writes it, without exponent (a folder name). */
+void ver_scene_id_num(double v, char *buf, size_t len);
+/* v in the shortest form that reads back as v exactly (at most 17 digits), without an
+ * exponent from 1e-9 to 1e15. */
 void ver_scene_fmt_num(double v, char *buf, size_t len);
 /* Scene, h and ppc only, e.g. "fig6-h4-ppc4" (verify adds its own variant names). */
 void ver_scene_base_id(const ver_scene *vs, char *buf, size_t len);

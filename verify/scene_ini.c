@@ -14,7 +14,9 @@
 
 void ver_scene_base_id(const ver_scene *vs, char *buf, size_t len)
 {
-  snprintf(buf, len, "%s-h%g-ppc%d", vs->name, vs->sc.h, vs->sc.ppc);
+  char h[64];
+  ver_scene_id_num(vs->sc.h, h, sizeof h);
+  snprintf(buf, len, "%s-h%s-ppc%d", vs->name, h, vs->sc.ppc);
 }
 
 void ver_scene_fmt_num(double v, char *buf, size_t len)
@@ -24,15 +26,51 @@ void ver_scene_fmt_num(double v, char *buf, size_t len)
     if (strtod(buf, NULL) == v)
       break;
   }
-  /* as a person writes it: no exponent between 1e-4 and 1e15 (90, not 9e+01) */
+  /* as a person writes it: no exponent between 1e-9 and 1e15 (90, not 9e+01; 0.00001,
+   * not 1e-05) */
   const double a = fabs(v);
-  if (!strchr(buf, 'e') || !(a >= 1e-4 && a < 1e15))
+  if (!strchr(buf, 'e') || !(a >= 1e-9 && a < 1e15))
     return;
-  for (int dec = 0; dec <= 20; dec++) {
+  for (int dec = 0; dec <= 26; dec++) {
     snprintf(buf, len, "%.*f", dec, v);
     if (strtod(buf, NULL) == v)
       return;
   }
+}
+
+void ver_scene_id_num(double v, char *buf, size_t len)
+{
+  ver_scene_fmt_num(v, buf, len);
+  if (!strchr(buf, 'e'))
+    return;
+  char t[64];
+  for (int dec = 0; dec <= 40; dec++) { /* a folder name has no exponent: 0.00001, not 1e-05 */
+    snprintf(t, sizeof t, "%.*f", dec, v);
+    if (strtod(t, NULL) == v || dec == 40) {
+      snprintf(buf, len, "%s", t);
+      return;
+    }
+  }
+}
+
+void ver_scene_id_part(const char *set, char *buf, size_t len)
+{
+  const char *eq = strchr(set, '='), *dot = strchr(set, '.');
+  const char *key = dot && dot < eq ? dot + 1 : set;
+  const int klen = (int)(eq - key);
+  char val[64];
+  double v;
+  if (ver_scene_key_num(eq + 1, &v) == 0) {
+    ver_scene_id_num(v, val, sizeof val);
+    const int digit_end = klen > 0 && key[klen - 1] >= '0' && key[klen - 1] <= '9';
+    snprintf(buf, len, "%.*s%s%s", klen, key, digit_end ? "_" : "", val); /* E2048, a0_100 */
+  } else if ((klen == 4 && !strncmp(key, "type", 4)) || (klen == 6 && !strncmp(key, "preset", 6)))
+    snprintf(buf, len, "%.60s", eq + 1); /* static, els, paper: the word alone */
+  else
+    snprintf(buf, len, "%.*s_%.60s", klen, key, eq + 1); /* scheme_musl, Le_zone */
+  for (char *c = buf; *c; c++)
+    if (*c == '/' || *c == ' ' || *c == ',' || *c == '=')
+      *c = '_'; /* a folder name */
 }
 
 void ver_scene_case_id(const ver_scene *vs, char *buf, size_t len)
@@ -50,19 +88,10 @@ void ver_scene_case_id(const ver_scene *vs, char *buf, size_t len)
     if (!strncmp(o, "time.dt=", 8) && vs->file_h > 0 &&
         fabs(vs->sc.dt - vs->file_dt * vs->sc.h / vs->file_h) <= 1e-12 * vs->sc.dt)
       continue; /* the dt --h scales to: no choice of the user's */
-    char val[64];
-    double v;
-    if (ver_scene_key_num(eq + 1, &v) == 0)
-      ver_scene_fmt_num(v, val, sizeof val);
-    else
-      snprintf(val, sizeof val, "%s", eq + 1);
-    for (char *c = val; *c; c++)
-      if (*c == '/' || *c == ' ' || *c == ',')
-        *c = '_'; /* a folder name */
-    if (!strncmp(o, "method.preset=", 14)) /* --method NAME */
-      n += n < len ? (size_t)snprintf(buf + n, len - n, "-method=%s", val) : 0;
-    else if (n < len)
-      n += (size_t)snprintf(buf + n, len - n, "-%.*s=%s", (int)klen, o, val);
+    char part[128];
+    ver_scene_id_part(o, part, sizeof part);
+    if (n < len)
+      n += (size_t)snprintf(buf + n, len - n, "-%s", part);
   }
 }
 
@@ -134,29 +163,43 @@ static const char *type_name(ktype t)
   }
 }
 
+/* One row of the key table; held: the presets' knobs, without the required column. */
+static void key_row(FILE *f, const keydef *k, int held)
+{
+  char def[64];
+  if (k->required)
+    snprintf(def, sizeof def, "-");
+  else if (ver_scene_enum_type(k->type))
+    snprintf(def, sizeof def, "%s", ver_scene_enum_word(k->type, (int)k->def));
+  else if (k->type == K_LIST)
+    snprintf(def, sizeof def, "none");
+  else if (k->def < 0)
+    snprintf(def, sizeof def, "derived");
+  else
+    snprintf(def, sizeof def, "%g", k->def);
+  if (held) {
+    fprintf(f, "| %s.%s | %s | %s | %s |\n", k->section, k->key, type_name(k->type), k->allowed, def);
+    return;
+  }
+  fprintf(f, "| %s | %s | %s | %s | %s | %s |\n", k->section, k->key, type_name(k->type),
+          k->required == 1   ? "yes"
+          : k->required == 2 ? "when decohesion.model > 0"
+          : k->required == 3 ? "unless vibration.mode > 0"
+                             : "no",
+          k->allowed, def);
+}
+
 void ver_scene_keys_markdown(FILE *f)
 {
   fprintf(f, "| section | key | type | required | allowed | default |\n|---|---|---|---|---|---|\n");
-  for (int i = 0; i < ver_scene_nkeys; i++) {
-    const keydef *k = &ver_scene_keys[i];
-    char def[64];
-    if (k->required)
-      snprintf(def, sizeof def, "-");
-    else if (ver_scene_enum_type(k->type))
-      snprintf(def, sizeof def, "%s", ver_scene_enum_word(k->type, (int)k->def));
-    else if (k->type == K_LIST)
-      snprintf(def, sizeof def, "none");
-    else if (k->def < 0)
-      snprintf(def, sizeof def, "derived");
-    else
-      snprintf(def, sizeof def, "%g", k->def);
-    fprintf(f, "| %s | %s | %s | %s | %s | %s |\n", k->section, k->key, type_name(k->type),
-            k->required == 1   ? "yes"
-            : k->required == 2 ? "when decohesion.model > 0"
-            : k->required == 3 ? "unless vibration.mode > 0"
-                               : "no",
-            k->allowed, def);
-  }
+  for (int i = 0; i < ver_scene_nkeys; i++)
+    if (!ver_method_held(i))
+      key_row(f, &ver_scene_keys[i], 0);
+  fprintf(f, "\nHeld by the presets (advanced: a scene file or --set may still set them):\n\n"
+             "| key | type | allowed | default |\n|---|---|---|---|\n");
+  for (int i = 0; i < ver_scene_nkeys; i++)
+    if (ver_method_held(i))
+      key_row(f, &ver_scene_keys[i], 1);
 }
 
 const char *ver_scene_word(const ver_scene *vs, const char *section, const char *key)

@@ -23,6 +23,14 @@ static const char *const method_keys[] = {
     "time.damping_tau"};
 #define NMETHOD_KEYS (int)(sizeof method_keys / sizeof method_keys[0])
 
+/* The method keys a user does not choose: the presets hold them, the keys page lists them
+ * apart (advanced), and a scene or --set may still set them. */
+static const char *const held_keys[] = {
+    "decohesion.Le_factor", "decohesion.share", "decohesion.reversed_shear", "decohesion.path_reach",
+    "imperfection.size",    "grid.motion",      "grid.weights",              "grid.node_mass",
+    "time.damping",         "time.damping_from", "time.damping_about",       "time.damping_beta",
+    "time.damping_tau"};
+
 /* The paper's method: its bilinear shapes, one field, Le of the cell, the snf-only
  * imperfection (0.9) at one particle, every particle free to soften, a fixed grid, no
  * damping and USL, with the nodal mass limit, which changes nothing until a node passes
@@ -93,6 +101,16 @@ int ver_method_key(int ki)
   snprintf(name, sizeof name, "%s.%s", ver_scene_keys[ki].section, ver_scene_keys[ki].key);
   for (int i = 0; i < NMETHOD_KEYS; i++)
     if (!strcmp(method_keys[i], name))
+      return 1;
+  return 0;
+}
+
+int ver_method_held(int ki)
+{
+  char name[64];
+  snprintf(name, sizeof name, "%s.%s", ver_scene_keys[ki].section, ver_scene_keys[ki].key);
+  for (size_t i = 0; i < sizeof held_keys / sizeof held_keys[0]; i++)
+    if (!strcmp(held_keys[i], name))
       return 1;
   return 0;
 }

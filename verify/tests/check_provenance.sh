@@ -24,7 +24,7 @@ cd "$tmp"
 
 ver=$("$delam" --version | sed -n 's/^delam //p' | head -1)
 "$delam" run fig6 --h=4 --until=0.05 --quiet >/dev/null 2>err.txt
-d=out/fig6-h4-ppc1-run.end_delta=0.05-run.stop_margin=0
+d=out/fig6-h4-ppc1-end_delta0.05-stop_margin0
 why=""
 [ -n "$ver" ] || why="delam --version printed no version"
 [ -z "$why" ] && [ ! -f "$d/summary.json" ] && why="no $d/summary.json ($(head -1 err.txt); folders: $(ls out 2>/dev/null))"
@@ -42,9 +42,9 @@ result scene-ini "$why"
 
 why=""
 "$delam" run fig6 --h 4 --until 0.05 --set material.E=2048 --quiet >/dev/null 2>err.txt
-e=out/fig6-h4-ppc1-run.end_delta=0.05-run.stop_margin=0-material.E=2048
-ls -d out/*material.E=2048* >/dev/null 2>&1 || why="no folder naming material.E=2048 ($(ls out))"
-e=$(ls -d out/*material.E=2048* 2>/dev/null | head -1)
+e=out/fig6-h4-ppc1-E2048-end_delta0.05-stop_margin0
+[ -d "$e" ] || why="no folder $e ($(ls out))"
+[ -z "$why" ] && ls out | grep -q '[=+]' && why="a folder name with '=' or an exponent: $(ls out)"
 [ -z "$why" ] && [ "$(ls out | wc -l)" != 2 ] && why="expected 2 case folders, found: $(ls out)"
 [ -z "$why" ] && ! json "$e/summary.json" '"material.E=2048" in d["overrides"] and "E = 2048" in d["effective_scene"]' | grep -q True &&
   why="summary.json does not list the override and the effective scene"
