@@ -217,20 +217,20 @@ size_t mpm_sim_bytes_per_particle(const mpm_sim *s);
  * softening, then the dissipation does (the grip may move back: snapback).  An
  * increment is one "step" of the sim: delta, loads, particles, step and t advance. */
 enum { MPM_QS_GRIP = 0, MPM_QS_DISSIPATION = 1 };
+/* the path's critical points (docs/static.md): a uniform state's tie, a limit point of delta, a bifurcation */
+enum { MPM_QS_TIE = 1, MPM_QS_LIMIT = 2, MPM_QS_BIFURCATION = 3 };
 typedef struct {
-  long increments;         /* load increments taken                                    */
-  long newton;             /* Newton iterations, all increments                        */
-  long cuts;               /* increments retried with a smaller step                   */
-  long factorizations;     /* LU factorizations of the tangent                         */
-  long switches;           /* changes of control                                       */
-  long turns;              /* increments retried smaller at a corner of the curve      */
+  long increments, newton; /* load increments taken; Newton iterations, all increments */
+  long cuts, factorizations; /* increments retried with a smaller step; LU factorizations */
+  long switches, turns;    /* changes of control; increments retried smaller at a corner */
+  int det_sign;            /* the last state's tangent K (grip held): sign of det K, 0 singular */
+  int crit;                /* MPM_QS_TIE, _LIMIT, _BIFURCATION the last increment crossed (0: none) */
   long backtracks;         /* Newton steps halved by the line search                   */
   long severed;            /* interface segments let go below 2 % of the peak load     */
   int nres;                /* the last increment's Newton iterations, and each one's   */
   double res[32];          /* largest residual force over the largest load (first 32) */
   int mode;                /* MPM_QS_* of the last increment                           */
-  int unknowns;            /* free degrees of freedom                                  */
-  size_t nnz;              /* entries of the tangent                                   */
+  int unknowns; size_t nnz; /* free degrees of freedom; entries of the tangent         */
   double t_eval, t_factor, t_solve; /* seconds: laws and assembly, factorization, solves */
 } mpm_static_stats;
 typedef struct mpm_static mpm_static;

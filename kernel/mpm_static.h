@@ -23,6 +23,8 @@ size_t mpm_lin_nnz(const mpm_lin *l);
 mpm_status mpm_lin_factor(mpm_lin *l);
 /* x = A^-1 b with the last factors; x and b may not alias. */
 mpm_status mpm_lin_solve(mpm_lin *l, const double *b, double *x);
+/* The sign of the last factors' determinant (+1, -1; 0: none held). */
+int mpm_lin_det_sign(const mpm_lin *l);
 
 /* ---- a bar particle's stencil at its reference place (total Lagrangian) ---- */
 #define MPM_ST_MAX 9 /* uGIMP: 3 x 3 nodes */
@@ -87,6 +89,9 @@ struct mpm_static {
   int have_pred;          /* pdir, pden are the committed state's                        */
   double *pdir;           /* d u / d delta at the committed state (unknowns)             */
   double pden;            /* d C / d delta along pdir                                    */
+  int wsign, xsign, wdir; /* at the last state with det K's sign: it, det K pden's, delta's way */
+  int wtie;               /* a tie's states since it (their sign is rounding's)            */
+  long tie;               /* particles tied at the first initiation (> ppc: a uniform state) */
   mpm_static_stats st;
   /* decohesion.path = interface (mpm_static_iface.c): the line's law between the two
    * copies of each split node, as a stiff elastic tie until it initiates */
@@ -129,6 +134,16 @@ void mpm_static_iface_free(mpm_static *q);
  * 1 softening, 2 open: separated or a pre-crack); 0 pieces on an inclined line. */
 int mpm_static_iface_npieces(const mpm_static *q);
 int mpm_static_iface_piece(const mpm_static *q, int i, double xy[4], double *lam, int *state);
+
+/* mpm_static.c: Newton's method on one increment under the current control (1 converged,
+ * the trial state the increment's; 0 not; -2 the dissipation cannot lead: nothing
+ * softens), the committed state's tangent and predictor, the trial state committed.  The
+ * path control that calls them: mpm_static_path.c (mpm_static_step). */
+#define MPM_QS_CMIN 1e-12 /* of U0 H / sin a: less dissipated is nothing (rounding)     */
+#define MPM_QS_NEL 8      /* equal increments of the linear branch up to the first initiation */
+int mpm_static_increment(mpm_static *q, int *iters);
+mpm_status mpm_static_predict(mpm_static *q);
+void mpm_static_commit(mpm_static *q);
 
 /* mpm_static_asm.c: the stencils and unknowns (setup), the trial state of every particle
  * from Ut with the residual, tangent and the dissipation's gradient (eval). */

@@ -7,6 +7,7 @@
  * (SuiteSparse) beyond, with its fill-reducing ordering computed once per run.  Their
  * times: docs/static.md.
  */
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -17,6 +18,7 @@
 #include "mpm_static.h"
 
 #define MPM_LIN_BAND_MAX 160 /* bands up to this many unknowns either side of the diagonal */
+#define MPM_LIN_SING 1e-12   /* a least pivot below this share of the largest: singular to rounding */
 
 struct mpm_lin {
   int n;
@@ -145,4 +147,36 @@ mpm_status mpm_lin_solve(mpm_lin *l, const double *b, double *x)
   }
   const int st = umfpack_di_solve(UMFPACK_A, l->Ap, l->Ai, l->Ax, x, b, l->num, l->ctl, l->info);
   return st == UMFPACK_OK ? MPM_OK : MPM_ENOTFINITE;
+}
+
+/* The sign of the last factorization's determinant (LU with partial pivoting: det =
+ * (-1)^(row exchanges) times the product of U's diagonal; UMFPACK computes it from its
+ * factors with their scaling); 0 where no factors are held or the matrix is singular to
+ * rounding, its least pivot below MPM_LIN_SING of the largest (UMFPACK's rcond is that
+ * ratio): there the sign is rounding's (one quadrature point a cell, whose hourglass
+ * modes leave pivots of 1e-16 of the largest; the interface's stiff ties 1e-5).  The
+ * count of U's negative pivots is not the matrix's inertia once rows are exchanged, so
+ * only the sign is given. */
+int mpm_lin_det_sign(const mpm_lin *l)
+{
+  if (!l->num)
+    return 0;
+  if (!l->AB) {
+    double mx = 0.0, ex = 0.0;
+    if (!(l->info[UMFPACK_RCOND] >= MPM_LIN_SING) || umfpack_di_get_determinant(&mx, &ex, l->num, NULL) != UMFPACK_OK)
+      return 0;
+    return (mx > 0.0) - (mx < 0.0);
+  }
+  int s = 1;
+  double umin = INFINITY, umax = 0.0;
+  for (int j = 0; j < l->n; j++) {
+    const double u = gsl_matrix_get(l->AB, (size_t)j, 2 * l->p);
+    umin = fmin(umin, fabs(u));
+    umax = fmax(umax, fabs(u));
+    if (u < 0.0)
+      s = -s;
+    if (gsl_vector_uint_get(l->piv, (size_t)j) != (unsigned)j)
+      s = -s;
+  }
+  return umin >= MPM_LIN_SING * umax ? s : 0;
 }

@@ -43,7 +43,8 @@ static void usage(FILE *f)
     "  - the load curve, P_grip against delta (load.csv), with its reference where there\n"
     "    is one: the scene's closed-form bar (as delam analytic --curve), or on the split\n"
     "    beams (specimen.type = dcb or els) the 2-D LEFM branch of data/fe that delam\n"
-    "    check holds them to;\n"
+    "    check holds them to; a static run's rows with det_sign -1 (a state a held grip\n"
+    "    cannot keep) marked;\n"
     "  - the crack front against delta where load.csv has crack_tip, with the branch's a;\n"
     "  - the energy ledger of energy.csv: W_ext, KE, SE, W_coh, D, the booked losses (the\n"
     "    L_* columns and W_head) and the balance KE + SE + W_coh + booked - KE(0) - SE(0),\n"
@@ -88,7 +89,7 @@ typedef struct {
   char xnote[200];
 } plot_run;
 
-enum { L_D, L_P, L_TIP, L_T };
+enum { L_D, L_P, L_TIP, L_T, L_DET };
 enum { E_W, E_KE, E_SE, E_WCOH, E_D, E_BOOK0, E_NBOOK = 7, E_T = E_BOOK0 + E_NBOOK }; /* booked: L_bc .. L_damp */
 
 static int plot_args(int argc, char **argv, plot_opts *o)
@@ -315,7 +316,7 @@ static void wrap(char *s, int width)
   }
 }
 
-/* The inline data: $load (delta, P_grip[, crack_tip]), $ref (delta, P[, a]) and $en (x,
+/* The inline data: $load (delta, P_grip[, crack_tip][, det_sign]), $ref (delta, P[, a]) and $en (x,
  * W_ext, KE, SE, W_coh, D, booked, balance) with x delta where energy.csv has load.csv's
  * rows, else t, else the row number; returns which (0, 1, 2). */
 static int gp_data(FILE *f, const plot_run *p)
@@ -326,6 +327,8 @@ static int gp_data(FILE *f, const plot_run *p)
     fprintf(f, "%.9g %.9g", ld->col[L_D][i], ld->col[L_P][i]);
     if (ld->col[L_TIP])
       fprintf(f, " %.9g", ld->col[L_TIP][i]);
+    if (ld->col[L_DET])
+      fprintf(f, " %.9g", ld->col[L_DET][i]);
     fputc('\n', f);
   }
   fputs("EOD\n$ref << EOD\n", f);
@@ -378,6 +381,9 @@ static void gp_script(FILE *f, const plot_opts *o, const plot_run *p, const char
   gp_str(f, t1);
   /* headroom for the key above the curves */
   fputs("\nset offsets 0, 0, graph 0.2, 0\nplot $load using 1:2 with lines lw 2 lc rgb '#1f4e9a' title 'this run (load.csv)'", f);
+  if (p->ld.col[L_DET]) /* the static solver's stability (docs/static.md, "Stability") */
+    fprintf(f, ", $load using 1:($%d < 0 ? $2 : 1/0) with points pt 7 ps 0.6 lc rgb '#e67e22' title "
+            "'det K < 0 (det_sign): a state a held grip cannot keep'", 3 + tip);
   if (p->nref) {
     fputs(", $ref using 1:2 with lines dt 2 lw 2 lc rgb '#c0392b' title ", f);
     gp_str(f, p->ref_label);
@@ -406,7 +412,7 @@ static void gp_script(FILE *f, const plot_opts *o, const plot_run *p, const char
 /* The folder's tables into p; 0, or 2 with the reason on stderr. */
 static int read_run(const char *dir, plot_run *p)
 {
-  static const char *const lnames[] = {"delta", "P_grip", "crack_tip", "t"};
+  static const char *const lnames[] = {"delta", "P_grip", "crack_tip", "t", "det_sign"};
   static const char *const enames[] = {"W_ext",  "KE",        "SE",       "W_coh",  "D", "L_bc", "L_flip",
                                        "L_scheme", "W_head", "L_contact", "L_debris", "L_damp", "t"};
   char path[1400], err[1600] = "";
@@ -422,7 +428,7 @@ static int read_run(const char *dir, plot_run *p)
     return 2;
   }
   snprintf(path, sizeof path, "%s/load.csv", dir);
-  int r = ver_table_read(path, lnames, 4, 2, &p->ld, err, sizeof err);
+  int r = ver_table_read(path, lnames, 5, 2, &p->ld, err, sizeof err);
   if (r == 1)
     snprintf(err, sizeof err, "%s: no such file (delam plot draws a run folder; its load.csv, with delta and P_grip, "
              "is required)", path);

@@ -186,6 +186,14 @@ static void take_step(run_state *r, ver_summary *u, double delta)
   w->Pf = r->acc_f / r->acc_n;
   w->tip = in.crack_tip;
   w->zone = in.zone_end;
+  w->det = NAN;
+  if (r->q) { /* the state's stability and the critical point crossed to it (docs/static.md) */
+    mpm_static_stats qs;
+    mpm_static_stats_get(r->q, &qs);
+    w->det = qs.det_sign;
+    if (qs.crit && u->ncrit++ < VER_CRIT_MAX)
+      u->crit[u->ncrit - 1] = (ver_crit){in.step, delta, w->Pg, qs.crit};
+  }
   r->acc_g = r->acc_f = 0.0;
   r->acc_n = 0;
   mpm_sim_energy(s, &w->e);
@@ -474,6 +482,10 @@ int ver_run(const ver_scene *vs, const ver_run_opts *o, ver_summary *u, char *er
   r.o = o;
   /* the kernel's refusal (a scene it cannot lay out) leaves the folder as it was */
   char kerr[512];
+  if (ver_static_refusal(&vs->sc, kerr, sizeof kerr)) {
+    snprintf(err, errlen, "%s: %s", vs->path, kerr);
+    return 2;
+  }
   const mpm_status st = mpm_sim_alloc(&vs->sc, o->threads, &r.s, kerr, sizeof kerr);
   if (st != MPM_OK) {
     snprintf(err, errlen, "%s: %s", vs->path, kerr);

@@ -213,14 +213,19 @@ int ver_run_write_rows(const ver_run_row *r, long n, const char *dir, char *bad)
   FILE *f = ver_run_open_tmp(dir, "load.csv", tmp, sizeof tmp, bad);
   if (!f)
     return -1;
-  /* crack_tip, zone_end: the specimens with a pre-crack (docs/specimens.md) */
-  const int tip = n > 0 && isfinite(r[0].tip);
-  fprintf(f, "# delam load.csv schema %d\nt,delta,P_grip,P_fixed%s\n", VER_SCHEMA_LOAD, tip ? ",crack_tip,zone_end" : "");
-  for (long i = 0; i < n; i++)
+  /* crack_tip, zone_end: the specimens with a pre-crack (docs/specimens.md); det_sign:
+   * the static solver's, last (docs/static.md, "Stability") */
+  const int tip = n > 0 && isfinite(r[0].tip), det = n > 0 && isfinite(r[0].det);
+  fprintf(f, "# delam load.csv schema %d\nt,delta,P_grip,P_fixed%s%s\n", VER_SCHEMA_LOAD, tip ? ",crack_tip,zone_end" : "",
+          det ? ",det_sign" : "");
+  for (long i = 0; i < n; i++) {
+    fprintf(f, "%.9g,%.9g,%.9g,%.9g", r[i].t, r[i].delta, r[i].Pg, r[i].Pf);
     if (tip)
-      fprintf(f, "%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", r[i].t, r[i].delta, r[i].Pg, r[i].Pf, r[i].tip, r[i].zone);
-    else
-      fprintf(f, "%.9g,%.9g,%.9g,%.9g\n", r[i].t, r[i].delta, r[i].Pg, r[i].Pf);
+      fprintf(f, ",%.9g,%.9g", r[i].tip, r[i].zone);
+    if (det)
+      fprintf(f, ",%.0f", r[i].det);
+    fputc('\n', f);
+  }
   if (ver_run_commit(f, tmp, bad))
     return -1;
   if (!(f = ver_run_open_tmp(dir, "energy.csv", tmp, sizeof tmp, bad)))

@@ -16,6 +16,7 @@ typedef struct {
   double t, delta, Pg, Pf;
   double tip;              /* the crack front's x (NAN: the specimen has no pre-crack) */
   double zone;             /* the process zone's far end (NAN: no pre-crack)          */
+  double det;              /* static: the sign of the tangent's determinant (NAN: explicit) */
   mpm_energy e;
 } ver_run_row;
 

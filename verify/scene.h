@@ -134,5 +134,9 @@ const char *ver_scene_word(const ver_scene *vs, const char *section, const char 
 /* The closed-form bar of the scene (analytic/ana.h; alpha > 90 folded to 180 - alpha,
  * the same line).  0, or 2 with the reason in err (scene_bar.c). */
 int ver_scene_bar(const mpm_scene *sc, ana_bar *bar, char *err, size_t len);
+/* What the static solver refuses before a run: the kernel's rules (mpm_static_refusal) and
+ * a softening band on a bar whose closed form snaps back (g < 1; docs/static.md, "Where it
+ * stops").  0, or 2 with the reason in err (scene_bar.c). */
+int ver_static_refusal(const mpm_scene *sc, char *err, size_t len);
 
 #endif

@@ -84,6 +84,24 @@ static void add_method(cJSON *o, const ver_scene *vs)
     cJSON_AddItemToArray(d, cJSON_CreateString(diff[i]));
 }
 
+/* The static path's critical points (docs/static.md, "Stability"): each the first
+ * increment past it, its delta and load, and its kind. */
+static void add_critical(cJSON *o, const ver_summary *u)
+{
+  static const char *const kind[] = {"", "tie of a uniform state", "limit point", "bifurcation"};
+  cJSON_AddNumberToObject(o, "critical_points_total", (double)u->ncrit);
+  cJSON *a = cJSON_AddArrayToObject(o, "critical_points");
+  for (long i = 0; i < u->ncrit && i < VER_CRIT_MAX; i++) {
+    cJSON *c = cJSON_CreateObject();
+    cJSON_AddNumberToObject(c, "increment", (double)u->crit[i].increment);
+    cJSON_AddNumberToObject(c, "delta", u->crit[i].delta);
+    cJSON_AddNumberToObject(c, "P", u->crit[i].P);
+    const int k = u->crit[i].kind;
+    cJSON_AddStringToObject(c, "kind", k >= 1 && k <= 3 ? kind[k] : "unknown");
+    cJSON_AddItemToArray(a, c);
+  }
+}
+
 int ver_summary_write(const char *dir, const ver_scene *vs, const ver_summary *u, const char *errmsg)
 {
   cJSON *o = cJSON_CreateObject();
@@ -134,6 +152,8 @@ int ver_summary_write(const char *dir, const ver_scene *vs, const ver_summary *u
     }
     cJSON_AddNumberToObject(o, NUMS[i].key, v);
   }
+  if (u->static_run)
+    add_critical(o, u);
   /* provenance: what reproduces the run, and what built the program */
   cJSON_AddStringToObject(o, "version", ver_build_version());
   cJSON_AddStringToObject(o, "compiler", ver_build_compiler());

@@ -11,6 +11,14 @@
 
 #include "scene.h"
 
+#define VER_CRIT_MAX 16 /* critical points summary.json lists */
+/* A critical point of the static path, at the first increment past it. */
+typedef struct {
+  long increment;
+  double delta, P;  /* that increment's state                                    */
+  int kind;         /* MPM_QS_TIE, MPM_QS_LIMIT, MPM_QS_BIFURCATION (mpm.h)      */
+} ver_crit;
+
 typedef struct {
   double peak_P, delta_peak;     /* largest (interval-averaged) grip load and where  */
   double delta_sep;              /* separation: the first of delta_sep_cut and delta_sep_load; -1 if none */
@@ -50,6 +58,8 @@ typedef struct {
   long severed;                  /* interface segments the static solver let go at the end */
   int unknowns;                  /* free degrees of freedom                          */
   double t_eval, t_factor, t_solve; /* seconds: laws and assembly, factorization, solves */
+  long ncrit;                    /* static: critical points the path crossed (mpm.h MPM_QS_TIE ...) */
+  ver_crit crit[VER_CRIT_MAX];   /* the first VER_CRIT_MAX of them                   */
 } ver_summary;
 
 /* The ledger's booked losses at the end (the seven columns after D in energy.csv); a

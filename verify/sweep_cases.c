@@ -71,11 +71,11 @@ static int build_scene(const char *path, double h, int ppc, char sets[][128], in
   return ver_scene_validate(vs, err, len);
 }
 
-/* The static solver's refusal (the kernel's own rule), so that the sweep lists such a case
- * as refused instead of running it into a failure.  0, or 1 with the reason in buf. */
+/* The static solver's refusal (ver_static_refusal, delam run's own), so that the sweep lists
+ * such a case as refused instead of running it into a failure.  0, or 1 with the reason. */
 static int static_refusal(const mpm_scene *sc, char *buf, size_t len)
 {
-  return sc->solver == MPM_SOLVER_STATIC && mpm_static_refusal(sc, buf, len) != MPM_OK;
+  return ver_static_refusal(sc, buf, len) != 0;
 }
 
 int ver_case_a90(const ver_case *c)

@@ -9,7 +9,9 @@
 #              final.csv (and snapshots); summary.json differs only in its timings;
 #              and 1 and 2 threads give the same files;
 #   list-merge `verify --list` lines run by hand, then `verify --merge` checks them;
-#   uniform-bifurcation  fig6 without its flaw, static: exit 1 naming the bifurcation.
+#   uniform-bifurcation  fig6 without its flaw, static, h 8 and 4, and with a flaw of
+#              1e-6 at h 8: exit 1 naming the bifurcation, the linear branch's rows to it
+#              (det_sign +1) in load.csv and the tie in summary.json's critical_points.
 # Prints TAP; exits 1 if a check failed.
 set -u
 delam=${1:?usage: check_run.sh path/to/delam}
@@ -110,18 +112,43 @@ else
 fi
 result list-merge "$why"
 
-# a uniform bar without its flaw, statically: every particle of the band reaches its
-# strength at once, a bifurcation the uniform softening branch would follow to a
-# dissipation of 13 U0 H; the run stops with exit 1 and names it
-"$delam" run "$fig6" --solver static --h 8 --ppc 4 --threads 1 --quiet --set imperfection.snf_factor=1 \
-  --out "$tmp/noflaw" >/dev/null 2>"$tmp/noflaw.err"
-rc=$?
-why=""
-[ "$rc" = 1 ] || why="exit status $rc, want 1"
-grep -q "reach their strength together.*bifurcates" "$tmp/noflaw.err" || why="$why; no reason: $(head -c 300 "$tmp/noflaw.err")"
-w=$(partial_ok "$tmp/noflaw")
-[ -z "$w" ] || why="$why; $w"
-result uniform-bifurcation "${why#; }"
+# a uniform bar without its flaw, statically, h 8 and 4 (and at h 8 with a flaw of 1e-6,
+# within the first grip increment's 1e-4 of the rest: that increment starts them all):
+# every particle of the band reaches its strength at once, a bifurcation the uniform
+# softening branch would follow to a dissipation of 13 U0 H; the run follows the linear
+# branch to it, stops with exit 1 and names it: load.csv's rows with det_sign end at the
+# closed form's initiation of the weakest particle, delta = f snf L / E = f 0.1875, P =
+# f snf H = f 32 (f the flaw's factor), and summary.json's critical_points names the tie
+for c in 8:1 4:1 8:0.999999; do
+  h=${c%%:*} f=${c#*:}
+  o=$tmp/noflaw$h-$f
+  "$delam" run "$fig6" --solver static --h $h --ppc 4 --threads 1 --quiet --set imperfection.snf_factor=$f \
+    --out "$o" >/dev/null 2>"$o.err"
+  rc=$?
+  why=""
+  [ "$rc" = 1 ] || why="exit status $rc, want 1"
+  grep -q "reach their strength together.*bifurcates" "$o.err" || why="$why; no reason: $(head -c 300 "$o.err")"
+  w=$(partial_ok "$o")
+  [ -z "$w" ] || why="$why; $w"
+  w=$(python3 - "$o" "$f" <<'PY'
+import csv, json, sys
+d, f = sys.argv[1], float(sys.argv[2])
+rows = list(csv.DictReader(l for l in open(d + "/load.csv") if not l.startswith("#")))
+s = json.load(open(d + "/summary.json"))
+c = s.get("critical_points", [])
+dd, PP = f * 0.1875, f * 32
+if not rows or "det_sign" not in rows[0]: print("load.csv has no det_sign column")
+elif any(r["det_sign"] != "1" for r in rows): print("det_sign not +1 on the linear branch")
+elif abs(float(rows[-1]["delta"]) - dd) > 1e-9 or abs(float(rows[-1]["P_grip"]) - PP) > 1e-7:
+    print("last row delta %s P %s, want %.9g, %.9g" % (rows[-1]["delta"], rows[-1]["P_grip"], dd, PP))
+elif len(c) != 1 or c[0]["kind"] != "tie of a uniform state" or c[0]["increment"] != len(rows) \
+        or abs(c[0]["delta"] - dd) > 1e-9 or abs(c[0]["P"] - PP) > 1e-7:
+    print("critical_points %s, want one tie at increment %d, delta %.9g, P %.9g" % (c, len(rows), dd, PP))
+PY
+)
+  [ -z "$w" ] || why="$why; $w"
+  result "uniform-bifurcation-h$h-flaw$f" "${why#; }"
+done
 
 echo "1..$n"
 echo "# $((n - fail)) passed, $fail failed"

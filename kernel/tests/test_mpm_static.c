@@ -69,6 +69,8 @@ static int cmp_dbl(const void *a, const void *b)
 
 typedef struct {
   double d[4096], P[4096];
+  int det[4096];      /* each state's det_sign (mpm_static_stats)                    */
+  int crit[4096];     /* the critical point crossed to it (MPM_QS_*, 0 none)         */
   int n;
   double ratio[8192]; /* r_{k+1} / r_k^2 over Newton pairs near a solution             */
   int nquad;          /* how many                                                   */
@@ -91,10 +93,12 @@ static void run_static(const mpm_scene *sc, trace *t, mpm_energy *e, int n_max)
   for (int k = 0; k < n_max && mpm_sim_delta(s) < sc->end_delta && t->n < 4096; k++) {
     if (mpm_static_step(q, err, sizeof err) != MPM_OK)
       fail_msg("increment %d: %s", k, err);
-    t->d[t->n] = mpm_sim_delta(s);
-    t->P[t->n++] = s->P_grip;
     mpm_static_stats st;
     mpm_static_stats_get(q, &st);
+    t->det[t->n] = st.det_sign;
+    t->crit[t->n] = st.crit;
+    t->d[t->n] = mpm_sim_delta(s);
+    t->P[t->n++] = s->P_grip;
     /* pairs from below 1e-3 (near the solution) to above 1e-11 (clear of the rounding
      * of the nodal force sums, about 1e-13 of the load) */
     for (int i = 0; i + 1 < st.nres && t->nquad < 8192; i++)
@@ -218,6 +222,101 @@ static void test_mpm_static_interface_inclined(void **state)
   (void)state;
   run_inclined(60.0, 4.0);
   run_inclined(30.0, 2.0);
+}
+
+/* The sign of a tridiagonal matrix's determinant (diagonal a, both off-diagonals b) from
+ * its three-term recurrence f_k = a_k f_{k-1} - b^2 f_{k-2}, rescaled as it goes. */
+static int tridiag_det_sign(const double *a, int n, double b)
+{
+  double f0 = 1.0, f1 = a[0];
+  for (int k = 1; k < n; k++) {
+    const double f2 = a[k] * f1 - b * b * f0, m = fmax(fabs(f2), fabs(f1));
+    f0 = f1 / m;
+    f1 = f2 / m;
+  }
+  return (f1 > 0.0) - (f1 < 0.0);
+}
+
+/* mpm_lin_det_sign on tridiagonal matrices whose off-diagonal outweighs the diagonal (the
+ * LU exchanges rows), against the recurrence: banded (n 12) and UMFPACK (n 400 with a
+ * zero in the far corners, bandwidth 399 > the band's limit). */
+static void det_case(int n, int corner, unsigned seed)
+{
+  int ti[2000], tj[2000], map[2000];
+  double a[400];
+  size_t nz = 0;
+  for (int i = 0; i < n; i++)
+    for (int j = i - 1; j <= i + 1; j++)
+      if (j >= 0 && j < n) {
+        ti[nz] = i;
+        tj[nz++] = j;
+      }
+  if (corner) {
+    ti[nz] = 0, tj[nz++] = n - 1;
+    ti[nz] = n - 1, tj[nz++] = 0;
+  }
+  for (int trial = 0; trial < 20; trial++) {
+    mpm_lin *l = mpm_lin_alloc(n, nz, ti, tj, map);
+    assert_non_null(l);
+    double *x = mpm_lin_values(l);
+    for (int i = 0; i < n; i++) {
+      seed = seed * 1103515245u + 12345u;
+      a[i] = ((double)(seed >> 8 & 0xffff) / 65536.0 - 0.5) * 3.0; /* in (-1.5, 1.5), b = 1 */
+    }
+    for (size_t k = 0; k < nz; k++)
+      x[map[k]] = ti[k] == tj[k] ? a[ti[k]] : abs(ti[k] - tj[k]) == 1 ? 1.0 : 0.0;
+    assert_int_equal(mpm_lin_factor(l), MPM_OK);
+    assert_int_equal(mpm_lin_det_sign(l), tridiag_det_sign(a, n, 1.0));
+    mpm_lin_free(l);
+  }
+}
+
+/* static-6: stability.  The determinant's sign on matrices of known sign; then along
+ * the interface at 90 deg, where the closed form is a 1-D chain, the bar's stiffness
+ * k = E H / L in series with the line's softening slope -k_s: under the grip held the
+ * state's stiffness is k - k_s, negative on a snapback branch (g < 1: delta falls with the
+ * load) and positive on a branch with g > 1.  So det_sign is +1 on the elastic rows,
+ * -1 on every row of the snapback between 5 % and 95 % of Pmax (g 0.5) and +1 on every
+ * row at g 2; the first critical point is at the peak. */
+static void stab_case(double g)
+{
+  mpm_scene sc = iface_scene(90.0);
+  sc.U0 = g * sc.L * sc.snf * sc.snf / sc.E;
+  sc.end_delta = 0.2 + sc.U0 / sc.snf;
+  static trace t;
+  mpm_energy e;
+  run_static(&sc, &t, &e, 500);
+  const double Pmax = sc.snf * sc.H;
+  int ipk = 0, first = 0, on = 0, wrong = 0;
+  for (int i = 1; i < t.n; i++) {
+    ipk = t.P[i] > t.P[ipk] ? i : ipk;
+    first = first ? first : t.crit[i] ? i : 0;
+  }
+  for (int i = 1; i < t.n; i++) {
+    /* (the rows at the peak, the tie at initiation, not judged) */
+    const int band = t.P[i] > 0.05 * Pmax && t.P[i] < 0.95 * Pmax;
+    const int want = i < ipk && t.P[i] < 0.95 * Pmax ? 1 : i > ipk && band ? (g < 1.0 ? -1 : 1) : 0;
+    on += want != 0;
+    wrong += want != 0 && t.det[i] != want;
+  }
+  print_message("# stability at g %g: %d rows judged, %d with the wrong sign; peak at row %d, first critical point "
+                "at row %d (kind %d)\n", g, on, wrong, ipk, first, first ? t.crit[first] : 0);
+  assert_true(on >= 10);
+  assert_int_equal(wrong, 0);
+  if (g < 1.0) /* the sign changes at the peak's row or within the 3 grip increments that
+                  start the softening from the tie (det_sign 0 on them) */
+    assert_true(first >= ipk && first <= ipk + 4);
+  else
+    assert_int_equal(first, 0);
+}
+
+static void test_mpm_static_stability(void **state)
+{
+  (void)state;
+  det_case(12, 0, 7u);
+  det_case(400, 1, 11u);
+  stab_case(0.5);
+  stab_case(2.0);
 }
 
 /* static-2: the elastic bar: the first increments lie on P = E H delta / L (a linear
@@ -348,6 +447,7 @@ int main(void)
     cmocka_unit_test(test_mpm_static_interface_exact),
     cmocka_unit_test(test_mpm_static_interface_inclined),
     cmocka_unit_test(test_mpm_static_refuses_one_point),
+    cmocka_unit_test(test_mpm_static_stability),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

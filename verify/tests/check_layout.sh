@@ -6,6 +6,8 @@
 #   include-circle   no header of kernel/, analytic/ or verify/ includes itself through others;
 #   function-length  no function of kernel/, analytic/ or verify/ is over 100 lines (from
 #                    the line naming it to its closing brace at column 0);
+#   static-control   the static solver's path control in kernel/mpm_static_path.c, its
+#                    mpm_static_step not recursive, none of it in kernel/mpm_static.c;
 #   verify-files     no file of verify/ is over 600 lines;
 #   file-headers     no C file of kernel/, analytic/ or verify/ (or their tests/) opens with
 #                    a comment of over 15 lines (check_headers.py).
@@ -65,6 +67,17 @@ circ=$(sed -n 's/^CIRCLES //p' <<<"$out")
 result include-circle "$([ -z "$circ" ] && grep -q '^CIRCLES' <<<"$out" || echo "${circ:-$out}")"
 long=$(sed -n 's/^LONG //p' <<<"$out")
 result function-length "$([ -z "$long" ] && grep -q '^LONG' <<<"$out" || echo "over 100 lines: ${long:-$out}")"
+
+# the static solver's path control is its own module: kernel/mpm_static_path.c holds
+# mpm_static_step, which does not call itself, and kernel/mpm_static.c (Newton) none of the
+# control's functions
+ctl=""
+grep -q '^mpm_status mpm_static_step(' kernel/mpm_static_path.c 2>/dev/null || ctl="mpm_static_step is not in kernel/mpm_static_path.c"
+rec=$(awk '/^mpm_status mpm_static_step\(/ { f = 1; next } f && /^}/ { f = 0 } f && /mpm_static_step\(/ { print FILENAME ":" FNR }' kernel/*.c)
+[ -z "$rec" ] || ctl="$ctl; mpm_static_step calls itself at $rec"
+in_newton=$(grep -nE '^static [a-z_ ]+\b(set_mode|resume|let_go|pin|shrink|next_step|path_sound|turns|stalls)\(' kernel/mpm_static.c | paste -sd' ')
+[ -z "$in_newton" ] || ctl="$ctl; path control in kernel/mpm_static.c: $in_newton"
+result static-control "${ctl#; }"
 
 big=$(wc -l verify/*.[ch] | awk '$2 != "total" && $1 > 600 {printf "%s %s ", $2, $1}')
 result verify-files "$([ -z "$big" ] || echo "over 600 lines: $big")"
