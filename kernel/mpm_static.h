@@ -8,7 +8,7 @@
 
 #include "mpm_kernel.h"
 
-/* ---- the sparse system over the free degrees of freedom (UMFPACK) ---- */
+/* ---- the sparse system over the free degrees of freedom (GSL's band or KLU) ---- */
 typedef struct mpm_lin mpm_lin;
 /* The pattern from triplets (ti, tj) of n x n; map[k] receives the position of triplet k
  * in the compressed values (duplicates share one).  NULL when out of memory. */
@@ -21,6 +21,8 @@ size_t mpm_lin_nnz(const mpm_lin *l);
 mpm_status mpm_lin_factor(mpm_lin *l);
 /* x = A^-1 b with the last factors; x and b may not alias. */
 mpm_status mpm_lin_solve(mpm_lin *l, const double *b, double *x);
+/* The sign of the determinant of the last factors (+1 or -1), 0 when none are held. */
+int mpm_lin_det_sign(const mpm_lin *l);
 
 /* ---- a bar particle's stencil at its reference place (total Lagrangian) ---- */
 #define MPM_ST_MAX 9 /* uGIMP: 3 x 3 nodes */
