@@ -214,14 +214,17 @@ mpm_status mpm_static_number(mpm_static *q, char *err, size_t errlen)
  * C_p), of d R / d delta (kfd) and, where it softens (wD > 0), of the control's gradient
  * (ga, gb); k is its first place in the map. */
 static void particle_tangent(mpm_static *q, size_t c, const mpm_material *m, const mpm_dstate *in, const double de[3],
-                             double wD, size_t k, double *Ax)
+                             int elastic, double wD, size_t k, double *Ax)
 {
   const size_t M = MPM_ST_MAX;
   const int cn = q->cnt[c];
   const int *nd = q->node + c * M;
   const double *Gx = q->Gx + c * M, *Gy = q->Gy + c * M, V = q->s->p->V[q->pid[c]];
-  double Cp[3][3], dl[3]; /* the update's algorithmic tangent and d lambda / d de */
-  mpm_dcoh_tangent(m, in, de, Cp, dl, q->dw);
+  /* the update's algorithmic tangent and d lambda / d de; on the elastic path exactly C
+   * and 0 (mpm_dcoh_tangent's own answer there, without its second update) */
+  double Cp[3][3] = {{m->E1, m->E2, 0.0}, {m->E2, m->E1, 0.0}, {0.0, 0.0, 2.0 * m->G}}, dl[3] = {0.0, 0.0, 0.0};
+  if (!elastic)
+    mpm_dcoh_tangent(m, in, de, Cp, dl, q->dw);
   for (int b = 0; b < 2 * cn; b++) {
     /* d de / d u_b: (Gx, 0, Gy / 2) for an x component, (0, Gy, Gx / 2) for y */
     const int bn = nd[b / 2], bc = b % 2;
@@ -348,7 +351,7 @@ mpm_status mpm_static_eval(mpm_static *q, int tangent)
         q->R[ey] += fy;
     }
     if (tangent)
-      particle_tangent(q, c, m, &in, de, wD > 0.0 && info.path != MPM_DPATH_ELASTIC ? wD : 0.0, k, Ax);
+      particle_tangent(q, c, m, &in, de, st == MPM_OK && info.path == MPM_DPATH_ELASTIC, wD > 0.0 && info.path != MPM_DPATH_ELASTIC ? wD : 0.0, k, Ax);
     k += 4 * (size_t)cn * (size_t)cn;
   }
   for (size_t i = 0; q->fext && i < 2 * ns; i++) /* R = f_int - f_ext */
