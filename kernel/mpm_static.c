@@ -71,7 +71,7 @@ void mpm_static_free(mpm_static *q)
     return;
   if (q->s && q->s->qs == q)
     q->s->qs = NULL;
-  void *f[] = {q->pid, q->cnt, q->node, q->N, q->Gx, q->Gy, q->eq, q->held, q->coef, q->map, q->Un, q->Ut, q->R, q->kfd,
+  void *f[] = {q->pid, q->cnt, q->node, q->N, q->Gx, q->Gy, q->eq, q->held, q->coef, q->map, q->Un, q->Ut, q->Kel, q->kfdel, q->R, q->kfd,
                q->ga, q->x1, q->x2, q->du, q->pdir, q->tst, q->tw, q->tpath, q->fext};
   for (size_t i = 0; i < sizeof f / sizeof f[0]; i++)
     free(f[i]);

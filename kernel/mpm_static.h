@@ -56,6 +56,8 @@ struct mpm_static {
   int pinned;             /* 1 once the cut part's vertical rigid motion is held          */
   int *map;               /* per particle, (2 MPM_ST_MAX)^2 positions in the values, -1 off */
   mpm_lin *lin;
+  double *Kel, *kfdel;    /* the tangent's elastic part and its d R / d delta (every particle's C) */
+  int kel_ok;             /* 1: Kel and kfdel are of the current numbering              */
   /* displacements: committed (Un) and trial (Ut), 2 nslot each; the grip's delta */
   double *Un, *Ut;
   double dn, dt;
