@@ -7,7 +7,8 @@
  * Two factorizations, chosen once per pattern by their cost (docs/static.md):
  *  - GSL's banded LU, 2 n p^2 flops for bandwidth p (the unknowns are numbered node by
  *    node along the grid's columns, so p is about twice a column of nodes): the band of
- *    a bar without a split line (Fig. 6: p 36 at h 2, 4 ppc);
+ *    a bar without a split line (Fig. 6: p 36 at h 2, 4 ppc), and any band of under
+ *    MPM_LIN_BAND_SMALL flops (KLU's other rounding sends a45 at h 8, 1 ppc, off its path);
  *  - KLU (SuiteSparse) beyond, on AMD's fill-reducing ordering of A + A' computed once per
  *    pattern (KLU's estimate of its flops decides), its first factorization with partial
  *    pivoting and the next ones on the same pivot order (klu_refactor: no search, no
@@ -30,6 +31,8 @@
 #define MPM_LIN_BAND_MAX 160 /* bands up to this many unknowns either side of the diagonal */
 #define MPM_LIN_BAND_RATE 1.5 /* measured: a band flop costs 1 / 1.5 of a KLU flop here (Fig. 6,
                                  h 1, 9 ppc: band 1.2e8 and KLU 9.1e7 flops, the same time) */
+#define MPM_LIN_BAND_SMALL 1e7 /* flops: a band this cheap (a few ms) is kept whatever KLU's cost,
+                                   the factorization of the bar scenes at h 8 and 4 unchanged   */
 #define MPM_LIN_RGROWTH 1e-6 /* a refactorization whose reciprocal pivot growth is below this
                                 is redone with pivoting                                       */
 
@@ -89,7 +92,7 @@ mpm_lin *mpm_lin_alloc(int n, size_t nz, const int *ti, const int *tj, int *map)
   l->ks = n > 0 ? klu_analyze(n, l->Ap, l->Ai, &l->kc) : NULL;
   const double band = 2.0 * n * (double)l->p * (double)l->p;
   if (n > 0 && l->p <= MPM_LIN_BAND_MAX && l->p < (size_t)n &&
-      (!l->ks || band <= MPM_LIN_BAND_RATE * l->ks->est_flops)) {
+      (!l->ks || band <= MPM_LIN_BAND_SMALL || band <= MPM_LIN_BAND_RATE * l->ks->est_flops)) {
     if (l->ks)
       klu_free_symbolic(&l->ks, &l->kc);
     l->AB = gsl_matrix_alloc((size_t)n, 3 * l->p + 1);
