@@ -110,6 +110,18 @@ mpm_status mpm_static_setup(mpm_static *q, char *err, size_t errlen)
 
 /* Numbers the unknowns (active components that are not held) and builds the tangent's
  * pattern; again after a hold is added (the cut). */
+/* Room for the tangent's elastic part of a new numbering (elastic_part fills it); 0 when
+ * out of memory. */
+static int elastic_alloc(mpm_static *q)
+{
+  free(q->Kel);
+  free(q->kfdel);
+  q->Kel = malloc(sizeof(double) * (mpm_lin_nnz(q->lin) ? mpm_lin_nnz(q->lin) : 1));
+  q->kfdel = malloc(sizeof(double) * (size_t)(q->nfree ? q->nfree : 1));
+  q->kel_ok = 0;
+  return q->Kel && q->kfdel;
+}
+
 mpm_status mpm_static_number(mpm_static *q, char *err, size_t errlen)
 {
   const mpm_sim *s = q->s;
@@ -200,16 +212,7 @@ mpm_status mpm_static_number(mpm_static *q, char *err, size_t errlen)
   free(ti);
   free(tj);
   free(tmap);
-  if (!q->lin) {
-    snprintf(err, errlen, "out of memory for the tangent of %d unknowns", n);
-    return MPM_ENOMEM;
-  }
-  free(q->Kel);
-  free(q->kfdel);
-  q->Kel = malloc(sizeof(double) * (mpm_lin_nnz(q->lin) ? mpm_lin_nnz(q->lin) : 1));
-  q->kfdel = malloc(sizeof(double) * (size_t)(n ? n : 1));
-  q->kel_ok = 0;
-  if (!q->Kel || !q->kfdel) {
+  if (!q->lin || !elastic_alloc(q)) {
     snprintf(err, errlen, "out of memory for the tangent of %d unknowns", n);
     return MPM_ENOMEM;
   }
