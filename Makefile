@@ -74,7 +74,7 @@ build-fuzz/fuzz_scene: $(FUZZ_SRC) verify/scene.h kernel/mpm.h $(FUZZ_GEN)
 	@mkdir -p build-fuzz/corpus
 	$(FUZZ_CC) -g -O1 -std=c11 -D_POSIX_C_SOURCE=200809L -Wall -Wextra -Wno-unknown-pragmas -Wno-psabi \
 	  -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined -Ikernel -Ianalytic -Iverify \
-	  -I$(BUILD)/verify $(FUZZ_SRC) -linih -lgsl -lumfpack -lm -o $@
+	  -I$(BUILD)/verify $(FUZZ_SRC) -linih -lgsl -lklu -lumfpack -lm -o $@
 
 # clang and its libFuzzer runtime, installed only when missing (as deps does).
 fuzz-deps:
@@ -92,7 +92,7 @@ build-fuzz/fuzz_check: $(FUZZ_CHECK_SRC) verify/foreign.h verify/check_folder.h 
 	@mkdir -p build-fuzz/corpus-check
 	$(FUZZ_CC) -g -O1 -std=c11 -D_POSIX_C_SOURCE=200809L -Wall -Wextra -Wno-unknown-pragmas -Wno-psabi \
 	  -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined -Ikernel -Ianalytic -Iverify \
-	  -I$(BUILD)/verify $(FUZZ_CHECK_SRC) $(FUZZ_CHECK_LIBS) -fopenmp -lcjson -linih -lgsl -lgslcblas -lumfpack -lm -o $@
+	  -I$(BUILD)/verify $(FUZZ_CHECK_SRC) $(FUZZ_CHECK_LIBS) -fopenmp -lcjson -linih -lgsl -lgslcblas -lklu -lumfpack -lm -o $@
 
 fuzz-check: deps fuzz-deps build-fuzz/fuzz_check
 	build-fuzz/fuzz_check -max_total_time=$(FUZZ_TIME) -max_len=8192 -artifact_prefix=build-fuzz/ \

@@ -22,6 +22,7 @@
 #define MPM_QS_FTOL 1e-9
 #define MPM_QS_DTOL 1e-10
 #define MPM_QS_MAXIT 25   /* Newton iterations an increment may take                */
+#define MPM_QS_CYCLE 1e-3 /* relative: merits this close two iterations apart are a cycle */
 #define MPM_QS_LS 8       /* halvings of a Newton step that raises the residual      */
 
 void mpm_static_free(mpm_static *q)
@@ -30,7 +31,7 @@ void mpm_static_free(mpm_static *q)
     return;
   if (q->s && q->s->qs == q)
     q->s->qs = NULL;
-  void *f[] = {q->pid, q->cnt, q->node, q->N, q->Gx, q->Gy, q->eq, q->held, q->coef, q->map, q->Un, q->Ut, q->R, q->kfd,
+  void *f[] = {q->pid, q->cnt, q->node, q->N, q->Gx, q->Gy, q->eq, q->held, q->coef, q->map, q->Un, q->Ut, q->Kel, q->kfdel, q->R, q->kfd,
                q->ga, q->x1, q->x2, q->du, q->pdir, q->tst, q->tw, q->tpath, q->fext};
   for (size_t i = 0; i < sizeof f / sizeof f[0]; i++)
     free(f[i]);
@@ -170,6 +171,16 @@ static double merit(const mpm_static *q, double Fref, double g, int grip)
   return grip ? r : fmax(r, fabs(g) / (MPM_QS_DTOL * q->Dref));
 }
 
+/* 1 if Newton's merits m[0 .. it] end in a cycle: each of the last two within
+ * MPM_QS_CYCLE of the one two before it, above the tolerance (near the peak a segment
+ * flips between elastic and softening across a step, and the iterates alternate between
+ * two states to the last digits until MPM_QS_MAXIT). */
+static int cycles(const double *m, int it)
+{
+  return it >= 3 && fabs(m[it] - m[it - 2]) <= MPM_QS_CYCLE * m[it] &&
+         fabs(m[it - 1] - m[it - 3]) <= MPM_QS_CYCLE * m[it - 1];
+}
+
 /* One increment from the committed state under the current control; 1 if it converged
  * (the trial state is then the increment's), 0 if not, or a negative status. */
 static int increment(mpm_static *q, int *iters)
@@ -206,6 +217,7 @@ static int increment(mpm_static *q, int *iters)
   add_free(q, q->pdir, dd);
   q->dt += dd;
   const double Dtarget = q->Cn + q->step_D;
+  double mh[MPM_QS_MAXIT]; /* each iteration's merit */
   if (mpm_static_eval(q, 1) != MPM_OK)
     return 0;
   for (int it = 0;; it++) {
@@ -213,13 +225,14 @@ static int increment(mpm_static *q, int *iters)
     q->st.newton++;
     const double Fref = fmax(fmax(q->s->P_peak, fabs(q->Pg)), q->Fref);
     const double g = q->Ct - Dtarget, m0 = merit(q, Fref, g, grip);
+    mh[it] = m0;
     if (it < 32) {
       q->st.res[it] = norm_inf(q->R, n) / Fref;
       q->st.nres = it + 1;
     }
     if (m0 <= 1.0)
       return 1;
-    if (it + 1 >= MPM_QS_MAXIT || factor(q) != MPM_OK)
+    if (it + 1 >= MPM_QS_MAXIT || cycles(mh, it) || factor(q) != MPM_OK)
       return 0;
     for (int i = 0; i < n; i++)
       q->x1[i] = -q->R[i];

@@ -10,7 +10,7 @@
 
 #include "mpm_kernel.h"
 
-/* ---- the sparse system over the free degrees of freedom (UMFPACK) ---- */
+/* ---- the sparse system over the free degrees of freedom (GSL's band or KLU) ---- */
 typedef struct mpm_lin mpm_lin;
 /* The pattern from triplets (ti, tj) of n x n; map[k] receives the position of triplet k
  * in the compressed values (duplicates share one).  NULL when out of memory. */
@@ -58,6 +58,8 @@ struct mpm_static {
   int pinned;             /* 1 once the cut part's vertical rigid motion is held          */
   int *map;               /* per particle, (2 MPM_ST_MAX)^2 positions in the values, -1 off */
   mpm_lin *lin;
+  double *Kel, *kfdel;    /* the tangent's elastic part and its d R / d delta (every particle's C) */
+  int kel_ok;             /* 1: Kel and kfdel are of the current numbering              */
   /* displacements: committed (Un) and trial (Ut), 2 nslot each; the grip's delta */
   double *Un, *Ut;
   double dn, dt;

@@ -110,6 +110,18 @@ mpm_status mpm_static_setup(mpm_static *q, char *err, size_t errlen)
 
 /* Numbers the unknowns (active components that are not held) and builds the tangent's
  * pattern; again after a hold is added (the cut). */
+/* Room for the tangent's elastic part of a new numbering (elastic_part fills it); 0 when
+ * out of memory. */
+static int elastic_alloc(mpm_static *q)
+{
+  free(q->Kel);
+  free(q->kfdel);
+  q->Kel = malloc(sizeof(double) * (mpm_lin_nnz(q->lin) ? mpm_lin_nnz(q->lin) : 1));
+  q->kfdel = malloc(sizeof(double) * (size_t)(q->nfree ? q->nfree : 1));
+  q->kel_ok = 0;
+  return q->Kel && q->kfdel;
+}
+
 mpm_status mpm_static_number(mpm_static *q, char *err, size_t errlen)
 {
   const mpm_sim *s = q->s;
@@ -200,7 +212,7 @@ mpm_status mpm_static_number(mpm_static *q, char *err, size_t errlen)
   free(ti);
   free(tj);
   free(tmap);
-  if (!q->lin) {
+  if (!q->lin || !elastic_alloc(q)) {
     snprintf(err, errlen, "out of memory for the tangent of %d unknowns", n);
     return MPM_ENOMEM;
   }
@@ -214,14 +226,23 @@ mpm_status mpm_static_number(mpm_static *q, char *err, size_t errlen)
  * C_p), of d R / d delta (kfd) and, where it softens (wD > 0), of the control's gradient
  * (ga, gb); k is its first place in the map. */
 static void particle_tangent(mpm_static *q, size_t c, const mpm_material *m, const mpm_dstate *in, const double de[3],
-                             double wD, size_t k, double *Ax)
+                             int elastic, double wD, size_t k, double *Ax)
 {
   const size_t M = MPM_ST_MAX;
   const int cn = q->cnt[c];
   const int *nd = q->node + c * M;
   const double *Gx = q->Gx + c * M, *Gy = q->Gy + c * M, V = q->s->p->V[q->pid[c]];
-  double Cp[3][3], dl[3]; /* the update's algorithmic tangent and d lambda / d de */
-  mpm_dcoh_tangent(m, in, de, Cp, dl, q->dw);
+  /* elastic: C, the elastic part every particle adds (Kel); else the update's algorithmic
+   * tangent less C, and d lambda / d de */
+  const double C[3][3] = {{m->E1, m->E2, 0.0}, {m->E2, m->E1, 0.0}, {0.0, 0.0, 2.0 * m->G}};
+  double Cp[3][3], dl[3] = {0.0, 0.0, 0.0};
+  memcpy(Cp, C, sizeof Cp);
+  if (!elastic) {
+    mpm_dcoh_tangent(m, in, de, Cp, dl, q->dw);
+    for (int i = 0; i < 3; i++)
+      for (int j = 0; j < 3; j++)
+        Cp[i][j] -= C[i][j];
+  }
   for (int b = 0; b < 2 * cn; b++) {
     /* d de / d u_b: (Gx, 0, Gy / 2) for an x component, (0, Gy, Gx / 2) for y */
     const int bn = nd[b / 2], bc = b % 2;
@@ -288,6 +309,24 @@ static double driven_load(const mpm_static *q)
   return P;
 }
 
+/* The tangent's elastic part, sum_p V_p B_p^T C B_p over every particle, and its d R /
+ * d delta: the same for the whole run (total Lagrangian: B_p and V_p fixed), so that
+ * each evaluation adds only the particles off the elastic path, (C_p - C). */
+static void elastic_part(mpm_static *q)
+{
+  const mpm_sim *s = q->s;
+  memset(q->Kel, 0, sizeof(double) * mpm_lin_nnz(q->lin));
+  memset(q->kfd, 0, sizeof(double) * (size_t)q->nfree);
+  size_t k = 0;
+  for (size_t c = 0; c < q->np; c++) {
+    const mpm_material *m = &s->mat[s->p->mat[q->pid[c]]];
+    particle_tangent(q, c, m, NULL, NULL, 1, 0.0, k, q->Kel);
+    k += 4 * (size_t)q->cnt[c] * (size_t)q->cnt[c];
+  }
+  memcpy(q->kfdel, q->kfd, sizeof(double) * (size_t)q->nfree);
+  q->kel_ok = 1;
+}
+
 mpm_status mpm_static_eval(mpm_static *q, int tangent)
 {
   const double t0 = mpm_wall();
@@ -302,8 +341,10 @@ mpm_status mpm_static_eval(mpm_static *q, int tangent)
       Ut[i] = q->held[i];
   memset(q->R, 0, sizeof(double) * (size_t)q->nfree);
   if (tangent) {
-    memset(Ax, 0, sizeof(double) * mpm_lin_nnz(q->lin));
-    memset(q->kfd, 0, sizeof(double) * (size_t)q->nfree);
+    if (!q->kel_ok)
+      elastic_part(q);
+    memcpy(Ax, q->Kel, sizeof(double) * mpm_lin_nnz(q->lin));
+    memcpy(q->kfd, q->kfdel, sizeof(double) * (size_t)q->nfree);
     memset(q->ga, 0, sizeof(double) * (size_t)q->nfree);
     q->gb = 0.0;
   }
@@ -347,8 +388,8 @@ mpm_status mpm_static_eval(mpm_static *q, int tangent)
       if (ey >= 0)
         q->R[ey] += fy;
     }
-    if (tangent)
-      particle_tangent(q, c, m, &in, de, wD > 0.0 && info.path != MPM_DPATH_ELASTIC ? wD : 0.0, k, Ax);
+    if (tangent && !(st == MPM_OK && info.path == MPM_DPATH_ELASTIC))
+      particle_tangent(q, c, m, &in, de, 0, wD > 0.0 && info.path != MPM_DPATH_ELASTIC ? wD : 0.0, k, Ax);
     k += 4 * (size_t)cn * (size_t)cn;
   }
   for (size_t i = 0; q->fext && i < 2 * ns; i++) /* R = f_int - f_ext */

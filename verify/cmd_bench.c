@@ -118,9 +118,11 @@ static void usage(FILE *f)
     "end (the file's) or about each node's drift, and undamped (the case id ends in\n"
     "the method).\n"
     "Then the quasi-static solver (--solver static) on whole runs at 4 ppc, one thread:\n"
-    "Fig. 6 (the band) and iface90 (the interface) at h 8, 4 and 2 (h 2 only with\n"
-    "--steps-scale 1 or more), with its increments, Newton iterations, LU factorizations\n"
-    "and the time per increment in assembly, factorization and solves.\n"
+    "Fig. 6 (the band) and iface90 (the interface) at h 8, 4, 2 and 1, a30 (the inclined\n"
+    "interface) at h 2 (h 2 and 1 only with --steps-scale 1 or more), with its increments,\n"
+    "Newton iterations, LU factorizations and the time per increment in assembly,\n"
+    "factorization and solves, and per scene the exponent of CPU s against unknowns\n"
+    "(a least-squares line through its rows, log-log).\n"
     "Each case runs --repeat times from the same start and the fastest run is reported\n"
     "(the others differ only by what else the machine did meanwhile).\n"
     "  --threads N      only N threads (default: 1 and 2)\n"
@@ -204,14 +206,17 @@ static int bench_args(int argc, char **argv, int *threads, int *json, int *repea
 }
 
 /* The quasi-static solver (docs/static.md) on whole runs, to the cut and a margin: the
- * band (fig6.ini) and the interface (iface90.ini) at 4 ppc; h 2 with --steps-scale 1 or more. */
+ * band (fig6.ini), the interface (iface90.ini) and the inclined interface (a30.ini) at 4
+ * ppc; h 2 and 1 with --steps-scale 1 or more. */
 static const struct {
   const char *scene;
   double h;
-} static_cases[] = {{"fig6", 8}, {"fig6", 4}, {"fig6", 2}, {"iface90", 8}, {"iface90", 4}, {"iface90", 2}};
+} static_cases[] = {{"fig6", 8},    {"fig6", 4},    {"fig6", 2},    {"fig6", 1}, {"iface90", 8},
+                    {"iface90", 4}, {"iface90", 2}, {"iface90", 1}, {"a30", 2}};
 
-/* One static case, the fastest of `repeat` runs; 0, 1 when it fails, 2 on bad input. */
-static int bench_static_case(int c, int repeat, int json)
+/* One static case, the fastest of `repeat` runs (its CPU seconds and unknowns in *cpu_out,
+ * *nu); 0, 1 when it fails, 2 on bad input. */
+static int bench_static_case(int c, int repeat, int json, double *cpu_out, int *nu)
 {
   const bench_case bc = {static_cases[c].scene, static_cases[c].h, 4, 0, "static", "solver.type=static", 0, 0};
   ver_scene vs;
@@ -255,6 +260,8 @@ static int bench_static_case(int c, int repeat, int json)
     mpm_static_free(q);
     mpm_sim_free(s);
   }
+  *cpu_out = cpu;
+  *nu = best.unknowns;
   char id[96];
   snprintf(id, sizeof id, "%s-h%g-ppc4-static", vs.name, bc.h);
   const double ni = best.increments > 0 ? (double)best.increments : 1.0;
@@ -386,12 +393,29 @@ int ver_cmd_bench(int argc, char **argv)
   if (!json)
     printf("\n%-28s %8s %8s %5s %6s %5s %7s %7s  %8s %8s %8s\n", "static case (1 thread)", "particles", "unknowns",
            "incr", "newton", "LU", "wall_s", "cpu_s", "asm ms/i", "LU ms/i", "sol ms/i");
-  for (int c = 0; c < (int)(sizeof static_cases / sizeof static_cases[0]); c++) {
+  /* per scene, a least-squares line through (log unknowns, log CPU s) of its h rows */
+  double sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
+  int m = 0;
+  const int nc = (int)(sizeof static_cases / sizeof static_cases[0]);
+  for (int c = 0; c < nc; c++) {
     if (static_cases[c].h < 4 && scale < 1.0)
-      continue; /* h 2 is whole runs of seconds: not for a shortened bench */
-    const int rc = bench_static_case(c, repeat, json);
+      continue; /* h 2 and 1 are whole runs of seconds: not for a shortened bench */
+    double cpu = 0.0;
+    int nu = 0;
+    const int rc = bench_static_case(c, repeat, json, &cpu, &nu);
     if (rc)
       return rc;
+    if (cpu > 0.0 && nu > 0) {
+      const double x = log((double)nu), y = log(cpu);
+      sx += x, sy += y, sxx += x * x, sxy += x * y, m++;
+    }
+    if (c + 1 == nc || strcmp(static_cases[c + 1].scene, static_cases[c].scene) != 0) {
+      if (m >= 2 && !json && m * sxx - sx * sx > 0.0)
+        printf("%-28s CPU s ~ unknowns^%.2f over its %d rows\n", static_cases[c].scene,
+               (m * sxy - sx * sy) / (m * sxx - sx * sx), m);
+      sx = sy = sxx = sxy = 0.0;
+      m = 0;
+    }
   }
   return 0;
 }
