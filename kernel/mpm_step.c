@@ -99,6 +99,34 @@ struct g2p_acc {
   size_t bad_k;
 };
 
+/* The softening step of the particles in d's list in one batch (mpm_dcoh_soften_batch)
+ * when they share one material with q = 1; 1 if it ran (d's bok says which took it). */
+static int flush_batch(const mpm_sim *s, const mpm_particles *p, mpm_defer *d)
+{
+  const uint8_t mi = p->mat[d->k[0]];
+  const mpm_material *m = &s->mat[mi];
+  if (m->model == MPM_DCOH_NONE || m->q != 1.0)
+    return 0;
+  for (size_t i = 0; i < d->n; i++) {
+    const size_t k = d->k[i];
+    if (p->mat[k] != mi)
+      return 0;
+    d->bst[0][i] = p->sxx[k];
+    d->bst[1][i] = p->syy[k];
+    d->bst[2][i] = p->sxy[k];
+    d->bst[3][i] = p->lam[k];
+    d->bst[4][i] = p->upn[k];
+    d->bst[5][i] = p->upt[k];
+    d->bsep[i] = p->sep[k];
+    for (int c = 0; c < 3; c++)
+      d->bde[c][i] = d->de[i][c];
+  }
+  double *const st[6] = {d->bst[0], d->bst[1], d->bst[2], d->bst[3], d->bst[4], d->bst[5]};
+  const double *const de[3] = {d->bde[0], d->bde[1], d->bde[2]};
+  mpm_dcoh_soften_batch(m, d->n, st, d->bsep, de, d->bw, d->bok);
+  return 1;
+}
+
 /* The full decohesion update (sec. 4) of the particles in the thread's list, in list
  * order, off the hot loop; one timing per batch.  Returns the ledger's
  * sum m sigma_new : deps over them (ledger_step). */
@@ -110,6 +138,7 @@ static inline __attribute__((always_inline)) double flush_impl(const mpm_sim *s,
     return 0.0;
   const double t0 = mpm_wall();
   double qs = 0.0;
+  const int bat = !rows && flush_batch(s, p, d);
   for (size_t i = 0; i < d->n; i++) {
     const size_t k = d->k[i];
     const mpm_material *m = &s->mat[p->mat[k]];
@@ -126,7 +155,10 @@ static inline __attribute__((always_inline)) double flush_impl(const mpm_sim *s,
     const mpm_dstate in = {p->sxx[k], p->syy[k], p->sxy[k], p->lam[k], p->upn[k], p->upt[k], p->sep[k]};
     mpm_dstate o;
     mpm_dinfo info;
-    if (mpm_dcoh_update(m, &in, d->de[i], &o, &info, dw) != MPM_OK && (!acc->bad || k < acc->bad_k)) {
+    if (bat && d->bok[i]) { /* softened in the batch */
+      o = (mpm_dstate){d->bst[0][i], d->bst[1][i], d->bst[2][i], d->bst[3][i], d->bst[4][i], d->bst[5][i], 0};
+      info = (mpm_dinfo){MPM_DPATH_SOFTEN, 1, 0, d->bw[i]};
+    } else if (mpm_dcoh_update(m, &in, d->de[i], &o, &info, dw) != MPM_OK && (!acc->bad || k < acc->bad_k)) {
       acc->bad = 1;
       acc->bad_k = k;
     }
