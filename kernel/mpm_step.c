@@ -99,6 +99,12 @@ struct g2p_acc {
   size_t bad_k;
 };
 
+/* fmin(x, 1) without the library call (NaN gives 1 as fmin does) */
+static inline double min1(double x)
+{
+  return x < 1.0 ? x : 1.0;
+}
+
 /* The softening step of the particles in d's list in one batch (mpm_dcoh_soften_batch)
  * when they share one material with q = 1; 1 if it ran (d's bok says which took it). */
 static int flush_batch(const mpm_sim *s, const mpm_particles *p, mpm_defer *d)
@@ -139,6 +145,8 @@ static inline __attribute__((always_inline)) double flush_impl(const mpm_sim *s,
   const double t0 = mpm_wall();
   double qs = 0.0;
   const int bat = !rows && flush_batch(s, p, d);
+  double led_d = s->led_part[q][MPM_LED_D]; /* summed in a register, in the same order */
+  long soften = 0, separate = 0, bracketed = 0;
   for (size_t i = 0; i < d->n; i++) {
     const size_t k = d->k[i];
     const mpm_material *m = &s->mat[p->mat[k]];
@@ -171,33 +179,38 @@ static inline __attribute__((always_inline)) double flush_impl(const mpm_sim *s,
     p->upn[k] = o.upn;
     p->upt[k] = o.upt;
     p->sep[k] = (uint8_t)o.sep;
-    p->str2[k] = mpm_dcoh_str2(m, o.lam, o.sep);
+    /* the batch's particles: q = 1, not separated; (1 - lambda)^2 as mpm_dcoh_str2 has it */
+    p->str2[k] = bat && d->bok[i] ? (1.0 - o.lam) * (1.0 - o.lam) : mpm_dcoh_str2(m, o.lam, o.sep);
     /* the decohesion strain is d ud / Le while softening, d ud / Lopen once separating */
     p->wcoh[k] += info.w * p->V[k] / (info.path == MPM_DPATH_SOFTEN ? m->Le : m->Lopen);
-    const double dl = fmin(o.lam, 1.0) - fmin(in.lam, 1.0);
+    const double dl = min1(o.lam) - min1(in.lam);
     double dd = 0.0;
     if (!rows) {
       dd = m->U0 * dl * p->V[k] / m->Le;
     } else if (m == &mrow) {
       /* Le = row: a particle's dissipation ends where it separates, the rest of its
        * 1 - lambda charged at the row's Le then */
-      dd = m->U0 * (info.path == MPM_DPATH_SEPARATE ? 1.0 - fmin(in.lam, 1.0) : dl) * p->V[k] / m->Le;
+      dd = m->U0 * (info.path == MPM_DPATH_SEPARATE ? 1.0 - min1(in.lam) : dl) * p->V[k] / m->Le;
       double *a = b->acc + 3 * ((size_t)q * (size_t)b->nrow + (size_t)j);
       if (info.path == MPM_DPATH_SOFTEN &&
           (b->reach <= 0.0 || !(b->lam[j] > 0.0) || fabs(p->x0[k] - b->xl[j]) <= b->reach))
         a[0] += dl;
-      const double lv = o.sep ? 1.0 : fmin(o.lam, 1.0); /* a separated particle: the row's crack is through */
+      const double lv = o.sep ? 1.0 : min1(o.lam); /* a separated particle: the row's crack is through */
       if (lv > a[1]) {
         a[1] = lv;
         a[2] = p->x0[k];
       }
     }
     p->dis[k] += dd;
-    s->led_part[q][MPM_LED_D] += dd;
-    acc->soften += info.path == MPM_DPATH_SOFTEN;
-    acc->separate += info.path == MPM_DPATH_SEPARATE;
-    acc->bracketed += info.bracketed;
+    led_d += dd;
+    soften += info.path == MPM_DPATH_SOFTEN;
+    separate += info.path == MPM_DPATH_SEPARATE;
+    bracketed += info.bracketed;
   }
+  s->led_part[q][MPM_LED_D] = led_d;
+  acc->soften += soften;
+  acc->separate += separate;
+  acc->bracketed += bracketed;
   d->n = 0;
   acc->tconst += mpm_wall() - t0;
   return qs;
