@@ -342,6 +342,129 @@ static inline __attribute__((always_inline)) int g2p_trial(const mpm_particles *
   return 0;
 }
 
+/* Eight particles in one vector (GCC's vector extension): elementwise IEEE arithmetic,
+ * so each lane rounds as the scalar code does; comparisons give lane masks. */
+typedef long long g2p_m8 __attribute__((vector_size(64)));
+
+static inline mpm_v8 v8_at(const double *x)
+{
+  mpm_v8 v;
+  memcpy(&v, x, sizeof v);
+  return v;
+}
+
+/* a product as rounded, out of the compiler's sight: not fused into the sum it feeds,
+ * as g2p_trial's a * a (computed in a branch of its own) is not */
+static inline mpm_v8 v8_rounded(mpm_v8 x)
+{
+  __asm__("" : "+m"(x));
+  return x;
+}
+
+/* g2p_trial without the viscous stress on eight lanes: the trial stress (kept where the
+ * lane passes), keep (the lanes that pass) and the ledger's term q (qs += m->mp q). */
+static inline __attribute__((always_inline)) void trial8(const mpm_material *m, mpm_v8 de0, mpm_v8 de1, mpm_v8 g2,
+                                                         mpm_v8 *sx, mpm_v8 *sy, mpm_v8 *sxy, mpm_v8 str2,
+                                                         mpm_v8 *q, g2p_m8 *keep)
+{
+  const mpm_v8 de2 = 0.5 * g2, zero = {0.0};
+  const mpm_v8 txx = *sx + m->E1 * de0 + m->E2 * de1;
+  const mpm_v8 tyy = *sy + m->E2 * de0 + m->E1 * de1;
+  const mpm_v8 txy = *sxy + 2.0 * m->G * de2;
+  const mpm_v8 sn = m->fn[0] * txx + m->fn[1] * tyy + m->fn[2] * txy;
+  const g2p_m8 pos = sn > 0.0;
+  const mpm_v8 a = (mpm_v8)((pos & (g2p_m8)sn) | (~pos & (g2p_m8)zero));
+  const mpm_v8 b = m->ft[0] * txx + m->ft[1] * tyy + m->ft[2] * txy;
+  const g2p_m8 k = v8_rounded(a * a) + b * b < MPM_TRIAL_SAFE * str2;
+  *q = txx * de0 + tyy * de1 + txy * g2;
+  *sx = (mpm_v8)((k & (g2p_m8)txx) | (~k & (g2p_m8)*sx));
+  *sy = (mpm_v8)((k & (g2p_m8)tyy) | (~k & (g2p_m8)*sy));
+  *sxy = (mpm_v8)((k & (g2p_m8)txy) | (~k & (g2p_m8)*sxy));
+  *keep = k;
+}
+
+/* The elastic trial of the n particles from k0 on, all of material m and without the
+ * viscous stress, eight at a time (the last n % 8 through a padded copy): their strain
+ * increments t0, t1 (de0, de1) and tg (g2); the trial stress kept where it passes, fail[i]
+ * and the ledger's term tq[i].  Each lane is g2p_trial's arithmetic, the same bits. */
+static void g2p_trial_chunk(const mpm_particles *p, const mpm_material *m, size_t k0, size_t n, const double *t0,
+                            const double *t1, const double *tg, double *tq, unsigned char *fail)
+{
+  double *const st[3] = {p->sxx + k0, p->syy + k0, p->sxy + k0};
+  const double *str2 = p->str2 + k0;
+  size_t i = 0;
+  for (; i + 8 <= n; i += 8) {
+    mpm_v8 sx = v8_at(st[0] + i), sy = v8_at(st[1] + i), sxy = v8_at(st[2] + i), q;
+    g2p_m8 keep;
+    trial8(m, v8_at(t0 + i), v8_at(t1 + i), v8_at(tg + i), &sx, &sy, &sxy, v8_at(str2 + i), &q, &keep);
+    memcpy(st[0] + i, &sx, sizeof sx);
+    memcpy(st[1] + i, &sy, sizeof sy);
+    memcpy(st[2] + i, &sxy, sizeof sxy);
+    memcpy(tq + i, &q, sizeof q);
+    for (int j = 0; j < 8; j++)
+      fail[i + j] = keep[j] == 0;
+  }
+  if (i < n) { /* the last lanes through a zeroed copy (the arrays end with the particles) */
+    const size_t w = n - i;
+    double pad[4][8] = {{0.0}}; /* sxx, syy, sxy, str2 */
+    const double *src[4] = {st[0] + i, st[1] + i, st[2] + i, str2 + i};
+    for (int c = 0; c < 4; c++)
+      for (size_t j = 0; j < w; j++)
+        pad[c][j] = src[c][j];
+    mpm_v8 sx = v8_at(pad[0]), sy = v8_at(pad[1]), sxy = v8_at(pad[2]), q;
+    g2p_m8 keep;
+    trial8(m, v8_at(t0 + i), v8_at(t1 + i), v8_at(tg + i), &sx, &sy, &sxy, v8_at(pad[3]), &q, &keep);
+    for (size_t j = 0; j < w; j++) {
+      st[0][i + j] = sx[j];
+      st[1][i + j] = sy[j];
+      st[2][i + j] = sxy[j];
+      fail[i + j] = keep[j] == 0;
+    }
+    memcpy(tq + i, &q, sizeof q);
+  }
+}
+
+/* The trial of chunk [c0, c1) from d's strain increments (tde), after its moves: eight
+ * at a time when the chunk is of one material (else one by one, g2p_trial), then in
+ * particle order the ledger's sum into *qs and the list for the full update; returns its
+ * length. */
+static size_t g2p_trial_rest(const mpm_sim *s, mpm_defer *d, size_t c0, size_t c1, int mixed, double *qs)
+{
+  const mpm_particles *p = s->p;
+  const size_t n = c1 - c0;
+  const double *t0 = d->tde[0], *t1 = d->tde[1], *tg = d->tde[2];
+  const mpm_material *m = &s->mat[p->mat[c0]];
+  size_t nd = 0;
+  double acc = *qs, bv = 0.0;
+  if (mixed) { /* one by one, as in the loop */
+    for (size_t i = 0; i < n; i++)
+      if (g2p_trial(p, c0 + i, &s->mat[p->mat[c0 + i]], t0[i], t1[i], tg[i], 0.0, p->sxx, p->syy, p->sxy,
+                    p->str2[c0 + i], &acc, &bv)) {
+        d->k[nd] = c0 + i;
+        d->de[nd][0] = t0[i];
+        d->de[nd][1] = t1[i];
+        d->de[nd][2] = 0.5 * tg[i];
+        nd++;
+      }
+    *qs = acc;
+    return nd;
+  }
+  g2p_trial_chunk(p, m, c0, n, t0, t1, tg, d->tq, d->tfail);
+  for (size_t i = 0; i < n; i++) {
+    if (d->tfail[i]) {
+      d->k[nd] = c0 + i;
+      d->de[nd][0] = t0[i];
+      d->de[nd][1] = t1[i];
+      d->de[nd][2] = 0.5 * tg[i];
+      nd++;
+    } else {
+      acc += m->mp * d->tq[i];
+    }
+  }
+  *qs = acc;
+  return nd;
+}
+
 /* eqs. 5-7 and the constitutive update for the particles of strip q.  The four node
  * records give, in one weighted sum each, the interpolated values of every lane (S) and
  * their x and y derivatives (GX, GY).  USL: strain from v^L (lanes px, py).  MUSL:
@@ -380,6 +503,9 @@ static inline __attribute__((always_inline)) void g2p_strip_impl(mpm_sim *s, int
   /* the strip's leftmost and rightmost new positions: a particle left the safe columns
    * iff one of those did (the column is monotone in x, rounding included); NaN ignored */
   double xlo = INFINITY, xhi = -INFINITY;
+  /* without the viscous stress the trial runs after each chunk's moves, eight at a time */
+  const int chunk8 = !p->vxx;
+  double *restrict tde0 = d->tde[0], *restrict tde1 = d->tde[1], *restrict tdg = d->tde[2];
   /* Chunks of at most MPM_DEFER particles: the list cannot overflow inside one, and the
    * full updates run after it, outside the restrict-qualified block. */
   for (size_t c0 = s->strip_start[q]; c0 < end; c0 += MPM_DEFER) {
@@ -393,6 +519,7 @@ static inline __attribute__((always_inline)) void g2p_strip_impl(mpm_sim *s, int
     size_t *restrict dk = d->k;
     double(*restrict dde)[3] = d->de;
     size_t nd_ = 0;
+    int mixed = 0; /* a chunk of more than one material: the trial one by one */
     for (size_t k = c0; k < c1; k++) {
       mpm_v4 S, GX, GY; /* field, frac dt d/dx, frac dt d/dy */
       if (gimp)
@@ -411,7 +538,12 @@ static inline __attribute__((always_inline)) void g2p_strip_impl(mpm_sim *s, int
         vy[k] += S[GFY];
         kv += mat[pmat[k]].mp * (S * S); /* lanes GFX, GFY: m |dv_p|^2 */
       }
-      if (strain) {
+      if (strain && chunk8) { /* the trial after the loop, eight at a time */
+        tde0[k - c0] = GX[ux];
+        tde1[k - c0] = GY[uy];
+        tdg[k - c0] = GY[ux] + GX[uy];
+        mixed |= pmat[k] != pmat[c0];
+      } else if (strain) {
         const double de0 = GX[ux], de1 = GY[uy], g2 = GY[ux] + GX[uy];
         /* the elastic trial (sec. 4), or the list for the full update */
         if (g2p_trial(p, k, &mat[pmat[k]], de0, de1, g2, bvis, sxx, syy, sxy, str2[k], &qs, &bv)) {
@@ -427,6 +559,8 @@ static inline __attribute__((always_inline)) void g2p_strip_impl(mpm_sim *s, int
         xhi = xn > xhi ? xn : xhi;
       }
     }
+    if (strain && chunk8)
+      nd_ = g2p_trial_rest(s, d, c0, c1, mixed, &qs);
     d->n = nd_;
     qs += s->ph->flush(s, q, s->p, d, dw, acc);
   }
