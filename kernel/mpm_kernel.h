@@ -325,10 +325,9 @@ typedef struct {
   /* the list as structure of arrays for mpm_dcoh_soften_batch */
   double bst[6][MPM_DEFER], bde[3][MPM_DEFER], bw[MPM_DEFER];
   unsigned char bsep[MPM_DEFER], bok[MPM_DEFER];
-  /* a chunk's strain increments (de0, de1, g2) and trial results, for the gather's
-   * elastic trial eight particles at a time (mpm_step.c) */
-  double tde[3][MPM_DEFER], tq[MPM_DEFER];
-  unsigned char tfail[MPM_DEFER];
+  /* a chunk's strain increments (de0, de1, g2), for the gather's elastic trial eight
+   * particles at a time (mpm_step.c) */
+  double tde[3][MPM_DEFER];
 } mpm_defer;
 
 struct mpm_sim {

@@ -383,16 +383,39 @@ static inline __attribute__((always_inline)) void trial8(const mpm_material *m, 
   *keep = k;
 }
 
+/* The particles of a group of eight (w of them, from k on) after their trial: in
+ * particle order, the ledger's sum (acc, as g2p_trial adds it) where the trial passed,
+ * the list for the full update where it failed. */
+static inline __attribute__((always_inline)) void trial8_book(mpm_defer *d, size_t *nd, size_t k, size_t w,
+                                                              const double *t0, const double *t1,
+                                                              const double *tg, double mp, mpm_v8 q, g2p_m8 keep,
+                                                              double *acc)
+{
+  for (size_t j = 0; j < w; j++) {
+    if (keep[j]) {
+      *acc += mp * q[j];
+    } else {
+      d->k[*nd] = k + j;
+      d->de[*nd][0] = t0[j];
+      d->de[*nd][1] = t1[j];
+      d->de[*nd][2] = 0.5 * tg[j];
+      (*nd)++;
+    }
+  }
+}
+
 /* The elastic trial of the n particles from k0 on, all of material m and without the
- * viscous stress, eight at a time (the last n % 8 through a padded copy): their strain
- * increments t0, t1 (de0, de1) and tg (g2); the trial stress kept where it passes, fail[i]
- * and the ledger's term tq[i].  Each lane is g2p_trial's arithmetic, the same bits. */
-static void g2p_trial_chunk(const mpm_particles *p, const mpm_material *m, size_t k0, size_t n, const double *t0,
-                            const double *t1, const double *tg, double *tq, unsigned char *fail)
+ * viscous stress, eight at a time (the last n % 8 through a padded copy), from their
+ * strain increments t0, t1 (de0, de1) and tg (g2): the trial stress kept where it
+ * passes, the rest listed in d; each lane is g2p_trial's arithmetic, the same bits.
+ * Returns the list's length. */
+static size_t g2p_trial_chunk(const mpm_particles *p, const mpm_material *m, size_t k0, size_t n, const double *t0,
+                              const double *t1, const double *tg, mpm_defer *d, double *qs)
 {
   double *const st[3] = {p->sxx + k0, p->syy + k0, p->sxy + k0};
   const double *str2 = p->str2 + k0;
-  size_t i = 0;
+  double acc = *qs;
+  size_t i = 0, nd = 0;
   for (; i + 8 <= n; i += 8) {
     mpm_v8 sx = v8_at(st[0] + i), sy = v8_at(st[1] + i), sxy = v8_at(st[2] + i), q;
     g2p_m8 keep;
@@ -400,9 +423,7 @@ static void g2p_trial_chunk(const mpm_particles *p, const mpm_material *m, size_
     memcpy(st[0] + i, &sx, sizeof sx);
     memcpy(st[1] + i, &sy, sizeof sy);
     memcpy(st[2] + i, &sxy, sizeof sxy);
-    memcpy(tq + i, &q, sizeof q);
-    for (int j = 0; j < 8; j++)
-      fail[i + j] = keep[j] == 0;
+    trial8_book(d, &nd, k0 + i, 8, t0 + i, t1 + i, tg + i, m->mp, q, keep, &acc);
   }
   if (i < n) { /* the last lanes through a zeroed copy (the arrays end with the particles) */
     const size_t w = n - i;
@@ -418,50 +439,35 @@ static void g2p_trial_chunk(const mpm_particles *p, const mpm_material *m, size_
       st[0][i + j] = sx[j];
       st[1][i + j] = sy[j];
       st[2][i + j] = sxy[j];
-      fail[i + j] = keep[j] == 0;
     }
-    memcpy(tq + i, &q, sizeof q);
+    trial8_book(d, &nd, k0 + i, w, t0 + i, t1 + i, tg + i, m->mp, q, keep, &acc);
   }
+  *qs = acc;
+  return nd;
 }
 
 /* The trial of chunk [c0, c1) from d's strain increments (tde), after its moves: eight
- * at a time when the chunk is of one material (else one by one, g2p_trial), then in
- * particle order the ledger's sum into *qs and the list for the full update; returns its
- * length. */
+ * at a time when the chunk is of one material (g2p_trial_chunk), else one by one
+ * (g2p_trial); the ledger's sum into *qs and the list for the full update in particle
+ * order.  Returns the list's length. */
 static size_t g2p_trial_rest(const mpm_sim *s, mpm_defer *d, size_t c0, size_t c1, int mixed, double *qs)
 {
   const mpm_particles *p = s->p;
   const size_t n = c1 - c0;
   const double *t0 = d->tde[0], *t1 = d->tde[1], *tg = d->tde[2];
-  const mpm_material *m = &s->mat[p->mat[c0]];
+  if (!mixed)
+    return g2p_trial_chunk(p, &s->mat[p->mat[c0]], c0, n, t0, t1, tg, d, qs);
   size_t nd = 0;
-  double acc = *qs, bv = 0.0;
-  if (mixed) { /* one by one, as in the loop */
-    for (size_t i = 0; i < n; i++)
-      if (g2p_trial(p, c0 + i, &s->mat[p->mat[c0 + i]], t0[i], t1[i], tg[i], 0.0, p->sxx, p->syy, p->sxy,
-                    p->str2[c0 + i], &acc, &bv)) {
-        d->k[nd] = c0 + i;
-        d->de[nd][0] = t0[i];
-        d->de[nd][1] = t1[i];
-        d->de[nd][2] = 0.5 * tg[i];
-        nd++;
-      }
-    *qs = acc;
-    return nd;
-  }
-  g2p_trial_chunk(p, m, c0, n, t0, t1, tg, d->tq, d->tfail);
-  for (size_t i = 0; i < n; i++) {
-    if (d->tfail[i]) {
+  double bv = 0.0;
+  for (size_t i = 0; i < n; i++)
+    if (g2p_trial(p, c0 + i, &s->mat[p->mat[c0 + i]], t0[i], t1[i], tg[i], 0.0, p->sxx, p->syy, p->sxy,
+                  p->str2[c0 + i], qs, &bv)) {
       d->k[nd] = c0 + i;
       d->de[nd][0] = t0[i];
       d->de[nd][1] = t1[i];
       d->de[nd][2] = 0.5 * tg[i];
       nd++;
-    } else {
-      acc += m->mp * d->tq[i];
     }
-  }
-  *qs = acc;
   return nd;
 }
 
