@@ -34,8 +34,9 @@
  * Speed (`delam bench`; README "Performance"), without obscuring the equations:
  *  - the scatter sums a cell's shares in registers (mpm_scatter.c), and a gather reads
  *    a node's (px, py, fx, fy) in one load from its 64-byte record (mpm_node.h);
- *  - the gather does the elastic trial inline; the few particles that may soften go on
- *    a per-thread list and get the full update (mpm_decohesion.c) after each chunk;
+ *  - the gather's elastic trial runs after each chunk's moves, eight particles at a time;
+ *    those that may soften go on a per-thread list and get the full update
+ *    (mpm_decohesion.c: its softening step eight at a time) after the chunk;
  *  - no allocation, no atomics and no per-particle timing in the loops.
  */
 #include <assert.h>
