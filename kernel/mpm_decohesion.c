@@ -13,8 +13,10 @@
  * converged step (phi(dl; s_tr) = 0).
  */
 #include <assert.h>
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_roots.h>
@@ -360,6 +362,128 @@ mpm_status mpm_dcoh_update(const mpm_material *m, const mpm_dstate *in, const do
 {
   dcoh_trace t;
   return dcoh_step(m, in, de, out, info, w, &t);
+}
+
+/* Eight particles at once (GCC's vector extension; one AVX-512 register with
+ * -march=native, pairs of SSE2 registers without): elementwise IEEE arithmetic, so a lane
+ * rounds as the scalar code does.  Comparisons give lane masks (all ones or zero). */
+typedef double dcoh_v8 __attribute__((vector_size(64)));
+typedef long long dcoh_m8 __attribute__((vector_size(64)));
+
+static inline dcoh_v8 v8_load(const double *x)
+{
+  dcoh_v8 v;
+  memcpy(&v, x, sizeof v);
+  return v;
+}
+
+static inline dcoh_v8 v8_sel(dcoh_m8 m, dcoh_v8 a, dcoh_v8 b) /* m ? a : b, lane by lane */
+{
+  return (dcoh_v8)((m & (dcoh_m8)a) | (~m & (dcoh_m8)b));
+}
+
+static inline dcoh_v8 v8_abs(dcoh_v8 x)
+{
+  const dcoh_m8 mag = (dcoh_m8){0} + 0x7fffffffffffffffLL; /* every bit but the sign */
+  return (dcoh_v8)((dcoh_m8)x & mag);
+}
+
+static inline dcoh_m8 v8_finite(dcoh_v8 x)
+{
+  return (dcoh_m8)(v8_abs(x) <= DBL_MAX);
+}
+
+/* x as rounded, out of the compiler's sight: a product passed through it is not fused
+ * into a later sum (-ffp-contract=fast), where the scalar code, which computes it in a
+ * branch of its own, does not fuse it either. */
+static inline dcoh_v8 v8_round(dcoh_v8 x)
+{
+  __asm__("" : "+m"(x));
+  return x;
+}
+
+static inline dcoh_v8 v8_sqrt(dcoh_v8 x)
+{
+  dcoh_v8 r;
+  for (int j = 0; j < 8; j++)
+    r[j] = sqrt(x[j]);
+  return r;
+}
+
+/* The arithmetic is dcoh_step's, dcoh_soften's and phi's for q = 1 (powq(lam) = lam,
+ * dpowq = 1), expression for expression, so that each lane rounds (and contracts) as
+ * they do; their branches become lane masks.  Lanes past n read the arrays' unused
+ * (zeroed) tail, capacity a multiple of 8, and are ignored.  test_mpm_decohesion.c
+ * compares the batch with mpm_dcoh_update bit for bit. */
+void mpm_dcoh_soften_batch(const mpm_material *m, size_t n, double *const st[6], const unsigned char *sep,
+                           const double *const de[3], double *w, unsigned char *ok)
+{
+  assert(m->q == 1.0 && m->model != MPM_DCOH_NONE);
+  const int m2 = m->model == MPM_DCOH_MODEL2;
+  const double E1 = m->E1, E2 = m->E2, G = m->G, k = m->kL, s0 = m->s0, visc = m->visc, ub = m->ubar0;
+  const double isnf = m->isnf, istf = m->istf, isnf2 = m->isnf2, istf2 = m->istf2, thr = m->sep_threshold;
+  const dcoh_v8 zero = {0.0};
+  for (size_t i = 0; i < n; i += 8) {
+    const dcoh_v8 xx = v8_load(st[0] + i), yy = v8_load(st[1] + i), xy = v8_load(st[2] + i);
+    const dcoh_v8 lam = v8_load(st[3] + i), upn = v8_load(st[4] + i), upt = v8_load(st[5] + i);
+    const dcoh_v8 e0 = v8_load(de[0] + i), e1 = v8_load(de[1] + i), e2 = v8_load(de[2] + i);
+    dcoh_m8 sp;
+    for (int j = 0; j < 8; j++)
+      sp[j] = sep[i + j] ? -1 : 0;
+    const dcoh_v8 txx = xx + E1 * e0 + E2 * e1;
+    const dcoh_v8 tyy = yy + E2 * e0 + E1 * e1;
+    const dcoh_v8 txy = xy + 2.0 * G * e2;
+    const dcoh_m8 fin = v8_finite(txx) & v8_finite(tyy) & v8_finite(txy) & v8_finite(lam) & v8_finite(upn) &
+                        v8_finite(upt);
+    /* mpm_to_nt of the old and the trial stress */
+    const dcoh_v8 inn = m->rnn[0] * xx + v8_round(m->rnn[1] * yy) + m->rnn[2] * xy;
+    const dcoh_v8 int_ = m->rnt[0] * xx + v8_round(m->rnt[1] * yy) + m->rnt[2] * xy;
+    const dcoh_v8 tnn = m->rnn[0] * txx + v8_round(m->rnn[1] * tyy) + m->rnn[2] * txy;
+    const dcoh_v8 ttt = m->rtt[0] * txx + v8_round(m->rtt[1] * tyy) + m->rtt[2] * txy;
+    const dcoh_v8 tnt = m->rnt[0] * txx + v8_round(m->rnt[1] * tyy) + m->rnt[2] * txy;
+    const dcoh_m8 closed = m->shear_closing ? (dcoh_m8)(tnt * upt < 0.0) : (dcoh_m8){0};
+    const dcoh_v8 stv = v8_sel(closed, zero, tnt);
+    const dcoh_m8 pos = (dcoh_m8)(tnn > 0.0);
+    const dcoh_v8 an = tnn * isnf, a = v8_sel(pos, an, zero), b = stv * istf; /* eff_traction */
+    const dcoh_v8 se = v8_sqrt(v8_round(a * a) + b * b);
+    const dcoh_v8 c = se - (1.0 - lam); /* eq. 23 */
+    const dcoh_v8 ise = 1.0 / se, r = s0 * ise;
+    const dcoh_v8 gnv = tnn * isnf2, gn = v8_sel(pos, gnv, zero);
+    const dcoh_v8 gt = stv * istf2;
+    const dcoh_v8 mn = r * gn;
+    const dcoh_v8 mt = m2 ? zero : r * gt;
+    const dcoh_v8 smn = E1 * k * mn, smt = G * k * mt;
+    const dcoh_v8 smtt = E2 * k * mn;
+    const dcoh_v8 q1 = v8_round(E1 * gn * gn), q2 = m2 ? zero : v8_round(G * gt * gt);
+    const dcoh_v8 Q = v8_round(s0 * k * (q1 + q2));
+    const dcoh_v8 se2 = se * se, den = Q + (visc - 1.0) * se2;
+    const dcoh_v8 gs = c * se2 / den;
+    const dcoh_v8 dl = v8_sel((dcoh_m8)(den > 0.0) & v8_finite(den), gs, zero); /* eq. 46 */
+    const dcoh_v8 dlmax = 1.0 - lam;
+    const dcoh_v8 fsn = tnn - dl * smn, fst = stv - dl * smt; /* phi(dl) */
+    const dcoh_v8 fan = fsn * isnf, fa = v8_sel((dcoh_m8)(fsn > 0.0), fan, zero), fb = fst * istf;
+    const dcoh_v8 f = v8_sqrt(v8_round(fa * fa) + fb * fb) - 1.0 + (lam + dl) - visc * dl;
+    const dcoh_v8 snn = tnn - dl * smn, snt = tnt - dl * smt, stt = ttt - dl * smtt;
+    const dcoh_v8 dun = dl * ub * mn, dut = dl * ub * mt;
+    const dcoh_v8 olam = lam + dl, oupn = upn + dun, oupt = upt + dut;
+    const dcoh_v8 wi = 0.5 * ((inn + snn) * dun + v8_round((int_ + snt) * dut));
+    /* mpm_from_nt */
+    const dcoh_v8 oxx = m->rnn[0] * snn + v8_round(m->rtt[0] * stt) + (2.0 * m->rnt[0]) * snt;
+    const dcoh_v8 oyy = m->rnn[1] * snn + v8_round(m->rtt[1] * stt) + (2.0 * m->rnt[1]) * snt;
+    const dcoh_v8 oxy = (0.5 * m->rnn[2]) * snn + v8_round((0.5 * m->rtt[2]) * stt) + m->rnt[2] * snt;
+    const dcoh_m8 good = fin & ~sp & (dcoh_m8)(c > 0.0) & (dcoh_m8)(dlmax > 0.0) & (dcoh_m8)(dl > 0.0) &
+                         (dcoh_m8)(dl <= dlmax) & (dcoh_m8)(v8_abs(f) < MPM_DCOH_FTOL) &
+                         (dcoh_m8)(lam + dl <= thr) & v8_finite(oxx) & v8_finite(oyy) & v8_finite(oxy) &
+                         v8_finite(olam) & v8_finite(oupn) & v8_finite(oupt);
+    const dcoh_v8 out[6] = {v8_sel(good, oxx, xx),   v8_sel(good, oyy, yy),     v8_sel(good, oxy, xy),
+                            v8_sel(good, olam, lam), v8_sel(good, oupn, upn), v8_sel(good, oupt, upt)};
+    for (int q = 0; q < 6; q++)
+      memcpy(st[q] + i, &out[q], sizeof out[q]);
+    const dcoh_v8 wv = v8_sel(good, wi, zero);
+    memcpy(w + i, &wv, sizeof wv);
+    for (int j = 0; j < 8; j++)
+      ok[i + j] = good[j] != 0;
+  }
 }
 
 /* d s / d s_tr in the n-t frame, rows and columns (nn, tt, nt), of the path t took. */

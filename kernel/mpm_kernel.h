@@ -191,6 +191,16 @@ mpm_status mpm_dcoh_update(const mpm_material *m, const mpm_dstate *in, const do
 mpm_status mpm_dcoh_tangent(const mpm_material *m, const mpm_dstate *in, const double de[3], double D[3][3],
                             double dlam[3], mpm_dwork *w);
 
+/* mpm_dcoh_update's softening step (eqs. 39-50) for n particles of one material with
+ * q = 1, in one loop without branches on the data (the particles' chains of square roots
+ * and divisions overlap): st[0..5] their sxx, syy, sxy, lambda, upn, upt, sep their flags,
+ * de[0..2] their strain increments.  Where ok[i] = 1 particle i softened, its first Newton
+ * iterate within tolerance and every output finite: st holds its new state and w[i] its
+ * traction work, the same bits as mpm_dcoh_update's.  Elsewhere (ok[i] = 0, st untouched)
+ * it needs mpm_dcoh_update. */
+void mpm_dcoh_soften_batch(const mpm_material *m, size_t n, double *const st[6], const unsigned char *sep,
+                           const double *const de[3], double *w, unsigned char *ok);
+
 /* Remaining strength squared, (1 - lambda^q)^2 (eq. 23); -1 once separated
  * (mpm_particles.str2). */
 double mpm_dcoh_str2(const mpm_material *m, double lam, int sep);
@@ -322,6 +332,12 @@ typedef struct {
   size_t n;
   size_t k[MPM_DEFER];
   double de[MPM_DEFER][3];
+  /* the list as structure of arrays for mpm_dcoh_soften_batch */
+  double bst[6][MPM_DEFER], bde[3][MPM_DEFER], bw[MPM_DEFER];
+  unsigned char bsep[MPM_DEFER], bok[MPM_DEFER];
+  /* a chunk's strain increments (de0, de1, g2), for the gather's elastic trial eight
+   * particles at a time (mpm_step.c) */
+  double tde[3][MPM_DEFER];
 } mpm_defer;
 
 struct mpm_sim {

@@ -9,9 +9,9 @@
  *   g2p   x_p += dt sum v^L_i N_ip,  v_p += sum (v^L_i - v_i) N_ip    eqs. 5, 6
  *         de_p = dt sym(sum v^L_i (x) G_ip), then the decohesion update  eq. 7
  *
- * N and G are taken at the start of the step.  The energy ledger's terms (A, K, B, Q,
- * L_flip, L_bc, L_scheme, ...) are derived in docs/verification.md.  Scatters run strip
- * by strip (mpm_sort.c), gathers per particle: the same bits for any thread count.
+ * N and G at the step's start; the ledger's terms: docs/verification.md.  Scatters run by
+ * strips (mpm_sort.c), gathers per particle (the elastic trial eight at a time, those that
+ * may soften updated after the chunk): the same bits for any thread count.
  */
 #include <assert.h>
 #include <math.h>
@@ -74,6 +74,40 @@ struct g2p_acc {
   size_t bad_k;
 };
 
+/* fmin(x, 1) without the library call (NaN gives 1 as fmin does) */
+static inline double min1(double x)
+{
+  return x < 1.0 ? x : 1.0;
+}
+
+/* The softening step of the particles in d's list in one batch (mpm_dcoh_soften_batch)
+ * when they share one material with q = 1; 1 if it ran (d's bok says which took it). */
+static int flush_batch(const mpm_sim *s, const mpm_particles *p, mpm_defer *d)
+{
+  const uint8_t mi = p->mat[d->k[0]];
+  const mpm_material *m = &s->mat[mi];
+  if (m->model == MPM_DCOH_NONE || m->q != 1.0)
+    return 0;
+  for (size_t i = 0; i < d->n; i++) {
+    const size_t k = d->k[i];
+    if (p->mat[k] != mi)
+      return 0;
+    d->bst[0][i] = p->sxx[k];
+    d->bst[1][i] = p->syy[k];
+    d->bst[2][i] = p->sxy[k];
+    d->bst[3][i] = p->lam[k];
+    d->bst[4][i] = p->upn[k];
+    d->bst[5][i] = p->upt[k];
+    d->bsep[i] = p->sep[k];
+    for (int c = 0; c < 3; c++)
+      d->bde[c][i] = d->de[i][c];
+  }
+  double *const st[6] = {d->bst[0], d->bst[1], d->bst[2], d->bst[3], d->bst[4], d->bst[5]};
+  const double *const de[3] = {d->bde[0], d->bde[1], d->bde[2]};
+  mpm_dcoh_soften_batch(m, d->n, st, d->bsep, de, d->bw, d->bok);
+  return 1;
+}
+
 /* The full decohesion update (sec. 4) of the particles in the thread's list, in list
  * order, off the hot loop; one timing per batch.  Returns the ledger's
  * sum m sigma_new : deps over them (ledger_step). */
@@ -85,6 +119,9 @@ static inline __attribute__((always_inline)) double flush_impl(const mpm_sim *s,
     return 0.0;
   const double t0 = mpm_wall();
   double qs = 0.0;
+  const int bat = !rows && flush_batch(s, p, d);
+  double led_d = s->led_part[q][MPM_LED_D]; /* summed in a register, in the same order */
+  long soften = 0, separate = 0, bracketed = 0;
   for (size_t i = 0; i < d->n; i++) {
     const size_t k = d->k[i];
     const mpm_material *m = &s->mat[p->mat[k]];
@@ -101,7 +138,10 @@ static inline __attribute__((always_inline)) double flush_impl(const mpm_sim *s,
     const mpm_dstate in = {p->sxx[k], p->syy[k], p->sxy[k], p->lam[k], p->upn[k], p->upt[k], p->sep[k]};
     mpm_dstate o;
     mpm_dinfo info;
-    if (mpm_dcoh_update(m, &in, d->de[i], &o, &info, dw) != MPM_OK && (!acc->bad || k < acc->bad_k)) {
+    if (bat && d->bok[i]) { /* softened in the batch */
+      o = (mpm_dstate){d->bst[0][i], d->bst[1][i], d->bst[2][i], d->bst[3][i], d->bst[4][i], d->bst[5][i], 0};
+      info = (mpm_dinfo){MPM_DPATH_SOFTEN, 1, 0, d->bw[i]};
+    } else if (mpm_dcoh_update(m, &in, d->de[i], &o, &info, dw) != MPM_OK && (!acc->bad || k < acc->bad_k)) {
       acc->bad = 1;
       acc->bad_k = k;
     }
@@ -114,33 +154,38 @@ static inline __attribute__((always_inline)) double flush_impl(const mpm_sim *s,
     p->upn[k] = o.upn;
     p->upt[k] = o.upt;
     p->sep[k] = (uint8_t)o.sep;
-    p->str2[k] = mpm_dcoh_str2(m, o.lam, o.sep);
+    /* the batch's particles: q = 1, not separated; (1 - lambda)^2 as mpm_dcoh_str2 has it */
+    p->str2[k] = bat && d->bok[i] ? (1.0 - o.lam) * (1.0 - o.lam) : mpm_dcoh_str2(m, o.lam, o.sep);
     /* the decohesion strain is d ud / Le while softening, d ud / Lopen once separating */
     p->wcoh[k] += info.w * p->V[k] / (info.path == MPM_DPATH_SOFTEN ? m->Le : m->Lopen);
-    const double dl = fmin(o.lam, 1.0) - fmin(in.lam, 1.0);
+    const double dl = min1(o.lam) - min1(in.lam);
     double dd = 0.0;
     if (!rows) {
       dd = m->U0 * dl * p->V[k] / m->Le;
     } else if (m == &mrow) {
       /* Le = row: a particle's dissipation ends where it separates, the rest of its
        * 1 - lambda charged at the row's Le then */
-      dd = m->U0 * (info.path == MPM_DPATH_SEPARATE ? 1.0 - fmin(in.lam, 1.0) : dl) * p->V[k] / m->Le;
+      dd = m->U0 * (info.path == MPM_DPATH_SEPARATE ? 1.0 - min1(in.lam) : dl) * p->V[k] / m->Le;
       double *a = b->acc + 3 * ((size_t)q * (size_t)b->nrow + (size_t)j);
       if (info.path == MPM_DPATH_SOFTEN &&
           (b->reach <= 0.0 || !(b->lam[j] > 0.0) || fabs(p->x0[k] - b->xl[j]) <= b->reach))
         a[0] += dl;
-      const double lv = o.sep ? 1.0 : fmin(o.lam, 1.0); /* a separated particle: the row's crack is through */
+      const double lv = o.sep ? 1.0 : min1(o.lam); /* a separated particle: the row's crack is through */
       if (lv > a[1]) {
         a[1] = lv;
         a[2] = p->x0[k];
       }
     }
     p->dis[k] += dd;
-    s->led_part[q][MPM_LED_D] += dd;
-    acc->soften += info.path == MPM_DPATH_SOFTEN;
-    acc->separate += info.path == MPM_DPATH_SEPARATE;
-    acc->bracketed += info.bracketed;
+    led_d += dd;
+    soften += info.path == MPM_DPATH_SOFTEN;
+    separate += info.path == MPM_DPATH_SEPARATE;
+    bracketed += info.bracketed;
   }
+  s->led_part[q][MPM_LED_D] = led_d;
+  acc->soften += soften;
+  acc->separate += separate;
+  acc->bracketed += bracketed;
   d->n = 0;
   acc->tconst += mpm_wall() - t0;
   return qs;
@@ -272,6 +317,135 @@ static inline __attribute__((always_inline)) int g2p_trial(const mpm_particles *
   return 0;
 }
 
+/* Eight particles in one vector (GCC's vector extension): elementwise IEEE arithmetic,
+ * so each lane rounds as the scalar code does; comparisons give lane masks. */
+typedef long long g2p_m8 __attribute__((vector_size(64)));
+
+static inline mpm_v8 v8_at(const double *x)
+{
+  mpm_v8 v;
+  memcpy(&v, x, sizeof v);
+  return v;
+}
+
+/* a product as rounded, out of the compiler's sight: not fused into the sum it feeds,
+ * as g2p_trial's a * a (computed in a branch of its own) is not */
+static inline mpm_v8 v8_rounded(mpm_v8 x)
+{
+  __asm__("" : "+m"(x));
+  return x;
+}
+
+/* g2p_trial without the viscous stress on eight lanes: the trial stress (kept where the
+ * lane passes), keep (the lanes that pass) and the ledger's term q (qs += m->mp q). */
+static inline __attribute__((always_inline)) void trial8(const mpm_material *m, mpm_v8 de0, mpm_v8 de1, mpm_v8 g2,
+                                                         mpm_v8 *sx, mpm_v8 *sy, mpm_v8 *sxy, mpm_v8 str2,
+                                                         mpm_v8 *q, g2p_m8 *keep)
+{
+  const mpm_v8 de2 = 0.5 * g2, zero = {0.0};
+  const mpm_v8 txx = *sx + m->E1 * de0 + m->E2 * de1;
+  const mpm_v8 tyy = *sy + m->E2 * de0 + m->E1 * de1;
+  const mpm_v8 txy = *sxy + 2.0 * m->G * de2;
+  const mpm_v8 sn = m->fn[0] * txx + m->fn[1] * tyy + m->fn[2] * txy;
+  const g2p_m8 pos = sn > 0.0;
+  const mpm_v8 a = (mpm_v8)((pos & (g2p_m8)sn) | (~pos & (g2p_m8)zero));
+  const mpm_v8 b = m->ft[0] * txx + m->ft[1] * tyy + m->ft[2] * txy;
+  const g2p_m8 k = v8_rounded(a * a) + b * b < MPM_TRIAL_SAFE * str2;
+  *q = txx * de0 + tyy * de1 + txy * g2;
+  *sx = (mpm_v8)((k & (g2p_m8)txx) | (~k & (g2p_m8)*sx));
+  *sy = (mpm_v8)((k & (g2p_m8)tyy) | (~k & (g2p_m8)*sy));
+  *sxy = (mpm_v8)((k & (g2p_m8)txy) | (~k & (g2p_m8)*sxy));
+  *keep = k;
+}
+
+/* The particles of a group of eight (w of them, from k on) after their trial: in
+ * particle order, the ledger's sum (acc, as g2p_trial adds it) where the trial passed,
+ * the list for the full update where it failed. */
+static inline __attribute__((always_inline)) void trial8_book(mpm_defer *d, size_t *nd, size_t k, size_t w,
+                                                              const double *t0, const double *t1,
+                                                              const double *tg, double mp, mpm_v8 q, g2p_m8 keep,
+                                                              double *acc)
+{
+  for (size_t j = 0; j < w; j++) {
+    if (keep[j]) {
+      *acc += mp * q[j];
+    } else {
+      d->k[*nd] = k + j;
+      d->de[*nd][0] = t0[j];
+      d->de[*nd][1] = t1[j];
+      d->de[*nd][2] = 0.5 * tg[j];
+      (*nd)++;
+    }
+  }
+}
+
+/* The elastic trial of the n particles from k0 on, all of material m and without the
+ * viscous stress, eight at a time (the last n % 8 through a padded copy), from their
+ * strain increments t0, t1 (de0, de1) and tg (g2): the trial stress kept where it
+ * passes, the rest listed in d; each lane is g2p_trial's arithmetic, the same bits.
+ * Returns the list's length. */
+static size_t g2p_trial_chunk(const mpm_particles *p, const mpm_material *m, size_t k0, size_t n, const double *t0,
+                              const double *t1, const double *tg, mpm_defer *d, double *qs)
+{
+  double *const st[3] = {p->sxx + k0, p->syy + k0, p->sxy + k0};
+  const double *str2 = p->str2 + k0;
+  double acc = *qs;
+  size_t i = 0, nd = 0;
+  for (; i + 8 <= n; i += 8) {
+    mpm_v8 sx = v8_at(st[0] + i), sy = v8_at(st[1] + i), sxy = v8_at(st[2] + i), q;
+    g2p_m8 keep;
+    trial8(m, v8_at(t0 + i), v8_at(t1 + i), v8_at(tg + i), &sx, &sy, &sxy, v8_at(str2 + i), &q, &keep);
+    memcpy(st[0] + i, &sx, sizeof sx);
+    memcpy(st[1] + i, &sy, sizeof sy);
+    memcpy(st[2] + i, &sxy, sizeof sxy);
+    trial8_book(d, &nd, k0 + i, 8, t0 + i, t1 + i, tg + i, m->mp, q, keep, &acc);
+  }
+  if (i < n) { /* the last lanes through a zeroed copy (the arrays end with the particles) */
+    const size_t w = n - i;
+    double pad[4][8] = {{0.0}}; /* sxx, syy, sxy, str2 */
+    const double *src[4] = {st[0] + i, st[1] + i, st[2] + i, str2 + i};
+    for (int c = 0; c < 4; c++)
+      for (size_t j = 0; j < w; j++)
+        pad[c][j] = src[c][j];
+    mpm_v8 sx = v8_at(pad[0]), sy = v8_at(pad[1]), sxy = v8_at(pad[2]), q;
+    g2p_m8 keep;
+    trial8(m, v8_at(t0 + i), v8_at(t1 + i), v8_at(tg + i), &sx, &sy, &sxy, v8_at(pad[3]), &q, &keep);
+    for (size_t j = 0; j < w; j++) {
+      st[0][i + j] = sx[j];
+      st[1][i + j] = sy[j];
+      st[2][i + j] = sxy[j];
+    }
+    trial8_book(d, &nd, k0 + i, w, t0 + i, t1 + i, tg + i, m->mp, q, keep, &acc);
+  }
+  *qs = acc;
+  return nd;
+}
+
+/* The trial of chunk [c0, c1) from d's strain increments (tde), after its moves: eight
+ * at a time when the chunk is of one material (g2p_trial_chunk), else one by one
+ * (g2p_trial); the ledger's sum into *qs and the list for the full update in particle
+ * order.  Returns the list's length. */
+static size_t g2p_trial_rest(const mpm_sim *s, mpm_defer *d, size_t c0, size_t c1, int mixed, double *qs)
+{
+  const mpm_particles *p = s->p;
+  const size_t n = c1 - c0;
+  const double *t0 = d->tde[0], *t1 = d->tde[1], *tg = d->tde[2];
+  if (!mixed)
+    return g2p_trial_chunk(p, &s->mat[p->mat[c0]], c0, n, t0, t1, tg, d, qs);
+  size_t nd = 0;
+  double bv = 0.0;
+  for (size_t i = 0; i < n; i++)
+    if (g2p_trial(p, c0 + i, &s->mat[p->mat[c0 + i]], t0[i], t1[i], tg[i], 0.0, p->sxx, p->syy, p->sxy,
+                  p->str2[c0 + i], qs, &bv)) {
+      d->k[nd] = c0 + i;
+      d->de[nd][0] = t0[i];
+      d->de[nd][1] = t1[i];
+      d->de[nd][2] = 0.5 * tg[i];
+      nd++;
+    }
+  return nd;
+}
+
 /* eqs. 5-7 and the constitutive update for the particles of strip q.  The four node
  * records give, in one weighted sum each, the interpolated values of every lane (S) and
  * their x and y derivatives (GX, GY).  USL: strain from v^L (lanes px, py).  MUSL:
@@ -310,6 +484,9 @@ static inline __attribute__((always_inline)) void g2p_strip_impl(mpm_sim *s, int
   /* the strip's leftmost and rightmost new positions: a particle left the safe columns
    * iff one of those did (the column is monotone in x, rounding included); NaN ignored */
   double xlo = INFINITY, xhi = -INFINITY;
+  /* without the viscous stress the trial runs after each chunk's moves, eight at a time */
+  const int chunk8 = !p->vxx;
+  double *restrict tde0 = d->tde[0], *restrict tde1 = d->tde[1], *restrict tdg = d->tde[2];
   /* Chunks of at most MPM_DEFER particles: the list cannot overflow inside one, and the
    * full updates run after it, outside the restrict-qualified block. */
   for (size_t c0 = s->strip_start[q]; c0 < end; c0 += MPM_DEFER) {
@@ -323,6 +500,7 @@ static inline __attribute__((always_inline)) void g2p_strip_impl(mpm_sim *s, int
     size_t *restrict dk = d->k;
     double(*restrict dde)[3] = d->de;
     size_t nd_ = 0;
+    int mixed = 0; /* a chunk of more than one material: the trial one by one */
     for (size_t k = c0; k < c1; k++) {
       mpm_v4 S, GX, GY; /* field, frac dt d/dx, frac dt d/dy */
       if (gimp)
@@ -341,7 +519,12 @@ static inline __attribute__((always_inline)) void g2p_strip_impl(mpm_sim *s, int
         vy[k] += S[GFY];
         kv += mat[pmat[k]].mp * (S * S); /* lanes GFX, GFY: m |dv_p|^2 */
       }
-      if (strain) {
+      if (strain && chunk8) { /* the trial after the loop, eight at a time */
+        tde0[k - c0] = GX[ux];
+        tde1[k - c0] = GY[uy];
+        tdg[k - c0] = GY[ux] + GX[uy];
+        mixed |= pmat[k] != pmat[c0];
+      } else if (strain) {
         const double de0 = GX[ux], de1 = GY[uy], g2 = GY[ux] + GX[uy];
         /* the elastic trial (sec. 4), or the list for the full update */
         if (g2p_trial(p, k, &mat[pmat[k]], de0, de1, g2, bvis, sxx, syy, sxy, str2[k], &qs, &bv)) {
@@ -357,6 +540,8 @@ static inline __attribute__((always_inline)) void g2p_strip_impl(mpm_sim *s, int
         xhi = xn > xhi ? xn : xhi;
       }
     }
+    if (strain && chunk8)
+      nd_ = g2p_trial_rest(s, d, c0, c1, mixed, &qs);
     d->n = nd_;
     qs += s->ph->flush(s, q, s->p, d, dw, acc);
   }

@@ -104,7 +104,7 @@ static int apply_sets(ver_scene *vs, const char *sets, char *err, size_t errlen)
 static void usage(FILE *f)
 {
   fprintf(f,
-    "usage: delam bench [--threads N] [--repeat N] [--json] [--steps-scale X]\n"
+    "usage: delam bench [--threads N] [--repeat N] [--json] [--steps-scale X] [--case TEXT]\n"
     "Times fixed cases, 4 particles per cell, from 99 %% of the peak stress so decohesion is\n"
     "active, with 1 and 2 threads, or with N: Fig. 6 at h = 2 and 1 and Fig. 7 at h = 2 with\n"
     "the paper's bilinear shapes and step; Fig. 6 at h = 2 with the nodal mass limit\n"
@@ -129,6 +129,7 @@ static void usage(FILE *f)
     "  --repeat N       runs per case, the fastest reported (default 3)\n"
     "  --json           one JSON object per line instead of the table\n"
     "  --steps-scale X  multiply the number of steps (default 1)\n"
+    "  --case TEXT      only the cases whose id contains TEXT (e.g. fig6-h1)\n"
     "Reproduce outside the bench: /usr/bin/time -v build/delam run data/scenes/fig6.ini \\\n"
     "  --h 1 --ppc 4 --until 0.1 --threads 1\n");
 }
@@ -172,7 +173,8 @@ static int bench_scene(const bench_case *bc, ver_scene *vs, ana_bar *bar)
 }
 
 /* The options; 0, 1 (--help: done) or 2 (bad usage). */
-static int bench_args(int argc, char **argv, int *threads, int *json, int *repeat, double *scale)
+static int bench_args(int argc, char **argv, int *threads, int *json, int *repeat, double *scale,
+                      const char **only)
 {
   for (int i = 1; i < argc; i++) {
     if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
@@ -180,6 +182,8 @@ static int bench_args(int argc, char **argv, int *threads, int *json, int *repea
       return 1;
     } else if (!strcmp(argv[i], "--json")) {
       *json = 1;
+    } else if (!strcmp(argv[i], "--case") && i + 1 < argc) {
+      *only = argv[++i];
     } else if (!strcmp(argv[i], "--threads") || !strcmp(argv[i], "--repeat") ||
                !strcmp(argv[i], "--steps-scale")) {
       char *end;
@@ -337,7 +341,8 @@ int ver_cmd_bench(int argc, char **argv)
 {
   int threads = 0, json = 0, repeat = 3;
   double scale = 1.0;
-  const int pa = bench_args(argc, argv, &threads, &json, &repeat, &scale);
+  const char *only = "";
+  const int pa = bench_args(argc, argv, &threads, &json, &repeat, &scale, &only);
   if (pa)
     return pa == 1 ? 0 : 2;
   const int tlist[2] = {threads ? threads : 1, 2};
@@ -347,6 +352,10 @@ int ver_cmd_bench(int argc, char **argv)
            "wall_s", "cpu_s", "Mupd/s", "sort%", "p2g%", "grid%", "g2p%", "cons%", "B/p");
   for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++)
     for (int ti = 0; ti < ntl; ti++) {
+      char want[96];
+      snprintf(want, sizeof want, "%s-h%g-ppc%d-%s", cases[c].scene, cases[c].h, cases[c].ppc, cases[c].method);
+      if (!strstr(want, only))
+        continue;
       ver_scene vs;
       ana_bar bar;
       char err[1024];
@@ -390,7 +399,13 @@ int ver_cmd_bench(int argc, char **argv)
       fflush(stdout);
       mpm_sim_free(s);
     }
-  if (!json)
+  int nstatic = 0; /* the static cases --case leaves */
+  for (int c = 0; c < (int)(sizeof static_cases / sizeof static_cases[0]); c++) {
+    char want[96];
+    snprintf(want, sizeof want, "%s-h%g-ppc4-static", static_cases[c].scene, static_cases[c].h);
+    nstatic += strstr(want, only) != NULL;
+  }
+  if (!json && nstatic)
     printf("\n%-28s %8s %8s %5s %6s %5s %7s %7s  %8s %8s %8s\n", "static case (1 thread)", "particles", "unknowns",
            "incr", "newton", "LU", "wall_s", "cpu_s", "asm ms/i", "LU ms/i", "sol ms/i");
   /* per scene, a least-squares line through (log unknowns, log CPU s) of its h rows */
@@ -398,11 +413,13 @@ int ver_cmd_bench(int argc, char **argv)
   int m = 0;
   const int nc = (int)(sizeof static_cases / sizeof static_cases[0]);
   for (int c = 0; c < nc; c++) {
-    if (static_cases[c].h < 4 && scale < 1.0)
-      continue; /* h 2 and 1 are whole runs of seconds: not for a shortened bench */
+    char want[96];
+    snprintf(want, sizeof want, "%s-h%g-ppc4-static", static_cases[c].scene, static_cases[c].h);
+    /* h 2 and 1 are whole runs of seconds: not for a shortened bench */
+    const int run = !(static_cases[c].h < 4 && scale < 1.0) && strstr(want, only);
     double cpu = 0.0;
     int nu = 0;
-    const int rc = bench_static_case(c, repeat, json, &cpu, &nu);
+    const int rc = run ? bench_static_case(c, repeat, json, &cpu, &nu) : 0;
     if (rc)
       return rc;
     if (cpu > 0.0 && nu > 0) {

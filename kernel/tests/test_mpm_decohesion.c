@@ -1058,6 +1058,83 @@ static void test_mpm_decohesion_tangent_compression(void **state)
   mpm_dwork_free(w);
 }
 
+/* The batch softening step (mpm_dcoh_soften_batch, the explicit gather's) against the
+ * scalar update, on states on their strength surface pushed outward (softening), pulled
+ * back (elastic), separated and non-finite, for both models, three planes, with and
+ * without reversed-shear closing: where the batch takes a particle its state and
+ * traction work equal mpm_dcoh_update's bit for bit on a softening path of one Newton
+ * iterate; elsewhere the state is untouched, and the batch takes most softening ones. */
+static void test_mpm_decohesion_soften_batch(void **state)
+{
+  (void)state;
+  mpm_dwork *w = mpm_dwork_alloc();
+  assert_non_null(w);
+  static double st[6][MPM_DEFER], de[3][MPM_DEFER], wb[MPM_DEFER];
+  static unsigned char sep[MPM_DEFER], ok[MPM_DEFER];
+  static mpm_dstate in[MPM_DEFER];
+  const int models[] = {MPM_DCOH_MODEL1, MPM_DCOH_MODEL2};
+  const double alphas[] = {90.0, 60.0, 30.0};
+  long taken = 0, soft = 0;
+  unsigned seed = 12345u;
+  for (int im = 0; im < 2; im++)
+    for (int ia = 0; ia < 3; ia++)
+      for (int closing = 0; closing < 2; closing++) {
+        mpm_scene sc = tu_scene(models[im], alphas[ia], 1.0, 2.0, 1.0, 1.0);
+        sc.reversed_shear = closing ? MPM_SHEAR_CLOSING : MPM_SHEAR_EVEN;
+        mpm_material m;
+        mpm_material_init(&m, &sc, 1.0, LE);
+        const size_t n = MPM_DEFER - 3; /* not a multiple of 8: the last lanes unused */
+        for (size_t i = 0; i < n; i++) {
+          seed = seed * 1103515245u + 12345u;
+          const double u1 = (double)(seed >> 8) / 16777216.0;
+          seed = seed * 1103515245u + 12345u;
+          const double u2 = (double)(seed >> 8) / 16777216.0;
+          const double lam = 0.9 * u1, th = PI * (u2 - 0.5) / 2.0, r = 1.0 - lam;
+          const double snn = r * cos(th), snt = 2.0 * r * sin(th);
+          in[i] = nt_state(alphas[ia], snn, 0.3 * snn, snt, lam, 0.01 * u2, -0.01 * u1, i % 17 == 5);
+          const double g = (i % 5 == 3 ? -1e-10 : 1e-10) * (0.5 + u1); /* i % 5 == 3: unloading */
+          const double nx = sin(alphas[ia] * PI / 180.0), ny = -cos(alphas[ia] * PI / 180.0);
+          const double d3[3] = {g * nx * nx + 0.3 * g * u2, g * ny * ny, g * nx * ny - 0.2 * g * u1};
+          if (i % 31 == 7)
+            in[i].upn = NAN;
+          const double v[6] = {in[i].sxx, in[i].syy, in[i].sxy, in[i].lam, in[i].upn, in[i].upt};
+          for (int c = 0; c < 6; c++)
+            st[c][i] = v[c];
+          for (int c = 0; c < 3; c++)
+            de[c][i] = d3[c];
+          sep[i] = (unsigned char)in[i].sep;
+        }
+        double *const sp[6] = {st[0], st[1], st[2], st[3], st[4], st[5]};
+        const double *const dp[3] = {de[0], de[1], de[2]};
+        mpm_dcoh_soften_batch(&m, n, sp, sep, dp, wb, ok);
+        for (size_t i = 0; i < n; i++) {
+          const double d3[3] = {de[0][i], de[1][i], de[2][i]};
+          mpm_dstate o;
+          mpm_dinfo info;
+          const mpm_status rc = mpm_dcoh_update(&m, &in[i], d3, &o, &info, w);
+          const int one = rc == MPM_OK && info.path == MPM_DPATH_SOFTEN && info.iters == 1 && !info.bracketed;
+          soft += one;
+          mpm_dstate b = in[i];
+          b.sxx = st[0][i], b.syy = st[1][i], b.sxy = st[2][i], b.lam = st[3][i], b.upn = st[4][i];
+          b.upt = st[5][i];
+          if (ok[i]) {
+            taken++;
+            assert_true(one);
+            assert_same_state(&b, &o, "batch against mpm_dcoh_update");
+            assert_memory_equal(&wb[i], &info.w, sizeof(double));
+          } else {
+            const double fa[6] = {b.sxx, b.syy, b.sxy, b.lam, b.upn, b.upt};
+            const double fi[6] = {in[i].sxx, in[i].syy, in[i].sxy, in[i].lam, in[i].upn, in[i].upt};
+            assert_memory_equal(fa, fi, sizeof fa); /* untouched */
+          }
+        }
+      }
+  print_message("# batch: %ld of %ld softening one-iterate updates taken\n", taken, soft);
+  assert_true(soft > 1000);
+  assert_true(taken > soft * 9 / 10);
+  mpm_dwork_free(w);
+}
+
 int main(void)
 {
   const struct CMUnitTest tests[] = {
@@ -1081,6 +1158,7 @@ int main(void)
       cmocka_unit_test(test_mpm_decohesion_tangent_separation),
       cmocka_unit_test(test_mpm_decohesion_tangent_closing),
       cmocka_unit_test(test_mpm_decohesion_tangent_compression),
+      cmocka_unit_test(test_mpm_decohesion_soften_batch),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
