@@ -113,6 +113,8 @@ int ver_check_finished(const char *dir, int ours, char *scene, size_t slen, char
   }
   free(txt);
   const cJSON *c = cJSON_GetObjectItemCaseSensitive(o, "complete");
+  const cJSON *un = cJSON_GetObjectItemCaseSensitive(o, "unstable");
+  const cJSON *made = cJSON_GetObjectItemCaseSensitive(o, "energy_created");
   const cJSON *d = cJSON_GetObjectItemCaseSensitive(o, "delta_end");
   const cJSON *e = cJSON_GetObjectItemCaseSensitive(o, "error");
   const cJSON *s = cJSON_GetObjectItemCaseSensitive(o, "scene");
@@ -129,6 +131,9 @@ int ver_check_finished(const char *dir, int ours, char *scene, size_t slen, char
     snprintf(err, errlen, "%s: \"complete\" is %s, not true: the run's record is damaged; not judged", path, shown);
   } else if (!c && ours)
     snprintf(err, errlen, "%s: no \"complete\" key: the run's record is damaged; not judged", path);
+  else if (cJSON_IsTrue(un))
+    snprintf(err, errlen, "%s says unstable: true (the run made energy, %.3g of the largest work, and ran on under "
+             "--allow-unstable): not judged", path, cJSON_IsNumber(made) ? made->valuedouble : NAN);
   else
     rc = 0;
   cJSON_Delete(o);

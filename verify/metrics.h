@@ -110,6 +110,10 @@ int ver_gci(double f1, double f2, double f3, double r, double p_lo, double p_hi,
  * no energy at all. */
 /* The tolerance on it: verify's check and delam run's warning (over the whole run). */
 #define VER_ENERGY_TOL 0.02
+/* energy a run may make, KE + SE + W_coh above W_ext + E0, over the largest work: above it
+ * the run stopped as unstable (legitimate runs stay below 1e-9: their booked losses sum
+ * to >= 0) */
+#define VER_CREATED_TOL 0.1
 #define VER_ENERGY_COLS 11
 double ver_energy_residual(const double *const e[VER_ENERGY_COLS], size_t n, double E0, double *raw);
 

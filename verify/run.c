@@ -124,6 +124,8 @@ typedef struct {
   double vdt, last_snap, acc_g, acc_f, peak, dpeak;
   ver_sep sep;
   mpm_energy e0;                 /* the energies at the start                        */
+  double wmax;                   /* max(E0, |W_ext|) so far                          */
+  double made_at;                /* delta where the run first made VER_CREATED_TOL of it (-1) */
   /* vibration.mode > 0: zero crossings of the modal velocity give the period */
   double kmode, modal_prev, t_prev, cross_first, cross_last;
   long ncross;
@@ -161,6 +163,7 @@ static int run_setup(run_state *r, char *err, size_t errlen)
     r->last_snap = fmax(r->last_snap, r->vs->snap[i]);
   ver_scene_case_id(r->vs, r->id, sizeof r->id);
   mpm_sim_energy(r->s, &r->e0);
+  r->made_at = -1.0;
   r->kmode = sc->vib_mode * ANA_PI / sc->L;
   r->modal_prev = sc->vib_mode > 0 ? modal_velocity(r->s, r->kmode) : 0.0;
   r->cross_first = r->cross_last = -1.0;
@@ -197,6 +200,15 @@ static void take_step(run_state *r, ver_summary *u, double delta)
   r->acc_g = r->acc_f = 0.0;
   r->acc_n = 0;
   mpm_sim_energy(s, &w->e);
+  /* energy the run made: every booked loss is work taken out, so KE + SE + W_coh above
+   * W_ext + E0 is an unstable step (fig6 at 1 ppc past 0.64 of the CFL bound, once a
+   * particle separates) */
+  const double E0 = r->e0.KE + r->e0.SE;
+  r->wmax = fmax(r->wmax, fmax(E0, fabs(w->e.W_ext)));
+  const double made = r->wmax > 0.0 ? (w->e.KE + w->e.SE + w->e.W_coh - w->e.W_ext - E0) / r->wmax : 0.0;
+  u->energy_created = fmax(u->energy_created, made);
+  if (made > VER_CREATED_TOL && r->made_at < 0.0)
+    r->made_at = delta;
   if (r->vs->sc.vib_mode > 0) {
     const double a = modal_velocity(s, r->kmode);
     if ((a > 0.0) != (r->modal_prev > 0.0)) { /* a crossing, interpolated between rows */
@@ -398,6 +410,13 @@ static int run_loop(run_state *r, ver_summary *u, double w0, char *err, size_t e
     }
     const double delta = mpm_sim_delta(s);
     take_step(r, u, delta);
+    if (r->made_at >= 0.0 && !r->vs->allow_unstable) {
+      snprintf(err, errlen, "%s: the run made energy: KE + SE + W_coh exceeded W_ext + E0 by %.3g of the largest "
+               "work at delta = %g (an unstable step: try a smaller --dt or more particles per cell; "
+               "--allow-unstable runs on and marks the run unstable)", r->id, u->energy_created, r->made_at);
+      rc = 1;
+      break;
+    }
     if (o->write_files && take_snapshots(r, delta, err, errlen))
       rc = 1;
     if (!rc && u->delta_sep >= 0 && r->vs->stop_margin > 0 && delta >= u->delta_sep + r->vs->stop_margin &&
@@ -518,6 +537,7 @@ int ver_run(const ver_scene *vs, const ver_run_opts *o, ver_summary *u, char *er
     rc = run_loop(&r, u, w0, err, errlen);
     finish(&r, u, w0, c0);
     u->complete = rc == 0;
+    u->unstable = r.made_at >= 0.0; /* --allow-unstable ran on: the folder says so */
     if (o->write_files)
       rc = write_results(&r, u, rc, err, errlen);
   }

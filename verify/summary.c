@@ -35,6 +35,7 @@ static const struct {
   {"SE_final", offsetof(ver_summary, SE_final), F_DBL},
   {"energy_residual", offsetof(ver_summary, energy_residual), F_DBL},
   {"energy_unbooked", offsetof(ver_summary, energy_unbooked), F_DBL},
+  {"energy_created", offsetof(ver_summary, energy_created), F_DBL},
   {"L_bc_final", offsetof(ver_summary, L_bc_final), F_DBL},
   {"L_flip_final", offsetof(ver_summary, L_flip_final), F_DBL},
   {"L_scheme_final", offsetof(ver_summary, L_scheme_final), F_DBL},
@@ -134,6 +135,8 @@ int ver_summary_write(const char *dir, const ver_scene *vs, const ver_summary *u
   cJSON_AddStringToObject(o, "motion", ver_scene_word(vs, "grid", "motion"));
   cJSON_AddNumberToObject(o, "path_reach", vs->sc.path_reach);
   cJSON_AddBoolToObject(o, "complete", u->complete);
+  if (u->unstable)
+    cJSON_AddBoolToObject(o, "unstable", 1);
   if (errmsg && errmsg[0])
     cJSON_AddStringToObject(o, "error", errmsg);
   for (size_t i = 0; i < NNUMS; i++) {

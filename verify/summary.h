@@ -31,6 +31,9 @@ typedef struct {
   double energy_residual;        /* max |W_ext + E0 - KE - SE - W_coh - booked| / max(max W_ext, E0) over
                                     the rows: what the energy ledger does not explain */
   double energy_unbooked;        /* the same without the booked terms                */
+  double energy_created;         /* max (KE + SE + W_coh - W_ext - E0) / max(max W_ext, E0) over the
+                                    rows: energy the run made (an unstable step), >= 0 */
+  int unstable;                  /* 1: energy_created passed VER_CREATED_TOL (--allow-unstable) */
   double L_bc_final, L_flip_final, L_scheme_final, W_head_final, L_contact_final; /* the ledger (mpm.h) */
   double L_damp_final;           /* ... and what the local damping took (time.damping)           */
   double L_debris_final;         /* ... and what debris carried off the grid (mpm_step.c)        */

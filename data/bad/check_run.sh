@@ -11,7 +11,11 @@
 #   list-merge `verify --list` lines run by hand, then `verify --merge` checks them;
 #   uniform-bifurcation  fig6 without its flaw, static, h 8 and 4, and with a flaw of
 #              1e-6 at h 8: exit 1 naming the bifurcation, the linear branch's rows to it
-#              (det_sign +1) in load.csv and the tie in summary.json's critical_points.
+#              (det_sign +1) in load.csv and the tie in summary.json's critical_points;
+#   made-energy  fig6 at h 8, 1 ppc with dt 0.12 (0.7 of the CFL bound) blows up after
+#              separation (D 2.9 U0 H): exit 1 naming the energy made, complete: false; with
+#              --allow-unstable it runs on, summary.json says unstable: true and check
+#              refuses it (exit 2); the paper's dt 0.1 runs complete and stable.
 # Prints TAP; exits 1 if a check failed.
 set -u
 delam=${1:?usage: check_run.sh path/to/delam}
@@ -149,6 +153,26 @@ PY
   [ -z "$w" ] || why="$why; $w"
   result "uniform-bifurcation-h$h-flaw$f" "${why#; }"
 done
+
+# a blow-up never says complete: the run watches the energy it makes
+why=""
+"$delam" run "$fig6" --dt 0.12 --threads 1 --quiet --out "$tmp/made" >/dev/null 2>"$tmp/made.err"
+rc=$?
+[ "$rc" = 1 ] || why="dt 0.12: exit $rc, want 1"
+grep -q "made energy" "$tmp/made.err" || why="$why; no 'made energy' on stderr: $(head -c 200 "$tmp/made.err")"
+grep -q '"complete":[[:space:]]*false' "$tmp/made/summary.json" 2>/dev/null || why="$why; summary.json not complete: false"
+"$delam" run "$fig6" --dt 0.12 --allow-unstable --threads 1 --quiet --out "$tmp/madeu" >/dev/null 2>&1
+rc=$?
+[ "$rc" = 0 ] || why="$why; --allow-unstable: exit $rc, want 0"
+grep -q '"unstable":[[:space:]]*true' "$tmp/madeu/summary.json" 2>/dev/null || why="$why; summary.json not unstable: true"
+"$delam" check "$tmp/madeu" >/dev/null 2>&1
+rc=$?
+[ "$rc" = 2 ] || why="$why; check on the unstable folder: exit $rc, want 2"
+"$delam" run "$fig6" --threads 1 --quiet --out "$tmp/paper" >/dev/null 2>&1
+rc=$?
+[ "$rc" = 0 ] || why="$why; the paper's dt: exit $rc, want 0"
+grep -q '"unstable"' "$tmp/paper/summary.json" 2>/dev/null && why="$why; the paper's dt marked unstable"
+result made-energy "${why#; }"
 
 echo "1..$n"
 echo "# $((n - fail)) passed, $fail failed"
