@@ -66,6 +66,9 @@ static int check_line(parse_ctx *c, const char *s, size_t n)
   char *p = b;
   if (c->line == 1 && !strncmp(p, "\xEF\xBB\xBF", 3))
     p += 3; /* UTF-8 byte order mark: inih skips it too */
+  if (c->line == 1 && n >= 2 && (!memcmp(p, "\xFF\xFE", 2) || !memcmp(p, "\xFE\xFF", 2)))
+    return fail(c, "the file is UTF-16 text (its byte-order mark %s): save it as UTF-8 or ASCII",
+                p[0] == '\xFF' ? "FF FE" : "FE FF");
   for (char *e = p + strlen(p); e > p && isspace((unsigned char)e[-1]);)
     *--e = '\0';
   if (!*p || *p == ';' || *p == '#')

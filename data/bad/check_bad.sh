@@ -68,6 +68,9 @@ check opt-set-section "nosuch.E=1: unknown key (allowed sections: method, specim
 check opt-set-range "command line: material.nu: 0.5 is out of range (in (-1, 0.5))" "$fig6" --set material.nu=0.5
 check opt-set-junk "command line: material.E: '10x' is not a number" "$fig6" --set material.E=10x
 check opt-set-empty "command line: material.E: empty value" "$fig6" --set material.E=
+# a scene saved as UTF-16 (its byte-order mark names it, not a line's shape)
+{ printf '\xff\xfe'; cat "$fig6"; } >"$tmp/utf16.ini"
+check utf16 "utf16.ini:1: the file is UTF-16 text (its byte-order mark FF FE)" "$tmp/utf16.ini"
 check opt-set-damping-from "command line: time.damping_from: 'later' is not allowed (start" "$scenes/fig8.ini" --set time.damping_from=later
 check opt-set-imp-size "command line: imperfection.size: 'big' is not allowed (particle" "$scenes/fig7.ini" --set imperfection.size=big
 check opt-set-damping-limited "time.damping: 1.0472 needs grid.node_mass = lumped" "$scenes/fig8.ini" --set decohesion.path=line --set grid.shape=linear --set time.scheme=usl --set grid.node_mass=limited --set time.damping_beta=0
