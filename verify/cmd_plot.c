@@ -47,7 +47,8 @@ static void usage(FILE *f)
     "    cannot keep) marked;\n"
     "  - the crack front against delta where load.csv has crack_tip, with the branch's a;\n"
     "  - the energy ledger of energy.csv: W_ext, KE, SE, W_coh, D, the booked losses (the\n"
-    "    L_* columns and W_head) and the balance KE + SE + W_coh + booked - KE(0) - SE(0),\n"
+    "    L_* columns and W_head) and the balance KE + SE + W_coh + booked - E0 (E0 the\n"
+    "    first row's KE + SE + W_coh less its W_ext: the start's energy),\n"
     "    which lies on W_ext;\n"
     "  - in the title the folder, the scene, and delam check's verdict: DIR/check.json's\n"
     "    when it is there, else the check made now (into a temporary file: the folder is\n"
@@ -259,11 +260,12 @@ static void scene_and_state(const plot_opts *o, plot_run *p)
 }
 
 /* Where the load has died out for good (below 1 % of its peak from some row on, over a
- * third of the run), delta is drawn to 1.5 times the last row above it. */
+ * third of the run), delta is drawn to 1.5 times the largest delta of the rows up to the
+ * last one above it (a snapback's peak lies beyond its foot). */
 static void crop(plot_run *p)
 {
   const double *d = p->ld.col[L_D], *P = p->ld.col[L_P];
-  double pk = 0.0, dmax = d[0];
+  double pk = 0.0, dmax = d[0], dlive = 0.0;
   long last = 0;
   for (long i = 0; i < p->ld.n; i++) {
     pk = fmax(pk, fabs(P[i]));
@@ -272,11 +274,13 @@ static void crop(plot_run *p)
   for (long i = 0; i < p->ld.n; i++)
     if (fabs(P[i]) > 0.01 * pk)
       last = i;
+  for (long i = 0; i <= last; i++)
+    dlive = fmax(dlive, d[i]);
   p->xmax = NAN;
-  if (pk > 0.0 && d[last] > 0.0 && 1.5 * d[last] < 0.67 * dmax) {
-    p->xmax = 1.5 * d[last];
+  if (pk > 0.0 && dlive > 0.0 && 1.5 * dlive < 0.67 * dmax) {
+    p->xmax = 1.5 * dlive;
     snprintf(p->xnote, sizeof p->xnote, " - delta to %.4g of the run's %.4g: the load stays under 1 %% of its peak "
-             "after %.4g", p->xmax, dmax, d[last]);
+             "after delta %.4g", p->xmax, dmax, dlive);
   }
 }
 
@@ -339,7 +343,9 @@ static int gp_data(FILE *f, const plot_run *p)
     return 0;
   const int xk = en->n == ld->n ? 0 : en->col[E_T] ? 1 : 2;
   fputs("$en << EOD\n", f);
-  const double E0 = en->col[E_KE][0] + en->col[E_SE][0];
+  /* the start's energy: the first row's less the work done to it (a static run's first
+   * row is its first increment's state, not the start) */
+  const double E0 = en->col[E_KE][0] + en->col[E_SE][0] + en->col[E_WCOH][0] - en->col[E_W][0];
   for (long i = 0; i < en->n; i++) {
     double book = 0.0;
     for (int k = E_BOOK0; k < E_BOOK0 + E_NBOOK; k++)
@@ -380,7 +386,7 @@ static void gp_script(FILE *f, const plot_opts *o, const plot_run *p, const char
   wrap(t1, 120);
   gp_str(f, t1);
   /* headroom for the key above the curves */
-  fputs("\nset offsets 0, 0, graph 0.2, 0\nplot $load using 1:2 with lines lw 2 lc rgb '#1f4e9a' title 'this run (load.csv)'", f);
+  fputs("\nset offsets 0, 0, graph 0.3, 0\nplot $load using 1:2 with lines lw 2 lc rgb '#1f4e9a' title 'this run (load.csv)'", f);
   if (p->ld.col[L_DET]) /* the static solver's stability (docs/static.md, "Stability") */
     fprintf(f, ", $load using 1:($%d < 0 ? $2 : 1/0) with points pt 7 ps 0.6 lc rgb '#e67e22' title "
             "'det K < 0 (det_sign): a state a held grip cannot keep'", 3 + tip);
