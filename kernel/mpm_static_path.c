@@ -102,7 +102,11 @@ static void scale_to_initiation(mpm_static *q)
     q->tie = 0; /* no equal steps to a tie */
     return;
   }
-  const double k = kmin * (1.0 - 1e-12) / MPM_QS_NEL;
+  double k = kmin * (1.0 - 1e-12) / MPM_QS_NEL;
+  if (q->dt * k > s->sc.end_delta) { /* the run ends first: the linear state at its end */
+    k = s->sc.end_delta / q->dt;
+    q->tie = 0;
+  }
   for (size_t i = 0; i < 2 * q->nslot; i++)
     if (q->eq[i] >= 0)
       q->Ut[i] *= k;

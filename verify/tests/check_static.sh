@@ -12,7 +12,9 @@
 #   band-snapback       fig6's band with U0 0.125 (g 0.67), h 8 and 4: refused up front with
 #                       exit 2 and the reason, no folder written (it stalled at h 4 after
 #                       delta went to -0.018); the interface traces the same bar (curve_path
-#                       below 1e-5).
+#                       below 1e-5);
+#   tiny-end            fig6 static with end_delta 0.001 (below its first increment): ends at
+#                       delta 0.001 exactly with P = E H / L x 0.001 (it stopped at 0.021).
 # Prints TAP; exits 1 if a check failed.
 set -u
 delam=${1:?usage: check_static.sh DELAM SRC}
@@ -94,6 +96,20 @@ why=""
 [ $rc = 0 ] || why="exit status $rc: $(head -c 300 err.txt)"
 below "$cp" 1e-5 || why="$why; curve_path '$cp', want below 1e-5"
 result band-snapback-interface "${why#; }"
+
+# a run's end before its first increment's: the linear state there
+"$delam" run "$scenes/fig6.ini" --solver static --h 8 --ppc 4 --threads 1 --quiet --set run.end_delta=0.001 \
+  --out tiny >/dev/null 2>err.txt
+rc=$?
+why=""
+[ $rc = 0 ] || why="exit status $rc: $(head -c 300 err.txt)"
+last=$(grep -v '^#' tiny/load.csv 2>/dev/null | tail -1)
+w=$(echo "$last" | awk -F, -v E="$(sed -n 's/^E *= *//p' "$scenes/fig6.ini")" \
+  -v H="$(sed -n 's/^H *= *//p' "$scenes/fig6.ini")" -v L="$(sed -n 's/^L *= *//p' "$scenes/fig6.ini")" \
+  '{ if ($2 - 0.001 > 1e-12 || 0.001 - $2 > 1e-12) print "last delta " $2;
+     else if ($3 / (E * H / L * 0.001) - 1 > 1e-8 || 1 - $3 / (E * H / L * 0.001) > 1e-8) print "P " $3 " against " E * H / L * 0.001 }')
+[ -z "$w" ] || why="$why; $w"
+result tiny-end "${why#; }"
 
 echo "1..$n"
 echo "# $((n - fail)) passed, $fail failed"
