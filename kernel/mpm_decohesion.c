@@ -336,7 +336,7 @@ static inline mpm_status dcoh_step(const mpm_material *m, const mpm_dstate *in, 
     goto done;
   }
   if (info->path != MPM_DPATH_SOFTEN)
-    out->lam = in->lam + sqrt(dun * dun + dut * dut) / m->ubar0; /* d lambda = |d ud| / ubar0 */
+    out->lam = in->lam + mpm_law_open_dlam(dun, dut, m->ubar0); /* eq. 58 */
   out->upn = in->upn + dun;
   out->upt = in->upt + dut;
   /* Traction work, trapezoidal in the step: int s . d ud. */

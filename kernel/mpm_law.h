@@ -99,6 +99,12 @@ static inline void mpm_law_separate_dlam(double dun, double dut, int contact, do
   }
 }
 
+/* Once separated, lambda grows with the opening: d lambda = |d ud| / ubar0 (eq. 58). */
+static inline double mpm_law_open_dlam(double dun, double dut, double ubar0)
+{
+  return sqrt(dun * dun + dut * dut) / ubar0;
+}
+
 /* The closest-point return of Model 1 with an isotropic stiffness k on the plane (the
  * static interface's segments): the flow taken at the step's end, t = t_tr - k ubar0 dl
  * m*(t), m* = (s0 / se)(<tn> / snf^2, tt / stf^2) (eqs. 19, 24), gives each component its

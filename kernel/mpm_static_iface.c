@@ -404,7 +404,7 @@ static int seg_step(const mpm_material *m, const mpm_dstate *in, const double w[
     open = !mpm_law_return(in->lam, m->q, an, at, m->snf, m->stf, k0 * m->ubar0 * m->s0, &dl, &sn, &st, dsn, dst, gl);
   if (open && !sep)
     return 0;
-  if (open) { /* eqs. 56-58, with d lambda = |d ud| / ubar0 */
+  if (open) { /* eqs. 56-58 */
     double de_nn;
     const int contact = mpm_law_separate(an, at, k0, m->G, m->Lopen, in->upn, &de_nn, &dun, &dut);
     sn = an - k0 * de_nn;
@@ -412,7 +412,7 @@ static int seg_step(const mpm_material *m, const mpm_dstate *in, const double w[
     dsn[0] = contact;
     dst[1] = 0.0;
     mpm_law_separate_dlam(dun, dut, contact, k0, m->G, m->Lopen, m->ubar0, &gl[0], &gl[1]);
-    dl = sqrt(dun * dun + dut * dut) / m->ubar0;
+    dl = mpm_law_open_dlam(dun, dut, m->ubar0);
   } else {
     dun = (an - sn) / k0; /* t = t_tr - k0 d ud */
     dut = (at - st) / k0;
