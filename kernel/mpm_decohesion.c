@@ -205,22 +205,16 @@ static int solve_dl(const phi_ctx *c, double dlmax, double guess, mpm_dwork *w, 
   return 0;
 }
 
-/* Separation (eqs. 56-58), and every later step of a separated particle: release the
- * traction of the trial stress by a decohesion strain in the n-t frame.  In normal
- * compression the opening closes first (never below zero) and compression is carried. */
-static int separate(const mpm_material *m, nt_stress tr, double upn, nt_stress *s,
-                    double *dun, double *dut)
+/* Separation (eqs. 56-58, mpm_law_separate), and every later step of a separated particle:
+ * release the traction of the trial stress by a decohesion strain in the n-t frame.  In
+ * normal compression the opening closes first (never below zero) and compression is carried. */
+static int separate(const mpm_material *m, nt_stress tr, double upn, nt_stress *s, double *dun, double *dut)
 {
-  double de_nn = tr.nn / m->E1;                      /* eq. 57 */
-  const int contact = tr.nn < 0.0 && m->Lopen * de_nn < -upn;
-  if (contact)
-    de_nn = -upn / m->Lopen;                         /* contact: close no further than shut */
-  const double de_nt = tr.nt / (2.0 * m->G);         /* eq. 57 */
+  double de_nn;
+  const int contact = mpm_law_separate(tr.nn, tr.nt, m->E1, m->G, m->Lopen, upn, &de_nn, dun, dut);
   s->nn = tr.nn - m->E1 * de_nn;
   s->tt = tr.tt - m->E2 * de_nn;                     /* eq. 57 */
   s->nt = 0.0;
-  *dun = m->Lopen * de_nn;                           /* eq. 58 */
-  *dut = 2.0 * m->Lopen * de_nt;                     /* eq. 58, tensor shear: 2 Le de_nt */
   return contact;
 }
 
@@ -342,7 +336,7 @@ static inline mpm_status dcoh_step(const mpm_material *m, const mpm_dstate *in, 
     goto done;
   }
   if (info->path != MPM_DPATH_SOFTEN)
-    out->lam = in->lam + sqrt(dun * dun + dut * dut) / m->ubar0; /* d lambda = |d ud| / ubar0 */
+    out->lam = in->lam + mpm_law_open_dlam(dun, dut, m->ubar0); /* eq. 58 */
   out->upn = in->upn + dun;
   out->upt = in->upt + dut;
   /* Traction work, trapezoidal in the step: int s . d ud. */
@@ -497,11 +491,7 @@ static void tangent_nt(const mpm_material *m, const dcoh_trace *t, double A[3][3
     /* lambda = lambda_in + |d ud| / ubar0, d ud = Lopen (s_nn_tr / E1, s_nt_tr / G) (eq. 58;
      * in contact d ud_n is -ud_n, fixed) */
     const double dun = t->contact ? t->dun : m->Lopen * t->tr.nn / m->E1, dut = m->Lopen * t->tr.nt / m->G;
-    const double du = sqrt(dun * dun + dut * dut);
-    if (du > 0.0) {
-      L[0] = t->contact ? 0.0 : dun * m->Lopen / (m->E1 * du * m->ubar0);
-      L[2] = dut * m->Lopen / (m->G * du * m->ubar0);
-    }
+    mpm_law_separate_dlam(dun, dut, t->contact, m->E1, m->G, m->Lopen, m->ubar0, &L[0], &L[2]);
     /* eqs. 56-58: s_nt = 0; open, s_nn = 0 and s_tt = s_tt_tr - (E2/E1) s_nn_tr (eq. 57);
      * in contact de_nn is fixed by the opening, so s_nn and s_tt follow the trial. */
     A[2][2] = 0.0;

@@ -114,7 +114,7 @@ struct mpm_static {
   double *segx;           /* per segment: x of its first node                           */
   double *pD;             /* ... the area its dissipation counts (pA; 0 on a pre-crack)   */
   uint8_t *spre;          /* per segment: 1 on the pre-crack (open from the start)       */
-  mpm_material imat;      /* the law as a material of the update: E1 = G = k0, E2 = -k0, Le 1 */
+  mpm_material imat;      /* the line's law parameters (mpm_law.h): E1 = G = k0, Le 1, frame */
 };
 
 /* mpm_static_iface.c */
@@ -124,7 +124,7 @@ void mpm_static_iface_commit(mpm_static *q);
 int mpm_static_iface_sever(mpm_static *q); /* the unseparated segments let go in place */
 /* One segment's step of the line's law returned along the flow at the step's end, for a
  * jump increment w (x, y); the tangent S = d t / d w and gl = d lambda / d w; 0 where the
- * segment is separated or separates in the step (the particle update takes those). */
+ * segment is separated or separates in the step (the law's separation takes those). */
 int mpm_static_seg_law(const mpm_material *m, const mpm_dstate *in, const double w[2], mpm_dstate *out, double *work,
                        double S[2][2], double gl[2]);
 /* the segments' entries of the tangent's pattern from map position k; returns the next */

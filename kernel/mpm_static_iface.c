@@ -9,8 +9,8 @@
  * A_I t(W_seg) + T_I k0 (W_I - W_seg), a stiff tie on its departure from the mean.
  * The law (mpm_law.h; eqs. 19, 23-24, 56-58): an elastic tie of k0 = MPM_QS_TIE E / L per
  * unit area before the onset; then the traction softens with the opening to zero at
- * lambda 1, returned along the flow at the step's end (mpm_static_seg_law); a segment that
- * separates takes the particle update (E1 = G = k0, Le 1: the "strain" is the jump).
+ * lambda 1, returned along the flow at the step's end (mpm_law_return); a segment that
+ * separates releases its traction into the opening (mpm_law_separate).
  */
 #include <math.h>
 #include <stdio.h>
@@ -315,8 +315,9 @@ mpm_status mpm_static_iface_setup(mpm_static *q, char *err, size_t errlen)
         *nd += (int)nn;
     }
   }
-  /* the law as a material of the update: the bar's strengths and U0; isotropic
-   * (E1 - E2 = 2 G), as the update's n-t frame needs: s_nn = k0 w_n, s_nt = k0 w_t */
+  /* the line's parameters for the law (mpm_law.h) and the path's control
+   * (mpm_dcoh_F): the frame, the bar's strengths and U0, the tie k0 = E1 = G (s_nn =
+   * k0 w_n, s_nt = k0 w_t), an opening Le of 1 (the "strain" is the jump) */
   mpm_material *m = &q->imat;
   *m = s->mat[MPM_MAT_BAR];
   m->model = s->sc.model;
@@ -328,15 +329,6 @@ mpm_status mpm_static_iface_setup(mpm_static *q, char *err, size_t errlen)
   m->stf = s->sc.stf * s->sc.imp_stf_factor;
   mpm_material_derive(m);
   return MPM_OK;
-}
-
-/* The strain the update sees for a jump (wx, wy): e_nn = w . n, e_nt = w . t / 2, e_tt = 0. */
-static void jump_strain(const mpm_material *m, double wx, double wy, double de[3])
-{
-  const double en = m->nx * wx + m->ny * wy, et = 0.5 * (m->tx * wx + m->ty * wy);
-  de[0] = en * m->nx * m->nx + 2.0 * et * m->nx * m->tx;
-  de[1] = en * m->ny * m->ny + 2.0 * et * m->ny * m->ty;
-  de[2] = en * m->nx * m->ny + et * (m->nx * m->ty + m->ny * m->tx);
 }
 
 /* The unknown of component c (0-3: near x, near y, far x, far y) of node nd. */
@@ -387,33 +379,17 @@ static void jump(const mpm_static *q, int nd, double W[2], double w[2])
 }
 
 
-/* psi(dl) = se / S - 1 at the step's end (eq. 23, mpm_law_se's quantity), S = 1 -
- * (lambda + dl)^q: the trial traction (an, at) against the strengths scaled by S + cn dl
- * and S + ct dl; decreasing in dl (mpm_static_seg_law).  Written with hypot and pow, the
- * arithmetic the static runs are measured with (docs/findings.md, "The static solver"). */
-static double seg_psi(const mpm_material *m, double lam, double an, double at, double cn, double ct, double dl)
-{
-  const double S = 1.0 - pow(lam + dl, m->q);
-  return hypot(an > 0.0 ? an / (m->snf * (S + cn * dl)) : 0.0, at / (m->stf * (S + ct * dl))) - 1.0;
-}
-
-/* The law's step on a segment, returned to the strength along the flow at the end of the
- * step (closest point): the particle update freezes the flow direction m* at its elastic
- * trial (secs. 3-4), which is first order in the trial's excess over the strength; the
+/* The law's step on a segment (mpm_law.h), with the flow at the end of the step
+ * (mpm_law_return, closest point): the particle update freezes the flow direction m* at
+ * its elastic trial (secs. 3-4), first order in the trial's excess over the strength; the
  * tie's stiffness k0 puts a segment's trial k0 |w| thousands of times past it, where the
  * frozen direction is almost the larger component's alone (fig8's normal opening came out
- * 1e-4 of eq. 19's).  Model 1 with isotropic k0 (E1 = G): t = t_tr - k0 ubar0 dl m*(t),
- * m* = (s0 / se)(<sn> / snf^2, st / stf^2) (eqs. 19, 24), so with S = 1 - (lambda + dl)^q
- * (eq. 23 at the end) each component is its trial over 1 + c dl / S, c = k0 ubar0 s0 /
- * s_f^2, and eq. 23 is one equation in dl, solved by bisection.  Elastic and softening
- * steps only: 0 where the segment is separated or separates in the step (no root), which
- * the particle update takes.  Out: the state, the work, and with S_out the tangent
- * d t / d w (x-y) and d lambda / d w. */
-int mpm_static_seg_law(const mpm_material *m, const mpm_dstate *in, const double w[2], mpm_dstate *out, double *work,
-                       double Sx[2][2], double glx[2])
+ * 1e-4 of eq. 19's).  A segment separated, or opening past separation in the step, with
+ * sep set, takes the law's separation (eqs. 56-58, mpm_law_separate); without, 0 there.
+ * Out: the state, the work, the tangent d t / d w (x-y) and d lambda / d w. */
+static int seg_step(const mpm_material *m, const mpm_dstate *in, const double w[2], int sep, mpm_dstate *out,
+                    double *work, double Sx[2][2], double glx[2])
 {
-  if (in->sep)
-    return 0;
   const double nx = m->nx, ny = m->ny, tx = m->tx, ty = m->ty, k0 = m->E1;
   nt_stress s0;
   s0.nn = in->sxx * nx * nx + 2.0 * in->sxy * nx * ny + in->syy * ny * ny;
@@ -421,44 +397,29 @@ int mpm_static_seg_law(const mpm_material *m, const mpm_dstate *in, const double
   s0.tt = in->sxx * tx * tx + 2.0 * in->sxy * tx * ty + in->syy * ty * ty;
   const double wn = w[0] * nx + w[1] * ny, wt = w[0] * tx + w[1] * ty;
   const double an = s0.nn + k0 * wn, at = s0.nt + k0 * wt; /* the elastic trial, eq. 7 */
-  double sn = an, st = at, dl = 0.0, dldn = 0.0, dldt = 0.0, dsn[2] = {1.0, 0.0}, dst[2] = {0.0, 1.0};
-  if (mpm_law_se(an > 0.0 ? an / m->snf : 0.0, at / m->stf) > mpm_law_S(in->lam, m->q)) { /* eq. 23 */
-    /* k0 ubar0 s0 times the flow per unit traction (eq. 24), in compression none */
-    const double K = k0 * m->ubar0 * m->s0, cn = an > 0.0 ? K / (m->snf * m->snf) : 0.0, ct = K / (m->stf * m->stf);
-    const double hi0 = 1.0 - in->lam;
-    if (!(hi0 > 0.0) || seg_psi(m, in->lam, an, at, cn, ct, hi0) >= 0.0)
-      return 0; /* the step opens past separation */
-    double lo = 0.0, hi = hi0;
-    for (int it = 0; it < 200 && hi - lo > 1e-15 * hi0; it++) {
-      const double mid = 0.5 * (lo + hi);
-      if (seg_psi(m, in->lam, an, at, cn, ct, mid) > 0.0)
-        lo = mid;
-      else
-        hi = mid;
-    }
-    dl = 0.5 * (lo + hi);
-    const double lq = in->lam + dl, S = 1.0 - pow(lq, m->q), Sp = -m->q * pow(lq, m->q - 1.0);
-    const double Dn = S + cn * dl, Dt = S + ct * dl;
-    sn = an * S / Dn;
-    st = at * S / Dt;
-    /* the tangent: implicit differentiation of psi(dl; an, at) = 0 */
-    const double un = an > 0.0 ? an / (m->snf * Dn) : 0.0, ut = at / (m->stf * Dt);
-    const double pn = an > 0.0 ? un / (m->snf * Dn) : 0.0, pt = ut / (m->stf * Dt);
-    const double pd = -un * un * (Sp + cn) / Dn - ut * ut * (Sp + ct) / Dt;
-    dldn = -pn / pd;
-    dldt = -pt / pd;
-    const double gn = S / Dn, gnp = cn * (Sp * dl - S) / (Dn * Dn);
-    const double gt = S / Dt, gtp = ct * (Sp * dl - S) / (Dt * Dt);
-    if (an > 0.0) {
-      dsn[0] = gn + an * gnp * dldn;
-      dsn[1] = an * gnp * dldt;
-    }
-    dst[0] = at * gtp * dldn;
-    dst[1] = gt + at * gtp * dldt;
+  double sn = an, st = at, dl = 0.0, dun = 0.0, dut = 0.0, gl[2] = {0.0, 0.0};
+  double dsn[2] = {1.0, 0.0}, dst[2] = {0.0, 1.0};
+  int open = in->sep;
+  if (!open && mpm_law_se(an > 0.0 ? an / m->snf : 0.0, at / m->stf) > mpm_law_S(in->lam, m->q)) /* eq. 23 */
+    open = !mpm_law_return(in->lam, m->q, an, at, m->snf, m->stf, k0 * m->ubar0 * m->s0, &dl, &sn, &st, dsn, dst, gl);
+  if (open && !sep)
+    return 0;
+  if (open) { /* eqs. 56-58 */
+    double de_nn;
+    const int contact = mpm_law_separate(an, at, k0, m->G, m->Lopen, in->upn, &de_nn, &dun, &dut);
+    sn = an - k0 * de_nn;
+    st = 0.0;
+    dsn[0] = contact;
+    dst[1] = 0.0;
+    mpm_law_separate_dlam(dun, dut, contact, k0, m->G, m->Lopen, m->ubar0, &gl[0], &gl[1]);
+    dl = mpm_law_open_dlam(dun, dut, m->ubar0);
+  } else {
+    dun = (an - sn) / k0; /* t = t_tr - k0 d ud */
+    dut = (at - st) / k0;
   }
-  const double dun = (an - sn) / k0, dut = (at - st) / k0; /* t = t_tr - k0 d ud */
   const nt_stress s1 = {sn, s0.tt + m->E2 * (wn - dun), st}; /* s_tt: the frame's, unused by the law */
   *out = *in;
+  out->sep = open;
   out->lam = in->lam + dl;
   out->upn = in->upn + dun;
   out->upt = in->upt + dut;
@@ -472,13 +433,21 @@ int mpm_static_seg_law(const mpm_material *m, const mpm_dstate *in, const double
     const double dsnw = dsn[0] * dnw[c] + dsn[1] * dtw[c], dstw = dst[0] * dnw[c] + dst[1] * dtw[c];
     Sx[0][c] = dsnw * nx + dstw * tx;
     Sx[1][c] = dsnw * ny + dstw * ty;
-    glx[c] = dldn * dnw[c] + dldt * dtw[c];
+    glx[c] = gl[0] * dnw[c] + gl[1] * dtw[c];
   }
   return 1;
 }
 
+/* Elastic and softening steps (seg_step); 0 where the segment is separated or separates
+ * in the step. */
+int mpm_static_seg_law(const mpm_material *m, const mpm_dstate *in, const double w[2], mpm_dstate *out, double *work,
+                       double Sx[2][2], double glx[2])
+{
+  return seg_step(m, in, w, 0, out, work, Sx, glx);
+}
+
 /* One segment's law and its nodes' forces; with the tangent, its entries. */
-static void segment_eval(mpm_static *q, int g, int tangent, double *Ax, double J[3][2])
+static void segment_eval(mpm_static *q, int g, int tangent, double *Ax)
 {
   const mpm_material *m = &q->imat;
   const double Ag = q->pA[g], Tg = q->pT[g], k0 = m->E1;
@@ -501,14 +470,8 @@ static void segment_eval(mpm_static *q, int g, int tangent, double *Ax, double J
       Wt[c] += Ti / Tg * W[c];
     }
   }
-  double de[3], S[2][2], gl[2], wk = 0.0;
-  jump_strain(m, ws[0], ws[1], de);
-  const int closest = mpm_static_seg_law(m, &q->pst[g], ws, &q->ptr[g], &wk, S, gl);
-  if (!closest) {
-    mpm_dinfo info;
-    mpm_dcoh_update(m, &q->pst[g], de, &q->ptr[g], &info, q->dw);
-    wk = info.w;
-  }
+  double S[2][2], gl[2], wk = 0.0;
+  seg_step(m, &q->pst[g], ws, 1, &q->ptr[g], &wk, S, gl);
   const mpm_dstate *o = &q->ptr[g];
   q->pw[g] = wk * Ag;
   /* node I: A_I (t + k0 (W_I - W_seg)): the law on the segment's mean, a tie on the rest */
@@ -525,17 +488,6 @@ static void segment_eval(mpm_static *q, int g, int tangent, double *Ax, double J
   }
   if (!tangent)
     return;
-  double Dm[3][3], dl[3];
-  if (!closest)
-    mpm_dcoh_tangent(m, &q->pst[g], de, Dm, dl, q->dw);
-  for (int c = 0; c < 2 && !closest; c++) { /* S = d t / d w, gl = d lambda / d w */
-    double dsg[3];
-    for (int i = 0; i < 3; i++)
-      dsg[i] = Dm[i][0] * J[0][c] + Dm[i][1] * J[1][c] + Dm[i][2] * J[2][c];
-    S[0][c] = dsg[0] * m->nx + dsg[2] * m->ny;
-    S[1][c] = dsg[2] * m->nx + dsg[1] * m->ny;
-    gl[c] = dl[0] * J[0][c] + dl[1] * J[1][c] + dl[2] * J[2][c];
-  }
   size_t k = q->kseg[g];
   for (int a = a0; a < a1; a++)
     for (int b = a0; b < a1; b++) {
@@ -587,17 +539,8 @@ static double line_dissipation(const mpm_static *q, const mpm_dstate *st)
 
 void mpm_static_iface_eval(mpm_static *q, int tangent, double *Ax, double *D, double *C)
 {
-  const mpm_material *m = &q->imat;
-  double J[3][2]; /* d de / d w, columns for wx and wy */
-  double a[3], b[3];
-  jump_strain(m, 1.0, 0.0, a);
-  jump_strain(m, 0.0, 1.0, b);
-  for (int i = 0; i < 3; i++) {
-    J[i][0] = a[i];
-    J[i][1] = b[i];
-  }
   for (int g = 0; g < q->nseg; g++)
-    segment_eval(q, g, tangent, Ax, J);
+    segment_eval(q, g, tangent, Ax);
   *D = *C = line_dissipation(q, q->ptr); /* the control counts what D does */
 }
 
@@ -634,9 +577,9 @@ void mpm_static_iface_commit(mpm_static *q)
 }
 
 /* Below MPM_QS_SEP of the peak, where no increment is found: each segment not yet
- * separated lets go in place, its traction turned into opening (eq. 58 with no jump
- * increment: ud += t / k0) and its lambda set to 1, so that D is U0 times the crack's
- * area; the work its remaining traction would have done (at most that share of U0 for
+ * separated lets go in place, its traction turned into opening by the law's separation
+ * with no jump increment (eqs. 56-58: ud += t / k0) and its lambda set to 1, so that D is
+ * U0 times the crack's area; the work its remaining traction would have done (at most that share of U0 for
  * the segment) is not booked.  The number of segments that let go; the bar is cut if
  * any did. */
 int mpm_static_iface_sever(mpm_static *q)
@@ -648,9 +591,13 @@ int mpm_static_iface_sever(mpm_static *q)
     if (o->sep || !(q->pA[g] > 0.0))
       continue;
     nt_stress t = mpm_to_nt(m, o->sxx, o->syy, o->sxy);
-    o->upn += t.nn / m->E1;
-    o->upt += t.nt / m->G;
-    t.nn = t.nt = 0.0;
+    double de_nn, dun, dut;
+    mpm_law_separate(t.nn, t.nt, m->E1, m->G, m->Lopen, o->upn, &de_nn, &dun, &dut);
+    o->upn += dun;
+    o->upt += dut;
+    t.nn -= m->E1 * de_nn;
+    t.tt -= m->E2 * de_nn;
+    t.nt = 0.0;
     mpm_from_nt(m, t, o);
     o->lam = fmax(o->lam, 1.0);
     o->sep = 1;

@@ -401,7 +401,7 @@ static void test_mpm_static_seg_law(void **state)
           mpm_dstate out;
           double wk, S[2][2], gl[2];
           if (!mpm_static_seg_law(&m, &in, w, &out, &wk, S, gl))
-            continue; /* past separation: the particle update's */
+            continue; /* past separation: the law's separation */
           if (!(out.lam > lam))
             continue; /* elastic (closing) */
           cases++;
