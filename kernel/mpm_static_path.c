@@ -161,6 +161,10 @@ static int turns(const mpm_static *q)
   if (s->step < MPM_QS_NEL || !(q->pk_d > 0.0) || !(s->P_peak > 0.0))
     return 0;
   const double ax = q->ch_d, ay = q->ch_P, bx = (q->dt - q->dn) / q->pk_d, by = (q->Pg - s->P_grip) / s->P_peak;
+  /* past the peak with the load below 1 % of it on both ends: no corner a curve shows
+   * (the load curve's judgement ends there, ver_curve_path) */
+  if (fabs(s->P_grip) < 0.01 * s->P_peak && fabs(q->Pg) < 0.01 * s->P_peak)
+    return 0;
   const double la = hypot(ax, ay), lb = hypot(bx, by);
   if (!(la > 0.0) || !(lb > 1e-4)) /* a short chord: no corner to resolve */
     return 0;
