@@ -38,6 +38,8 @@
 #define MPM_QS_PUSH 0.01  /* of the peak: an interface's load below minus this stops the run */
 #define MPM_QS_LEDGER 1e-4 /* of the largest W_ext: W_ext - SE - W_coh beyond this stops the run */
 #define MPM_QS_KICK 1e-4  /* of delta: the first grip increment that starts the softening     */
+#define MPM_QS_KICKCUT 0.0625 /* a failed kick is retried at this share of its size: at a snapback's
+                                 peak Newton finds a state only near 1e-8 of delta            */
 
 /* The path's states, from the control's flags (a kick is always under the dissipation's
  * mode; the first increment, before the linear branch is scaled, is linear). */
@@ -239,7 +241,7 @@ static void shrink(mpm_static *q)
   q->st.cuts++;
   const int st = path_state(q);
   if (st == PATH_KICK) {
-    q->kick_d *= 0.5;
+    q->kick_d *= MPM_QS_KICKCUT;
   } else if (st == PATH_DISSIPATION) {
     q->step_D *= 0.5;
     if (q->step_D < 1e-9 * q->Dref)
@@ -322,7 +324,7 @@ static int attempt(mpm_static *q, int *iters)
     if (q->nkick < 3) {
       q->kick = 1;
       /* a kick after a kick starts from the size that passed (at a snapback's peak
-       * the first is halved from 1e-4 of delta to 1e-8 before Newton finds a state) */
+       * the first is cut from 1e-4 of delta to about 1e-8 before Newton finds a state) */
       q->kick_d = q->nkick > 0 ? q->kick_d : MPM_QS_KICK * q->dn;
     } else
       set_mode(q, MPM_QS_GRIP);
