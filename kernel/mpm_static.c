@@ -21,7 +21,6 @@
 
 #define MPM_QS_FTOL 1e-9
 #define MPM_QS_DTOL 1e-10
-#define MPM_QS_MAXIT 25   /* Newton iterations an increment may take                */
 #define MPM_QS_CYCLE 1e-3 /* relative: merits this close two iterations apart are a cycle */
 #define MPM_QS_LS 8       /* halvings of a Newton step that raises the residual      */
 

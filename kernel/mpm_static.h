@@ -143,6 +143,7 @@ int mpm_static_iface_piece(const mpm_static *q, int i, double xy[4], double *lam
  * path control that calls them: mpm_static_path.c (mpm_static_step). */
 #define MPM_QS_CMIN 1e-12 /* of U0 H / sin a: less dissipated is nothing (rounding)     */
 #define MPM_QS_NEL 8      /* equal increments of the linear branch up to the first initiation */
+#define MPM_QS_MAXIT 25   /* Newton iterations an increment may take                */
 int mpm_static_increment(mpm_static *q, int *iters);
 mpm_status mpm_static_predict(mpm_static *q);
 void mpm_static_commit(mpm_static *q);

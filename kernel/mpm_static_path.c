@@ -38,8 +38,10 @@
 #define MPM_QS_PUSH 0.01  /* of the peak: an interface's load below minus this stops the run */
 #define MPM_QS_LEDGER 1e-4 /* of the largest W_ext: W_ext - SE - W_coh beyond this stops the run */
 #define MPM_QS_KICK 1e-4  /* of delta: the first grip increment that starts the softening     */
-#define MPM_QS_KICKCUT 0.0625 /* a failed kick is retried at this share of its size: at a snapback's
-                                 peak Newton finds a state only near 1e-8 of delta            */
+#define MPM_QS_DEEPCUT 0.0625 /* a failed kick, or a dissipation increment whose Newton ran to its
+                                 limit without cycling, is retried at this share of its size:
+                                 at a snapback's peak a kick passes only near 1e-8 of delta, at
+                                 a band's onset the dissipation step near 1e-6 of Dref         */
 
 /* The path's states, from the control's flags (a kick is always under the dissipation's
  * mode; the first increment, before the linear branch is scaled, is linear). */
@@ -235,15 +237,16 @@ static mpm_status pin(mpm_static *q, char *err, size_t errlen)
   return mpm_static_number(q, err, errlen);
 }
 
-/* A failed increment: the current control's step halved. */
-static void shrink(mpm_static *q)
+/* A failed increment after iters Newton iterations: the current control's step halved,
+ * or cut deeper (MPM_QS_DEEPCUT). */
+static void shrink(mpm_static *q, int iters)
 {
   q->st.cuts++;
   const int st = path_state(q);
   if (st == PATH_KICK) {
-    q->kick_d *= MPM_QS_KICKCUT;
+    q->kick_d *= MPM_QS_DEEPCUT;
   } else if (st == PATH_DISSIPATION) {
-    q->step_D *= 0.5;
+    q->step_D *= iters >= MPM_QS_MAXIT ? MPM_QS_DEEPCUT : 0.5;
     if (q->step_D < 1e-9 * q->Dref)
       set_mode(q, MPM_QS_GRIP);
   } else {
@@ -341,7 +344,7 @@ static int attempt(mpm_static *q, int *iters)
     return 0;
   }
   if (r != 1)
-    shrink(q);
+    shrink(q, *iters);
   return r == 1;
 }
 
