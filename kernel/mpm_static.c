@@ -231,7 +231,10 @@ static int increment(mpm_static *q, int *iters)
     }
     if (m0 <= 1.0)
       return 1;
-    if (it + 1 >= MPM_QS_MAXIT || cycles(mh, it) || factor(q) != MPM_OK)
+    /* C answers nothing at the trial (no point softens: ga and gb 0): the constraint's
+     * denominator below is 0 whatever the factors, so the increment fails unfactorized */
+    if (it + 1 >= MPM_QS_MAXIT || cycles(mh, it) || (!grip && q->gb == 0.0 && norm_inf(q->ga, n) == 0.0) ||
+        factor(q) != MPM_OK)
       return 0;
     for (int i = 0; i < n; i++)
       q->x1[i] = -q->R[i];
