@@ -38,7 +38,7 @@
 #define MPM_QS_PUSH 0.01  /* of the peak: an interface's load below minus this stops the run */
 #define MPM_QS_LEDGER 1e-4 /* of the largest W_ext: W_ext - SE - W_coh beyond this stops the run */
 #define MPM_QS_KICK 1e-4  /* of delta: the first grip increment that starts the softening     */
-#define MPM_QS_DEEPCUT 0.0625 /* a failed kick, or a dissipation increment whose Newton ran to its
+#define MPM_QS_DEEPCUT 0.125  /* a failed kick, or a dissipation increment whose Newton ran to its
                                  limit without cycling, is retried at this share of its size:
                                  at a snapback's peak a kick passes only near 1e-8 of delta, at
                                  a band's onset the dissipation step near 1e-6 of Dref         */
