@@ -247,7 +247,11 @@ static void shrink(mpm_static *q, int iters)
     q->kick_d *= MPM_QS_DEEPCUT;
   } else if (st == PATH_DISSIPATION) {
     q->step_D *= iters >= MPM_QS_MAXIT ? MPM_QS_DEEPCUT : 0.5;
-    if (q->step_D < 1e-9 * q->Dref)
+    /* the grip leads where the step falls below 1e-9 of Dref, or below MPM_QS_RESUME of it
+     * with the load under 1 % of the peak (the line's last dissipation, past the curve's
+     * judged part: there Newton cycles on the smaller steps) */
+    const double low = fabs(q->s->P_grip) < 0.01 * q->s->P_peak ? MPM_QS_RESUME : 1e-9;
+    if (q->step_D < low * q->Dref)
       set_mode(q, MPM_QS_GRIP);
   } else {
     q->step_d *= 0.5;
