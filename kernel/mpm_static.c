@@ -21,7 +21,6 @@
 
 #define MPM_QS_FTOL 1e-9
 #define MPM_QS_DTOL 1e-10
-#define MPM_QS_MAXIT 25   /* Newton iterations an increment may take                */
 #define MPM_QS_CYCLE 1e-3 /* relative: merits this close two iterations apart are a cycle */
 #define MPM_QS_LS 8       /* halvings of a Newton step that raises the residual      */
 
@@ -120,8 +119,12 @@ static double norm_inf(const double *a, int n)
   return d;
 }
 
+/* The tangent's LU; the factors held are kept where the values did not change (the
+ * linear branch, an elastic stretch, the parts after the cut): the same bits. */
 static mpm_status factor(mpm_static *q)
 {
+  if (mpm_lin_same(q->lin))
+    return MPM_OK;
   const double t0 = mpm_wall();
   const mpm_status st = mpm_lin_factor(q->lin);
   q->st.t_factor += mpm_wall() - t0;
@@ -232,7 +235,10 @@ static int increment(mpm_static *q, int *iters)
     }
     if (m0 <= 1.0)
       return 1;
-    if (it + 1 >= MPM_QS_MAXIT || cycles(mh, it) || factor(q) != MPM_OK)
+    /* C answers nothing at the trial (no point softens: ga and gb 0): the constraint's
+     * denominator below is 0 whatever the factors, so the increment fails unfactorized */
+    if (it + 1 >= MPM_QS_MAXIT || cycles(mh, it) || (!grip && q->gb == 0.0 && norm_inf(q->ga, n) == 0.0) ||
+        factor(q) != MPM_OK)
       return 0;
     for (int i = 0; i < n; i++)
       q->x1[i] = -q->R[i];

@@ -21,6 +21,8 @@ size_t mpm_lin_nnz(const mpm_lin *l);
 /* LU of the values (the pattern's ordering is computed once); MPM_ENOTFINITE when the
  * matrix is singular or not finite. */
 mpm_status mpm_lin_factor(mpm_lin *l);
+/* 1 if the factors held are of the values as they are now (bit for bit). */
+int mpm_lin_same(const mpm_lin *l);
 /* x = A^-1 b with the last factors; x and b may not alias. */
 mpm_status mpm_lin_solve(mpm_lin *l, const double *b, double *x);
 /* The sign of the last factors' determinant (+1, -1; 0: none held). */
@@ -143,6 +145,7 @@ int mpm_static_iface_piece(const mpm_static *q, int i, double xy[4], double *lam
  * path control that calls them: mpm_static_path.c (mpm_static_step). */
 #define MPM_QS_CMIN 1e-12 /* of U0 H / sin a: less dissipated is nothing (rounding)     */
 #define MPM_QS_NEL 8      /* equal increments of the linear branch up to the first initiation */
+#define MPM_QS_MAXIT 25   /* Newton iterations an increment may take                */
 int mpm_static_increment(mpm_static *q, int *iters);
 mpm_status mpm_static_predict(mpm_static *q);
 void mpm_static_commit(mpm_static *q);

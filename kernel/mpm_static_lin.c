@@ -39,6 +39,7 @@ struct mpm_lin {
   klu_symbolic *ks;        /* the ordering (KLU)                                          */
   klu_numeric *kn;         /* the factors (KLU)                                           */
   int held;                /* 1: the last factorization succeeded                         */
+  double *Axf;             /* the values it factorized (mpm_lin_same)                     */
   unsigned char *seen;     /* n: a permutation's cycles (mpm_lin_det_sign)                */
 };
 
@@ -55,6 +56,7 @@ void mpm_lin_free(mpm_lin *l)
   free(l->Ap);
   free(l->Ai);
   free(l->Ax);
+  free(l->Axf);
   free(l->seen);
   free(l);
 }
@@ -75,8 +77,9 @@ mpm_lin *mpm_lin_alloc(int n, size_t nz, const int *ti, const int *tj, int *map)
   }
   const size_t nnz = (size_t)l->Ap[n];
   l->Ax = calloc(nnz ? nnz : 1, sizeof(double));
+  l->Axf = calloc(nnz ? nnz : 1, sizeof(double));
   l->seen = malloc((size_t)n + 1);
-  if (!l->Ax || !l->seen) {
+  if (!l->Ax || !l->Axf || !l->seen) {
     mpm_lin_free(l);
     return NULL;
   }
@@ -153,11 +156,16 @@ static mpm_status factor_klu(mpm_lin *l)
 mpm_status mpm_lin_factor(mpm_lin *l)
 {
   l->held = 0;
-  if (!l->AB)
-    return factor_klu(l);
-  const mpm_status st = factor_band(l);
-  l->held = st == MPM_OK;
+  const mpm_status st = l->AB ? factor_band(l) : factor_klu(l);
+  l->held = st == MPM_OK && (l->AB || l->held);
+  if (l->held)
+    memcpy(l->Axf, l->Ax, sizeof(double) * mpm_lin_nnz(l));
   return st;
+}
+
+int mpm_lin_same(const mpm_lin *l)
+{
+  return l->held && memcmp(l->Axf, l->Ax, sizeof(double) * mpm_lin_nnz(l)) == 0;
 }
 
 mpm_status mpm_lin_solve(mpm_lin *l, const double *b, double *x)

@@ -38,6 +38,10 @@
 #define MPM_QS_PUSH 0.01  /* of the peak: an interface's load below minus this stops the run */
 #define MPM_QS_LEDGER 1e-4 /* of the largest W_ext: W_ext - SE - W_coh beyond this stops the run */
 #define MPM_QS_KICK 1e-4  /* of delta: the first grip increment that starts the softening     */
+#define MPM_QS_DEEPCUT 0.125  /* a failed kick, or a dissipation increment whose Newton ran to its
+                                 limit without cycling, is retried at this share of its size:
+                                 at a snapback's peak a kick passes only near 1e-8 of delta, at
+                                 a band's onset the dissipation step near 1e-6 of Dref         */
 
 /* The path's states, from the control's flags (a kick is always under the dissipation's
  * mode; the first increment, before the linear branch is scaled, is linear). */
@@ -165,6 +169,10 @@ static int turns(const mpm_static *q)
   if (s->step < MPM_QS_NEL || !(q->pk_d > 0.0) || !(s->P_peak > 0.0))
     return 0;
   const double ax = q->ch_d, ay = q->ch_P, bx = (q->dt - q->dn) / q->pk_d, by = (q->Pg - s->P_grip) / s->P_peak;
+  /* past the peak with the load below 1 % of it on both ends: no corner a curve shows
+   * (the load curve's judgement ends there, ver_curve_path) */
+  if (fabs(s->P_grip) < 0.01 * s->P_peak && fabs(q->Pg) < 0.01 * s->P_peak)
+    return 0;
   const double la = hypot(ax, ay), lb = hypot(bx, by);
   if (!(la > 0.0) || !(lb > 1e-4)) /* a short chord: no corner to resolve */
     return 0;
@@ -233,16 +241,21 @@ static mpm_status pin(mpm_static *q, char *err, size_t errlen)
   return mpm_static_number(q, err, errlen);
 }
 
-/* A failed increment: the current control's step halved. */
-static void shrink(mpm_static *q)
+/* A failed increment after iters Newton iterations: the current control's step halved,
+ * or cut deeper (MPM_QS_DEEPCUT). */
+static void shrink(mpm_static *q, int iters)
 {
   q->st.cuts++;
   const int st = path_state(q);
   if (st == PATH_KICK) {
-    q->kick_d *= 0.5;
+    q->kick_d *= MPM_QS_DEEPCUT;
   } else if (st == PATH_DISSIPATION) {
-    q->step_D *= 0.5;
-    if (q->step_D < 1e-9 * q->Dref)
+    q->step_D *= iters >= MPM_QS_MAXIT ? MPM_QS_DEEPCUT : 0.5;
+    /* the grip leads where the step falls below 1e-9 of Dref, or below MPM_QS_RESUME of it
+     * with the load under 1 % of the peak (the line's last dissipation, past the curve's
+     * judged part: there Newton cycles on the smaller steps) */
+    const double low = fabs(q->s->P_grip) < 0.01 * q->s->P_peak ? MPM_QS_RESUME : 1e-9;
+    if (q->step_D < low * q->Dref)
       set_mode(q, MPM_QS_GRIP);
   } else {
     q->step_d *= 0.5;
@@ -322,7 +335,7 @@ static int attempt(mpm_static *q, int *iters)
     if (q->nkick < 3) {
       q->kick = 1;
       /* a kick after a kick starts from the size that passed (at a snapback's peak
-       * the first is halved from 1e-4 of delta to 1e-8 before Newton finds a state) */
+       * the first is cut from 1e-4 of delta to about 1e-8 before Newton finds a state) */
       q->kick_d = q->nkick > 0 ? q->kick_d : MPM_QS_KICK * q->dn;
     } else
       set_mode(q, MPM_QS_GRIP);
@@ -339,7 +352,7 @@ static int attempt(mpm_static *q, int *iters)
     return 0;
   }
   if (r != 1)
-    shrink(q);
+    shrink(q, *iters);
   return r == 1;
 }
 
