@@ -49,7 +49,8 @@ static void usage(FILE *f)
     "judged as a path too (curve_path: RMS distance from the analytic path in\n"
     "(delta / delta_peak, P / Pmax), snapback included; delta_5: where the load falls to\n"
     "5 %% of Pmax after the peak), and nothing against a grip speed.\n\n"
-    "DIR holds load.csv (header with at least delta and P_grip), optionally energy.csv\n"
+    "DIR holds load.csv (header with at least delta and P_grip, or delta and P as\n"
+    "delam analytic --curve writes it), optionally energy.csv\n"
     "(W_ext, KE, SE, W_coh, D) and final.csv (x0, y0, lambda); see docs/output-formats.md.\n\n"
     "A folder delam wrote is judged against DIR/scene.ini, the effective scene the run\n"
     "computed; --scene and the options below then say what the run was meant to be, and a\n"
@@ -450,6 +451,12 @@ static int read_inputs(const char *dir, const check_opts *o, const ver_scene *vs
   memset(in, 0, sizeof *in);
   snprintf(path, sizeof path, "%s/load.csv", dir);
   int r = ver_table_read(path, lnames, 4, 2, &in->ld, err, errlen);
+  if (r == 2 && !o->col_P[0] && strstr(err, "no column 'P_grip'")) { /* delam analytic --curve's delta,P */
+    const char *const an[] = {lnames[0], "P", "P_fixed", "t"};
+    char e2[256];
+    if (ver_table_read(path, an, 4, 2, &in->ld, e2, sizeof e2) == 0)
+      r = 0;
+  }
   if (r == 1)
     snprintf(err, errlen, "%s: no such file (the load-deflection curve is required)", path);
   if (r == 2 && strstr(err, "has no column")) /* another code's names: say how to map them */

@@ -19,7 +19,8 @@
 #   wave-cap     an iface90 run with U0 1000 (its separation 1e3 out, the exact solution
 #                at the grip speed 1.3e8 samples, 3 GB): exit 2 within 10 s, naming the
 #                cap, not a verdict after minutes;
-#   exact-curve  the closed form's own curve (`delam analytic --curve`: the elastic line as
+#   exact-curve  the closed form's own curve (`delam analytic --curve`, its header delta,P as
+#                written: the elastic line as
 #                one segment, rows unevenly spaced) passes: fig6 as an explicit run
 #                (k_elastic = E H / L from the scene file, delta_sep within the 6 %), and
 #                fig8's snapback as a static run, its delta_sep the closed form's to 1e-9
@@ -91,7 +92,7 @@ result twice-energy "$why"
 
 why=""
 mkdir bad1 bad2 bad3
-sed '1s/P_grip/P/' other/load.csv > bad1/load.csv
+sed '1s/P_grip/Pg/' other/load.csv > bad1/load.csv
 "$delam" check --scene "$scene" bad1 >out.txt 2>&1; rc=$?
 { [ $rc = 2 ] && grep -q "bad1/load.csv:1: the header has no column 'P_grip'" out.txt; } || why="missing column: exit $rc, $(head -1 out.txt)"
 awk 'NR == 5 { print "1.5,9,0.25e"; next } { print }' other/load.csv > bad2/load.csv
@@ -141,7 +142,7 @@ result wave-cap "$why"
 E=$(awk -F' *= *' '/^\[/ { s = $0 } s == "[material]" && $1 == "E" { print $2 + 0 }' "$scene")
 L=$(awk -F' *= *' '/^\[/ { s = $0 } s == "[bar]" && $1 == "L" { print $2 + 0 }' "$scene")
 mkdir exact6 exact8
-"$delam" analytic --curve exact6/load.csv >/dev/null && sed -i '1s/,P$/,P_grip/' exact6/load.csv
+"$delam" analytic --curve exact6/load.csv >/dev/null # its own header, delta,P, read as it is
 "$delam" check --scene "$scene" --h 4 exact6 >out.txt 2>&1
 rc=$?
 why=""
