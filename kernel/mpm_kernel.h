@@ -351,6 +351,7 @@ struct mpm_sim {
   double grid_ox0;         /* the grid's x-origin at t = 0                              */
   mpm_particles *p;
   mpm_grid *g;
+  const struct mpm_specimen_type *spec; /* the specimen's row (mpm_specimen.h), chosen once */
   struct mpm_bc *bc;       /* the constrained node components (mpm_specimen.h), in the   */
   int nbc;                 /*   order the step takes them                               */
   double crack_tip;        /* x of the interface's farthest separated point (NAN: none)  */

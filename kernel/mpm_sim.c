@@ -350,7 +350,7 @@ mpm_status mpm_sim_alloc(const mpm_scene *sc, int nthreads, mpm_sim **out, char 
   s->vgrip = sc->speed;
   s->ctl_D0 = INFINITY; /* dissipation control: the target starts at D (mpm_control.c) */
   const mpm_layout l = layout_of(sc);
-  const mpm_specimen_type *spec = mpm_specimen_of(sc);
+  const mpm_specimen_type *spec = s->spec = mpm_specimen_of(sc);
   if (!alloc_arrays(s, sc, &l, nthreads)) {
     mpm_sim_free(s);
     snprintf(err, errlen, "out of memory for %zu particles", l.np);

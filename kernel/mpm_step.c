@@ -850,9 +850,8 @@ static void nodes(mpm_sim *s)
 static void finish(mpm_sim *s)
 {
   mpm_phase_hooks(s, MPM_PH_GATHER);
-  const mpm_specimen_type *spec = mpm_specimen_of(&s->sc);
-  if (spec->step_end)
-    spec->step_end(s);
+  if (s->spec->step_end)
+    s->spec->step_end(s);
   mpm_phase_hooks(s, MPM_PH_END);
   ledger_step(s);
   s->ugrip += s->vgrip * s->sc.dt;

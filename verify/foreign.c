@@ -13,6 +13,7 @@
 
 #include "datadir.h"
 #include "foreign.h"
+#include "separation.h"
 #include "io.h"
 #include "metrics.h"
 
@@ -338,9 +339,7 @@ static double static_sep(const ver_case *c, const double *d, const double *P, si
   for (size_t i = 0; i < n; i++) {
     past = past || P[i] >= c->peak_P;
     if (past && P[i] <= c->vs.sep_load_frac * c->peak_P) {
-      if (i == 0 || !(P[i - 1] > P[i]))
-        return d[i];
-      return d[i] + (Ps - P[i]) * (d[i] - d[i - 1]) / (P[i] - P[i - 1]);
+      return i == 0 ? d[i] : ver_sep_static(d[i - 1], P[i - 1], d[i], P[i], Ps);
     }
   }
   return NAN;

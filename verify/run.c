@@ -236,16 +236,13 @@ static void take_step(run_state *r, ver_summary *u, double delta)
     if (r->sep.delta_load < 0 && r->peak > 0.0 && w->Pg < r->peak && w->Pg <= r->vs->sep_load_frac * r->peak) {
       r->sep.delta_load = delta;
       r->D_sep = w->e.D;
-      /* the rows are exact states: where separating at lambda = 1 leaves no load, on the
-       * line through this row and the one before (the branch is straight there, eq. 34 at
-       * q 1; as delam check's static_sep), not this row's delta, which lies as far from
-       * it as the rows are spaced (a30 at h 1: 0.1992 against 0.1903) */
-      double ds = delta;
+      /* the rows are exact states: where separating at lambda = 1 leaves no load, not this
+       * row's delta, which lies as far from it as the rows are spaced (a30 at h 1: 0.1992
+       * against 0.1903) */
       const row *pv = r->nrow >= 2 ? &r->rows[r->nrow - 2] : NULL;
-      if (pv && pv->Pg > w->Pg && r->vs->sc.sep_threshold >= 1.0)
-        ds = delta - w->Pg * (delta - pv->delta) / (w->Pg - pv->Pg);
       if (r->sep.delta_sep < 0)
-        r->sep.delta_sep = ds;
+        r->sep.delta_sep = pv && r->vs->sc.sep_threshold >= 1.0 ? ver_sep_static(pv->delta, pv->Pg, delta, w->Pg, 0.0)
+                                                                 : delta;
     }
   } else
     ver_sep_load(&r->sep, delta, w->Pg, w->Pf, r->peak, r->dpeak);

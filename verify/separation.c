@@ -102,3 +102,8 @@ void ver_sep_load(ver_sep *d, double delta, double Pg, double Pf, double peak, d
   }
   settle(d); /* after both tests of the row: the earlier of the two counts */
 }
+
+double ver_sep_static(double d0, double P0, double d1, double P1, double Ps)
+{
+  return P0 > P1 ? d1 + (Ps - P1) * (d1 - d0) / (P1 - P0) : d1;
+}

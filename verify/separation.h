@@ -50,4 +50,10 @@ void ver_sep_cut(ver_sep *d, const double *y0, const uint8_t *sep, const uint8_t
  * where the window's mean is within rounding of the threshold (then O(win)). */
 void ver_sep_load(ver_sep *d, double delta, double Pg, double Pf, double peak, double delta_peak);
 
+/* A static run's separation from its exact rows: where the line through the row before
+ * (d0, P0) and the first row at or under the test's load (d1, P1) reaches the load at
+ * separation Ps (0 at lambda = 1; near it the branch is straight, eq. 34 at q 1); d1
+ * where the load did not fall between them. */
+double ver_sep_static(double d0, double P0, double d1, double P1, double Ps);
+
 #endif
