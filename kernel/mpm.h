@@ -221,7 +221,7 @@ enum { MPM_QS_GRIP = 0, MPM_QS_DISSIPATION = 1 };
 enum { MPM_QS_TIE = 1, MPM_QS_LIMIT = 2, MPM_QS_BIFURCATION = 3 };
 typedef struct {
   long increments, newton; /* load increments taken; Newton iterations, all increments */
-  long cuts, factorizations; /* increments retried with a smaller step; LU factorizations */
+  long cuts, factorizations, updates; /* increments retried smaller; sparse LUs; low-rank updates */
   long switches, turns;    /* changes of control; increments retried smaller at a corner */
   int det_sign;            /* the last state's tangent K (grip held): sign of det K, 0 singular */
   int crit;                /* MPM_QS_TIE, _LIMIT, _BIFURCATION the last increment crossed (0: none) */

@@ -128,7 +128,10 @@ static mpm_status factor(mpm_static *q)
   const double t0 = mpm_wall();
   const mpm_status st = mpm_lin_factor(q->lin);
   q->st.t_factor += mpm_wall() - t0;
-  q->st.factorizations++;
+  if (mpm_lin_updated(q->lin))
+    q->st.updates++;
+  else
+    q->st.factorizations++;
   return st;
 }
 

@@ -21,6 +21,8 @@ size_t mpm_lin_nnz(const mpm_lin *l);
 /* LU of the values (the pattern's ordering is computed once); MPM_ENOTFINITE when the
  * matrix is singular or not finite. */
 mpm_status mpm_lin_factor(mpm_lin *l);
+/* 1 if the last factorization was a low-rank update of the held base's factors. */
+int mpm_lin_updated(const mpm_lin *l);
 /* 1 if the factors held are of the values as they are now (bit for bit). */
 int mpm_lin_same(const mpm_lin *l);
 /* x = A^-1 b with the last factors; x and b may not alias. */

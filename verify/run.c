@@ -326,6 +326,7 @@ static void finish(const run_state *r, ver_summary *u, double w0, double c0)
     u->increments = qs.increments;
     u->newton = qs.newton;
     u->factorizations = qs.factorizations;
+    u->updates = qs.updates;
     u->cuts = qs.cuts;
     u->severed = qs.severed;
     u->unknowns = qs.unknowns;

@@ -63,6 +63,7 @@ static const struct {
   {"increments", offsetof(ver_summary, increments), F_LONG},
   {"newton", offsetof(ver_summary, newton), F_LONG},
   {"factorizations", offsetof(ver_summary, factorizations), F_LONG},
+  {"updates", offsetof(ver_summary, updates), F_LONG},
   {"cuts", offsetof(ver_summary, cuts), F_LONG},
   {"severed", offsetof(ver_summary, severed), F_LONG},
   {"t_eval", offsetof(ver_summary, t_eval), F_DBL},

@@ -58,6 +58,7 @@ typedef struct {
   int static_run;                /* 1 for the static solver                           */
   long increments, newton, factorizations, cuts; /* load increments, Newton iterations,
                                     LU factorizations, increments retried smaller   */
+  long updates;                  /* low-rank updates in a factorization's place      */
   long severed;                  /* interface segments the static solver let go at the end */
   int unknowns;                  /* free degrees of freedom                          */
   double t_eval, t_factor, t_solve; /* seconds: laws and assembly, factorization, solves */

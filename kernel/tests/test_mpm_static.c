@@ -319,6 +319,99 @@ static void test_mpm_static_stability(void **state)
   stab_case(2.0);
 }
 
+/* The low-rank update (mpm_static_lin.c) on a 100 x 100 grid's five-point matrix, whose
+ * factorization costs enough to keep a base: each system solved after a change is judged
+ * against a fresh factorization of the same values, and the determinant's sign against
+ * what the change must give.  1 x 1: one diagonal entry sent to -1000 (the rest, reduced
+ * by the entry's small Schur term, stays positive definite: det < 0); a stiff tie (1e5 on
+ * a pair of neighbours, the interface's tie before it lets go) removed from the base;
+ * a change on every unknown (no update: a factorization on its own). */
+#define LR_N 100
+static int lr_pattern(int *ti, int *tj)
+{
+  int nz = 0;
+  for (int y = 0; y < LR_N; y++)
+    for (int x = 0; x < LR_N; x++) {
+      const int i = y * LR_N + x;
+      const int nb[5][2] = {{x, y}, {x - 1, y}, {x + 1, y}, {x, y - 1}, {x, y + 1}};
+      for (int k = 0; k < 5; k++)
+        if (nb[k][0] >= 0 && nb[k][0] < LR_N && nb[k][1] >= 0 && nb[k][1] < LR_N) {
+          ti[nz] = i;
+          tj[nz++] = nb[k][1] * LR_N + nb[k][0];
+        }
+    }
+  return nz;
+}
+
+/* values: 4.01 on the diagonal, -1 off it, plus `tie` between unknowns t0 and t0 + 1 */
+static void lr_values(mpm_lin *l, const int *ti, const int *tj, const int *map, int nz, int t0, double tie)
+{
+  double *x = mpm_lin_values(l);
+  memset(x, 0, sizeof(double) * mpm_lin_nnz(l));
+  for (int k = 0; k < nz; k++) {
+    const int pair = (ti[k] == t0 || ti[k] == t0 + 1) && (tj[k] == t0 || tj[k] == t0 + 1);
+    x[map[k]] += (ti[k] == tj[k] ? 4.01 : -1.0) + (pair ? (ti[k] == tj[k] ? tie : -tie) : 0.0);
+  }
+}
+
+/* max |x - x_fresh| / max |x_fresh| for the values held by l, x_fresh from a new LU */
+static double lr_err(mpm_lin *l, const int *ti, const int *tj, int nz, const double *b, double *x, double *y)
+{
+  static int map2[5 * LR_N * LR_N];
+  mpm_lin *f = mpm_lin_alloc(LR_N * LR_N, (size_t)nz, ti, tj, map2);
+  assert_non_null(f);
+  memcpy(mpm_lin_values(f), mpm_lin_values(l), sizeof(double) * mpm_lin_nnz(l));
+  assert_int_equal(mpm_lin_factor(f), MPM_OK);
+  assert_int_equal(mpm_lin_solve(f, b, y), MPM_OK);
+  assert_int_equal(mpm_lin_solve(l, b, x), MPM_OK);
+  double e = 0.0, m = 0.0;
+  for (int i = 0; i < LR_N * LR_N; i++) {
+    e = fmax(e, fabs(x[i] - y[i]));
+    m = fmax(m, fabs(y[i]));
+  }
+  mpm_lin_free(f);
+  return e / m;
+}
+
+static void test_mpm_static_lowrank(void **state)
+{
+  (void)state;
+  static int ti[5 * LR_N * LR_N], tj[5 * LR_N * LR_N], map[5 * LR_N * LR_N];
+  static double b[LR_N * LR_N], x[LR_N * LR_N], y[LR_N * LR_N];
+  const int nz = lr_pattern(ti, tj), n = LR_N * LR_N, i0 = 50 * LR_N + 50;
+  for (int i = 0; i < n; i++)
+    b[i] = sin(0.37 * i) + 0.1;
+  for (int tie = 0; tie < 2; tie++) {
+    mpm_lin *l = mpm_lin_alloc(n, (size_t)nz, ti, tj, map);
+    assert_non_null(l);
+    lr_values(l, ti, tj, map, nz, i0, tie ? 1e5 : 0.0);
+    assert_int_equal(mpm_lin_factor(l), MPM_OK); /* the base */
+    assert_int_equal(mpm_lin_updated(l), 0);
+    assert_int_equal(mpm_lin_det_sign(l), 1);
+    double *v = mpm_lin_values(l);
+    if (tie) /* the tie lets go */
+      lr_values(l, ti, tj, map, nz, i0, 0.0);
+    else
+      for (int k = 0; k < nz; k++)
+        if (ti[k] == i0 && tj[k] == i0)
+          v[map[k]] = -1000.0;
+    assert_int_equal(mpm_lin_factor(l), MPM_OK);
+    assert_int_equal(mpm_lin_updated(l), 1);
+    assert_int_equal(mpm_lin_det_sign(l), tie ? 1 : -1);
+    const double e = lr_err(l, ti, tj, nz, b, x, y);
+    print_message("# low-rank update (%s): solution within %.2e of a fresh LU's\n", tie ? "a tie of 1e5 let go" : "one entry -1000", e);
+    assert_true(e < 1e-9);
+    for (int k = 0; k < nz; k++) /* every unknown: a factorization on its own */
+      if (ti[k] == tj[k])
+        v[map[k]] = 5.0;
+    assert_int_equal(mpm_lin_factor(l), MPM_OK);
+    assert_int_equal(mpm_lin_updated(l), 0);
+    assert_int_equal(mpm_lin_det_sign(l), 1);
+    assert_true(lr_err(l, ti, tj, nz, b, x, y) < 1e-12);
+    mpm_lin_free(l);
+  }
+}
+
 /* static-2: the elastic bar: the first increments lie on P = E H delta / L (a linear
  * problem, exact to the solver's tolerance), whatever the flaw. */
 static void test_mpm_static_elastic(void **state)
@@ -448,6 +541,7 @@ int main(void)
     cmocka_unit_test(test_mpm_static_interface_inclined),
     cmocka_unit_test(test_mpm_static_refuses_one_point),
     cmocka_unit_test(test_mpm_static_stability),
+    cmocka_unit_test(test_mpm_static_lowrank),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
