@@ -23,6 +23,8 @@
 #define MPM_QS_DTOL 1e-10
 #define MPM_QS_CYCLE 1e-3 /* relative: merits this close two iterations apart are a cycle */
 #define MPM_QS_LS 8       /* halvings of a Newton step that raises the residual      */
+#define MPM_QS_PREDMAX 0.05 /* the largest predictor change of delta after a kick, of delta */
+#define MPM_QS_FIRST 1e-6   /* of Dref: less dissipated, the softening has just begun     */
 
 void mpm_static_free(mpm_static *q)
 {
@@ -212,8 +214,16 @@ static int increment(mpm_static *q, int *iters)
     if (!(q->Cn > MPM_QS_CMIN * q->Dref) && q->nkick < 3)
       return -2;
     /* pden < 0: C grows as delta falls, the snapback branch */
-    if (fabs(q->pden) * fmax(q->dn, 1e-300) > 1e-9 * q->Dref)
+    if (fabs(q->pden) * fmax(q->dn, 1e-300) > 1e-9 * q->Dref) {
+      /* the run's first dissipation step, after the kick, where particles soften: the
+       * kick's softening set is the flaw alone, whose tangent answers a step of 1e-3 U0 H
+       * with a delta hundreds of times the bar's (fig6, h 1, 9 ppc: 33.7 at 0.169) and
+       * Newton fails from there four times before the step is small enough; so the step
+       * is one that moves delta by at most MPM_QS_PREDMAX of itself (docs/static.md) */
+      if (q->nkick > 0 && !q->iface && q->Cn < MPM_QS_FIRST * q->Dref)
+        q->step_D = fmin(q->step_D, MPM_QS_PREDMAX * fabs(q->pden) * q->dn);
       dd = q->step_D / q->pden;
+    }
     else if (q->Cn > 0.0)
       dd = (q->dlast < 0.0 ? -1e-4 : 1e-4) * q->dn; /* the way the last increment went; Newton
                                                        finds the control's target from there */
