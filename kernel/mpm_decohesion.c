@@ -312,9 +312,11 @@ static inline mpm_status dcoh_step(const mpm_material *m, const mpm_dstate *in, 
   *out = *in;
 
   /* Elastic trial (eq. 7 increment through plane-stress C). */
-  out->sxx = in->sxx + m->E1 * de[0] + m->E2 * de[1];
-  out->syy = in->syy + m->E2 * de[0] + m->E1 * de[1];
-  out->sxy = in->sxy + 2.0 * m->G * de[2];
+  double trial[3];
+  mpm_dcoh_trial(m, in->sxx, in->syy, in->sxy, de[0], de[1], de[2], trial);
+  out->sxx = trial[0];
+  out->syy = trial[1];
+  out->sxy = trial[2];
   if (m->model == MPM_DCOH_NONE)
     goto done;
   /* Non-finite input never reaches the root solver (GSL's default handler aborts). */
@@ -548,11 +550,17 @@ static void tangent_nt(const mpm_material *m, const dcoh_trace *t, double A[3][3
 mpm_status mpm_dcoh_tangent(const mpm_material *m, const mpm_dstate *in, const double de[3], double D[3][3],
                             double dlam[3], mpm_dwork *w)
 {
-  assert(m && in && de && D);
   mpm_dstate out;
   mpm_dinfo info;
+  return mpm_dcoh_update_tangent(m, in, de, &out, &info, D, dlam, w);
+}
+
+mpm_status mpm_dcoh_update_tangent(const mpm_material *m, const mpm_dstate *in, const double de[3], mpm_dstate *out,
+                                   mpm_dinfo *info, double D[3][3], double dlam[3], mpm_dwork *w)
+{
+  assert(m && in && de && D);
   dcoh_trace t;
-  const mpm_status rc = dcoh_step(m, in, de, &out, &info, w, &t);
+  const mpm_status rc = dcoh_step(m, in, de, out, info, w, &t);
   const double C[3][3] = {{m->E1, m->E2, 0.0}, {m->E2, m->E1, 0.0}, {0.0, 0.0, 2.0 * m->G}};
   if (dlam)
     dlam[0] = dlam[1] = dlam[2] = rc == MPM_OK ? 0.0 : NAN;
