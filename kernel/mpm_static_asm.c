@@ -250,22 +250,26 @@ static void particle_tangent(mpm_static *q, size_t c, double Cp[3][3], const dou
       else if (eb == MPM_DOF_PUSH)
         q->gb += gd;
     }
+    if (eb < 0 && eb != MPM_DOF_GRIP && eb != MPM_DOF_PUSH)
+      continue; /* held or off: no entry */
     for (int a = 0; a < cn; a++) {
       const double kx = V * (Gx[a] * sx + Gy[a] * sxy), ky = V * (Gy[a] * sy + Gx[a] * sxy);
-      const int ex = q->eq[2 * nd[a]], ey = q->eq[2 * nd[a] + 1];
-      const int kx_at = q->map[k + (size_t)(2 * a) * (size_t)(2 * cn) + (size_t)b];
-      const int ky_at = q->map[k + (size_t)(2 * a + 1) * (size_t)(2 * cn) + (size_t)b];
       if (eb >= 0) {
+        const int kx_at = q->map[k + (size_t)(2 * a) * (size_t)(2 * cn) + (size_t)b];
+        const int ky_at = q->map[k + (size_t)(2 * a + 1) * (size_t)(2 * cn) + (size_t)b];
         if (kx_at >= 0)
           Ax[kx_at] += kx;
         if (ky_at >= 0)
           Ax[ky_at] += ky;
-      } else if (eb == MPM_DOF_GRIP) { /* d R / d delta = c K_{f,driven} */
+        continue;
+      }
+      const int ex = q->eq[2 * nd[a]], ey = q->eq[2 * nd[a] + 1];
+      if (eb == MPM_DOF_GRIP) { /* d R / d delta = c K_{f,driven} */
         if (ex >= 0)
           q->kfd[ex] -= kx;
         if (ey >= 0)
           q->kfd[ey] -= ky;
-      } else if (eb == MPM_DOF_PUSH) {
+      } else {
         if (ex >= 0)
           q->kfd[ex] += kx;
         if (ey >= 0)
@@ -319,13 +323,19 @@ static void elastic_part(mpm_static *q)
   q->kel_ok = 1;
 }
 
+/* Particle i's dissipation per unit lambda, U0 V / Le (eq. 10; 0 without decohesion). */
+static inline double dis_rate(const mpm_sim *s, size_t i)
+{
+  const mpm_material *m = &s->mat[s->p->mat[i]];
+  return m->model != MPM_DCOH_NONE ? m->U0 * s->p->V[i] / m->Le : 0.0;
+}
+
 /* Particle c's trial state (tst, tpath, tw) from its strain increment de and, with the
- * tangent, its entries off the elastic part (k its first place in the map; wD its
- * dissipation per unit lambda).  The elastic trial clear inside eq. 23 (most particles)
- * is the update's own result, without the update (mpm_dcoh_trial_inside); the rest take
- * the full update, and with the tangent its algorithmic tangent from the same run. */
-static mpm_status particle_update(mpm_static *q, size_t c, const double de[3], double wD, int tangent, size_t k,
-                                  double *Ax)
+ * tangent, its entries off the elastic part (k its first place in the map).  The elastic
+ * trial clear inside eq. 23 (most particles) is the update's own result, without the
+ * update (mpm_dcoh_trial_inside); the rest take the full update, and with the tangent
+ * its algorithmic tangent from the same run. */
+static mpm_status particle_update(mpm_static *q, size_t c, const double de[3], int tangent, size_t k, double *Ax)
 {
   const mpm_particles *p = q->s->p;
   const size_t i = q->pid[c];
@@ -351,6 +361,7 @@ static mpm_status particle_update(mpm_static *q, size_t c, const double de[3], d
     for (int a = 0; a < 3; a++)
       for (int b = 0; b < 3; b++)
         Cp[a][b] -= C[a][b];
+    const double wD = dis_rate(q->s, i);
     particle_tangent(q, c, Cp, dl, wD > 0.0 && info.path != MPM_DPATH_ELASTIC ? wD : 0.0, k, Ax);
   }
   return st;
@@ -392,14 +403,15 @@ mpm_status mpm_static_eval(mpm_static *q, int tangent)
       de[1] += Gy[a] * uy;
       de[2] += 0.5 * (Gy[a] * ux + Gx[a] * uy);
     }
-    const mpm_material *m = &s->mat[p->mat[i]];
-    const double wD = m->model != MPM_DCOH_NONE ? m->U0 * p->V[i] / m->Le : 0.0;
-    const mpm_status st = particle_update(q, c, de, wD, tangent, k, Ax);
+    const mpm_status st = particle_update(q, c, de, tangent, k, Ax);
     if (st != MPM_OK && bad == MPM_OK)
       bad = st;
     const mpm_dstate o = q->tst[c];
-    D += wD * fmin(o.lam, 1.0);
-    C += wD * o.lam;
+    if (o.lam != 0.0) { /* eq. 10; lambda = 0 adds +0 to the sums, which leaves them as they are */
+      const double wD = dis_rate(s, i);
+      D += wD * fmin(o.lam, 1.0);
+      C += wD * o.lam;
+    }
     const double V = p->V[i];
     for (int a = 0; a < cn; a++) { /* eq. 3: f_a = V B_a^T sigma */
       const double fx = V * (Gx[a] * o.sxx + Gy[a] * o.sxy), fy = V * (Gy[a] * o.syy + Gx[a] * o.sxy);
