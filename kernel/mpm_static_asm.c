@@ -227,12 +227,15 @@ mpm_status mpm_static_number(mpm_static *q, char *err, size_t errlen)
  * is its first place in the map.  Cp is C for the elastic part every particle adds
  * (Kel), else the update's algorithmic tangent less C. */
 static void particle_tangent(mpm_static *q, size_t c, double Cp[3][3], const double dl[3], double wD, size_t k,
-                             double *Ax)
+                             double *restrict Ax)
 {
   const size_t M = MPM_ST_MAX;
   const int cn = q->cnt[c];
-  const int *nd = q->node + c * M;
-  const double *Gx = q->Gx + c * M, *Gy = q->Gy + c * M, V = q->s->p->V[q->pid[c]];
+  const size_t rs = 2 * (size_t)cn; /* the block's row length */
+  const int *restrict nd = q->node + c * M, *restrict eq = q->eq, *restrict map = q->map + k;
+  const double *restrict Gx = q->Gx + c * M, *restrict Gy = q->Gy + c * M, V = q->s->p->V[q->pid[c]];
+  double *restrict ga = q->ga, *restrict kfd = q->kfd;
+  double gb = q->gb;
   for (int b = 0; b < 2 * cn; b++) {
     /* d de / d u_b: (Gx, 0, Gy / 2) for an x component, (0, Gy, Gx / 2) for y */
     const int bn = nd[b / 2], bc = b % 2;
@@ -240,43 +243,44 @@ static void particle_tangent(mpm_static *q, size_t c, double Cp[3][3], const dou
     const double sx = Cp[0][0] * d0 + Cp[0][1] * d1 + Cp[0][2] * d2;
     const double sy = Cp[1][0] * d0 + Cp[1][1] * d1 + Cp[1][2] * d2;
     const double sxy = Cp[2][0] * d0 + Cp[2][1] * d1 + Cp[2][2] * d2;
-    const int eb = q->eq[2 * bn + bc];
+    const int eb = eq[2 * bn + bc];
     if (wD > 0.0) {
       const double gd = wD * (dl[0] * d0 + dl[1] * d1 + dl[2] * d2);
       if (eb >= 0)
-        q->ga[eb] += gd;
+        ga[eb] += gd;
       else if (eb == MPM_DOF_GRIP)
-        q->gb -= gd; /* u = c delta there, the sum scaled by |c| in eval */
+        gb -= gd; /* u = c delta there, the sum scaled by |c| in eval */
       else if (eb == MPM_DOF_PUSH)
-        q->gb += gd;
+        gb += gd;
     }
     if (eb < 0 && eb != MPM_DOF_GRIP && eb != MPM_DOF_PUSH)
       continue; /* held or off: no entry */
+    const int *restrict mb = map + b; /* column b: row 2a at mb[2a rs], row 2a + 1 a row on */
     for (int a = 0; a < cn; a++) {
       const double kx = V * (Gx[a] * sx + Gy[a] * sxy), ky = V * (Gy[a] * sy + Gx[a] * sxy);
       if (eb >= 0) {
-        const int kx_at = q->map[k + (size_t)(2 * a) * (size_t)(2 * cn) + (size_t)b];
-        const int ky_at = q->map[k + (size_t)(2 * a + 1) * (size_t)(2 * cn) + (size_t)b];
+        const int kx_at = mb[(size_t)(2 * a) * rs], ky_at = mb[(size_t)(2 * a + 1) * rs];
         if (kx_at >= 0)
           Ax[kx_at] += kx;
         if (ky_at >= 0)
           Ax[ky_at] += ky;
         continue;
       }
-      const int ex = q->eq[2 * nd[a]], ey = q->eq[2 * nd[a] + 1];
+      const int ex = eq[2 * nd[a]], ey = eq[2 * nd[a] + 1];
       if (eb == MPM_DOF_GRIP) { /* d R / d delta = c K_{f,driven} */
         if (ex >= 0)
-          q->kfd[ex] -= kx;
+          kfd[ex] -= kx;
         if (ey >= 0)
-          q->kfd[ey] -= ky;
+          kfd[ey] -= ky;
       } else {
         if (ex >= 0)
-          q->kfd[ex] += kx;
+          kfd[ex] += kx;
         if (ey >= 0)
-          q->kfd[ey] += ky;
+          kfd[ey] += ky;
       }
     }
   }
+  q->gb = gb;
 }
 
 /* The load's share of the driven components other than the x ones pulled back (the
