@@ -327,11 +327,7 @@ static inline mpm_status dcoh_step(const mpm_material *m, const mpm_dstate *in, 
   *out = *in;
 
   /* Elastic trial (eq. 7 increment through plane-stress C). */
-  double trial[3];
-  mpm_dcoh_trial(m, in->sxx, in->syy, in->sxy, de[0], de[1], de[2], trial);
-  out->sxx = trial[0];
-  out->syy = trial[1];
-  out->sxy = trial[2];
+  mpm_dcoh_trial(m, in->sxx, in->syy, in->sxy, de[0], de[1], de[2], &out->sxx, &out->syy, &out->sxy);
   if (m->model == MPM_DCOH_NONE)
     goto done;
   /* Non-finite input never reaches the root solver (GSL's default handler aborts). */

@@ -196,14 +196,15 @@ mpm_status mpm_dcoh_update_tangent(const mpm_material *m, const mpm_dstate *in, 
                                    mpm_dinfo *info, double D[3][3], double dlam[3], mpm_dwork *w);
 
 /* The elastic trial of a step (eq. 7's increment through plane-stress C): the stress
- * (sxx, syy, sxy) plus C de, de = (de0, de1, de2) with tensor shear, into t; the first
- * thing mpm_dcoh_update does, and the callers' test before it (mpm_dcoh_trial_inside). */
+ * (sxx, syy, sxy) plus C de, de = (de0, de1, de2) with tensor shear, into (txx, tyy,
+ * txy); the first thing mpm_dcoh_update does, and the callers' before their test
+ * (mpm_dcoh_trial_inside). */
 static inline void mpm_dcoh_trial(const mpm_material *m, double sxx, double syy, double sxy, double de0, double de1,
-                                  double de2, double t[3])
+                                  double de2, double *txx, double *tyy, double *txy)
 {
-  t[0] = sxx + m->E1 * de0 + m->E2 * de1;
-  t[1] = syy + m->E2 * de0 + m->E1 * de1;
-  t[2] = sxy + 2.0 * m->G * de2;
+  *txx = sxx + m->E1 * de0 + m->E2 * de1;
+  *tyy = syy + m->E2 * de0 + m->E1 * de1;
+  *txy = sxy + 2.0 * m->G * de2;
 }
 
 /* The inline elastic test sends a particle to the full update from this fraction of

@@ -346,7 +346,7 @@ static mpm_status particle_update(mpm_static *q, size_t c, const double de[3], i
   const mpm_material *m = &q->s->mat[p->mat[i]];
   mpm_dstate *o = &q->tst[c];
   double t[3];
-  mpm_dcoh_trial(m, p->sxx[i], p->syy[i], p->sxy[i], de[0], de[1], de[2], t);
+  mpm_dcoh_trial(m, p->sxx[i], p->syy[i], p->sxy[i], de[0], de[1], de[2], &t[0], &t[1], &t[2]);
   if (mpm_dcoh_trial_inside(m, t, p->str2[i])) {
     *o = (mpm_dstate){t[0], t[1], t[2], p->lam[i], p->upn[i], p->upt[i], p->sep[i]};
     q->tpath[c] = MPM_DPATH_ELASTIC;

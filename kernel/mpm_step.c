@@ -300,7 +300,7 @@ static inline __attribute__((always_inline)) int g2p_trial(const mpm_particles *
     p->vxy[k] = r * 2.0 * m->G * de2;
   }
   double t[3];
-  mpm_dcoh_trial(m, sxx[k], syy[k], sxy[k], de0, de1, de2, t);
+  mpm_dcoh_trial(m, sxx[k], syy[k], sxy[k], de0, de1, de2, &t[0], &t[1], &t[2]);
   if (__builtin_expect(!mpm_dcoh_trial_inside(m, t, str2k), 0))
     return 1;
   *qs += m->mp * (t[0] * de0 + t[1] * de1 + t[2] * g2);

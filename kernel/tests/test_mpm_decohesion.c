@@ -1177,7 +1177,7 @@ static void test_mpm_decohesion_trial_and_joint_tangent(void **state)
             double D[3][3], L[3], Dj[3][3], Lj[3], t[3];
             const mpm_status rc = mpm_dcoh_update(&m, &in, de, &o, &info, w);
             assert_int_equal(rc, MPM_OK);
-            mpm_dcoh_trial(&m, in.sxx, in.syy, in.sxy, de[0], de[1], de[2], t);
+            mpm_dcoh_trial(&m, in.sxx, in.syy, in.sxy, de[0], de[1], de[2], &t[0], &t[1], &t[2]);
             const int pass = mpm_dcoh_trial_inside(&m, t, mpm_dcoh_str2(&m, in.lam, in.sep));
             if (pass) {
               inside++;
