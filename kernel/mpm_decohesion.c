@@ -131,18 +131,32 @@ typedef struct {
   double lam;
 } phi_ctx;
 
+/* The traction (sn, st) at dl and its effective traction se (eq. 23), which phi and
+ * its slope share. */
+static inline double phi_se(const phi_ctx *c, double dl, double *sn, double *st)
+{
+  *sn = c->sn - dl * c->smn;
+  *st = c->st - dl * c->smt;
+  return eff_traction(c->m, *sn, *st);
+}
+
+/* phi at dl from se there. */
+static inline double phi_of(const phi_ctx *c, double dl, double se)
+{
+  return se - 1.0 + mpm_law_powq(c->lam + dl, c->m->q) - c->m->visc * dl;
+}
+
 static double phi(double dl, void *vp)
 {
   const phi_ctx *c = vp;
-  return eff_traction(c->m, c->sn - dl * c->smn, c->st - dl * c->smt) - 1.0 +
-         mpm_law_powq(c->lam + dl, c->m->q) - c->m->visc * dl;
+  double sn, st;
+  return phi_of(c, dl, phi_se(c, dl, &sn, &st));
 }
 
-/* d phi / d dl, for Newton (se is smooth away from sn = 0 and se = 0). */
-static double dphi(double dl, const phi_ctx *c)
+/* d phi / d dl at dl from the traction (sn, st) there and its se, for Newton and the
+ * tangent (se is smooth away from sn = 0 and se = 0). */
+static inline double dphi_of(const phi_ctx *c, double dl, double sn, double st, double se)
 {
-  const double sn = c->sn - dl * c->smn, st = c->st - dl * c->smt;
-  const double se = eff_traction(c->m, sn, st);
   double gn, gt;
   mpm_law_flow(sn, st, c->m->isnf2, c->m->istf2, &gn, &gt);
   const double lq = c->lam + dl;
@@ -160,12 +174,13 @@ static int solve_dl(const phi_ctx *c, double dlmax, double guess, mpm_dwork *w, 
     double dl = guess;
     for (int k = 0; k < MPM_DCOH_MAXIT && dl > 0.0 && dl <= dlmax; k++) {
       info->iters++;
-      const double f = phi(dl, (void *)c);
+      double sn, st;
+      const double se = phi_se(c, dl, &sn, &st), f = phi_of(c, dl, se);
       if (fabs(f) < MPM_DCOH_FTOL) {
         *dl_out = dl;
         return 0;
       }
-      const double d = dphi(dl, c);
+      const double d = dphi_of(c, dl, sn, st, se);
       if (!(d < 0.0))
         break; /* past the minimum of phi: let the bracket decide */
       dl -= f / d;
@@ -312,9 +327,7 @@ static inline mpm_status dcoh_step(const mpm_material *m, const mpm_dstate *in, 
   *out = *in;
 
   /* Elastic trial (eq. 7 increment through plane-stress C). */
-  out->sxx = in->sxx + m->E1 * de[0] + m->E2 * de[1];
-  out->syy = in->syy + m->E2 * de[0] + m->E1 * de[1];
-  out->sxy = in->sxy + 2.0 * m->G * de[2];
+  mpm_dcoh_trial(m, in->sxx, in->syy, in->sxy, de[0], de[1], de[2], &out->sxx, &out->syy, &out->sxy);
   if (m->model == MPM_DCOH_NONE)
     goto done;
   /* Non-finite input never reaches the root solver (GSL's default handler aborts). */
@@ -520,11 +533,11 @@ static void tangent_nt(const mpm_material *m, const dcoh_trace *t, double A[3][3
   /* Implicit function theorem on phi(dl; x) = 0 (the consistency of eq. 23 with the
    * overstress): d dl / d x = -(d phi / d x) / (d phi / d dl), at the converged dl. */
   const double dl = t->dl;
-  const double sn = t->tr.nn - dl * t->ctx.smn, st = t->st - dl * t->ctx.smt;
-  const double se_o = eff_traction(m, sn, st);
+  double sn, st;
+  const double se_o = phi_se(&t->ctx, dl, &sn, &st);
   double gn_o, gt_o;
   mpm_law_flow(sn, st, m->isnf2, m->istf2, &gn_o, &gt_o);
-  const double phil = dphi(dl, &t->ctx);
+  const double phil = dphi_of(&t->ctx, dl, sn, st, se_o);
   const double dsn[2] = {1.0, 0.0}, dst[2] = {0.0, t->st_on ? 1.0 : 0.0};
   double ddl[2];
   for (int j = 0; j < 2; j++) {
@@ -548,11 +561,17 @@ static void tangent_nt(const mpm_material *m, const dcoh_trace *t, double A[3][3
 mpm_status mpm_dcoh_tangent(const mpm_material *m, const mpm_dstate *in, const double de[3], double D[3][3],
                             double dlam[3], mpm_dwork *w)
 {
-  assert(m && in && de && D);
   mpm_dstate out;
   mpm_dinfo info;
+  return mpm_dcoh_update_tangent(m, in, de, &out, &info, D, dlam, w);
+}
+
+mpm_status mpm_dcoh_update_tangent(const mpm_material *m, const mpm_dstate *in, const double de[3], mpm_dstate *out,
+                                   mpm_dinfo *info, double D[3][3], double dlam[3], mpm_dwork *w)
+{
+  assert(m && in && de && D);
   dcoh_trace t;
-  const mpm_status rc = dcoh_step(m, in, de, &out, &info, w, &t);
+  const mpm_status rc = dcoh_step(m, in, de, out, info, w, &t);
   const double C[3][3] = {{m->E1, m->E2, 0.0}, {m->E2, m->E1, 0.0}, {0.0, 0.0, 2.0 * m->G}};
   if (dlam)
     dlam[0] = dlam[1] = dlam[2] = rc == MPM_OK ? 0.0 : NAN;

@@ -190,6 +190,38 @@ mpm_status mpm_dcoh_update(const mpm_material *m, const mpm_dstate *in, const do
  * dlam (if not NULL) gets d lambda_out / d de on the same path (0 on an elastic step). */
 mpm_status mpm_dcoh_tangent(const mpm_material *m, const mpm_dstate *in, const double de[3], double D[3][3],
                             double dlam[3], mpm_dwork *w);
+/* Both in one: the update (out, info: mpm_dcoh_update's) and its tangent (D, dlam:
+ * mpm_dcoh_tangent's) from one run of the update. */
+mpm_status mpm_dcoh_update_tangent(const mpm_material *m, const mpm_dstate *in, const double de[3], mpm_dstate *out,
+                                   mpm_dinfo *info, double D[3][3], double dlam[3], mpm_dwork *w);
+
+/* The elastic trial of a step (eq. 7's increment through plane-stress C): the stress
+ * (sxx, syy, sxy) plus C de, de = (de0, de1, de2) with tensor shear, into (txx, tyy,
+ * txy); the first thing mpm_dcoh_update does, and the callers' before their test
+ * (mpm_dcoh_trial_inside). */
+static inline void mpm_dcoh_trial(const mpm_material *m, double sxx, double syy, double sxy, double de0, double de1,
+                                  double de2, double *txx, double *tyy, double *txy)
+{
+  *txx = sxx + m->E1 * de0 + m->E2 * de1;
+  *tyy = syy + m->E2 * de0 + m->E1 * de1;
+  *txy = sxy + 2.0 * m->G * de2;
+}
+
+/* The inline elastic test sends a particle to the full update from this fraction of
+ * its remaining strength squared on (a rounding margin, far above 1 ulp). */
+#define MPM_TRIAL_SAFE (1.0 - 1e-9)
+
+/* 1 where the trial t stays inside eq. 23's surface by the margin, so that
+ * mpm_dcoh_update would keep it (path ELASTIC, the trial's bits): <s_nn / snf>^2 +
+ * (s_nt / stf)^2 < MPM_TRIAL_SAFE str2, str2 the particle's cached (1 - lambda^q)^2
+ * (mpm_particles.str2; < 0 once separated: never).  A non-finite trial fails it (NaN * 0
+ * is NaN); the state's own finiteness is the committed update's. */
+static inline int mpm_dcoh_trial_inside(const mpm_material *m, const double t[3], double str2)
+{
+  const double sn = m->fn[0] * t[0] + m->fn[1] * t[1] + m->fn[2] * t[2], a = sn > 0.0 ? sn : 0.0;
+  const double b = m->ft[0] * t[0] + m->ft[1] * t[1] + m->ft[2] * t[2];
+  return a * a + b * b < MPM_TRIAL_SAFE * str2;
+}
 
 /* mpm_dcoh_update's softening step (eqs. 39-50) for n particles of one material with
  * q = 1, in one loop without branches on the data (the particles' chains of square roots

@@ -222,27 +222,20 @@ mpm_status mpm_static_number(mpm_static *q, char *err, size_t errlen)
   return MPM_OK;
 }
 
-/* Particle c's entries of the tangent (V B^T C_p B with the update's algorithmic tangent
- * C_p), of d R / d delta (kfd) and, where it softens (wD > 0), of the control's gradient
- * (ga, gb); k is its first place in the map. */
-static void particle_tangent(mpm_static *q, size_t c, const mpm_material *m, const mpm_dstate *in, const double de[3],
-                             int elastic, double wD, size_t k, double *Ax)
+/* Particle c's entries of the tangent (V B^T Cp B), of d R / d delta (kfd) and, where
+ * it softens (wD > 0), of the control's gradient (ga, gb, from dl = d lambda / d de); k
+ * is its first place in the map.  Cp is C for the elastic part every particle adds
+ * (Kel), else the update's algorithmic tangent less C. */
+static void particle_tangent(mpm_static *q, size_t c, double Cp[3][3], const double dl[3], double wD, size_t k,
+                             double *restrict Ax)
 {
   const size_t M = MPM_ST_MAX;
   const int cn = q->cnt[c];
-  const int *nd = q->node + c * M;
-  const double *Gx = q->Gx + c * M, *Gy = q->Gy + c * M, V = q->s->p->V[q->pid[c]];
-  /* elastic: C, the elastic part every particle adds (Kel); else the update's algorithmic
-   * tangent less C, and d lambda / d de */
-  const double C[3][3] = {{m->E1, m->E2, 0.0}, {m->E2, m->E1, 0.0}, {0.0, 0.0, 2.0 * m->G}};
-  double Cp[3][3], dl[3] = {0.0, 0.0, 0.0};
-  memcpy(Cp, C, sizeof Cp);
-  if (!elastic) {
-    mpm_dcoh_tangent(m, in, de, Cp, dl, q->dw);
-    for (int i = 0; i < 3; i++)
-      for (int j = 0; j < 3; j++)
-        Cp[i][j] -= C[i][j];
-  }
+  const size_t rs = 2 * (size_t)cn; /* the block's row length */
+  const int *restrict nd = q->node + c * M, *restrict eq = q->eq, *restrict map = q->map + k;
+  const double *restrict Gx = q->Gx + c * M, *restrict Gy = q->Gy + c * M, V = q->s->p->V[q->pid[c]];
+  double *restrict ga = q->ga, *restrict kfd = q->kfd;
+  double gb = q->gb;
   for (int b = 0; b < 2 * cn; b++) {
     /* d de / d u_b: (Gx, 0, Gy / 2) for an x component, (0, Gy, Gx / 2) for y */
     const int bn = nd[b / 2], bc = b % 2;
@@ -250,39 +243,44 @@ static void particle_tangent(mpm_static *q, size_t c, const mpm_material *m, con
     const double sx = Cp[0][0] * d0 + Cp[0][1] * d1 + Cp[0][2] * d2;
     const double sy = Cp[1][0] * d0 + Cp[1][1] * d1 + Cp[1][2] * d2;
     const double sxy = Cp[2][0] * d0 + Cp[2][1] * d1 + Cp[2][2] * d2;
-    const int eb = q->eq[2 * bn + bc];
+    const int eb = eq[2 * bn + bc];
     if (wD > 0.0) {
       const double gd = wD * (dl[0] * d0 + dl[1] * d1 + dl[2] * d2);
       if (eb >= 0)
-        q->ga[eb] += gd;
+        ga[eb] += gd;
       else if (eb == MPM_DOF_GRIP)
-        q->gb -= gd; /* u = c delta there, the sum scaled by |c| in eval */
+        gb -= gd; /* u = c delta there, the sum scaled by |c| in eval */
       else if (eb == MPM_DOF_PUSH)
-        q->gb += gd;
+        gb += gd;
     }
+    if (eb < 0 && eb != MPM_DOF_GRIP && eb != MPM_DOF_PUSH)
+      continue; /* held or off: no entry */
+    const int *restrict mb = map + b; /* column b: row 2a at mb[2a rs], row 2a + 1 a row on */
     for (int a = 0; a < cn; a++) {
       const double kx = V * (Gx[a] * sx + Gy[a] * sxy), ky = V * (Gy[a] * sy + Gx[a] * sxy);
-      const int ex = q->eq[2 * nd[a]], ey = q->eq[2 * nd[a] + 1];
-      const int kx_at = q->map[k + (size_t)(2 * a) * (size_t)(2 * cn) + (size_t)b];
-      const int ky_at = q->map[k + (size_t)(2 * a + 1) * (size_t)(2 * cn) + (size_t)b];
       if (eb >= 0) {
+        const int kx_at = mb[(size_t)(2 * a) * rs], ky_at = mb[(size_t)(2 * a + 1) * rs];
         if (kx_at >= 0)
           Ax[kx_at] += kx;
         if (ky_at >= 0)
           Ax[ky_at] += ky;
-      } else if (eb == MPM_DOF_GRIP) { /* d R / d delta = c K_{f,driven} */
+        continue;
+      }
+      const int ex = eq[2 * nd[a]], ey = eq[2 * nd[a] + 1];
+      if (eb == MPM_DOF_GRIP) { /* d R / d delta = c K_{f,driven} */
         if (ex >= 0)
-          q->kfd[ex] -= kx;
+          kfd[ex] -= kx;
         if (ey >= 0)
-          q->kfd[ey] -= ky;
-      } else if (eb == MPM_DOF_PUSH) {
+          kfd[ey] -= ky;
+      } else {
         if (ex >= 0)
-          q->kfd[ex] += kx;
+          kfd[ex] += kx;
         if (ey >= 0)
-          q->kfd[ey] += ky;
+          kfd[ey] += ky;
       }
     }
   }
+  q->gb = gb;
 }
 
 /* The load's share of the driven components other than the x ones pulled back (the
@@ -318,13 +316,59 @@ static void elastic_part(mpm_static *q)
   memset(q->Kel, 0, sizeof(double) * mpm_lin_nnz(q->lin));
   memset(q->kfd, 0, sizeof(double) * (size_t)q->nfree);
   size_t k = 0;
+  const double dl[3] = {0.0, 0.0, 0.0};
   for (size_t c = 0; c < q->np; c++) {
     const mpm_material *m = &s->mat[s->p->mat[q->pid[c]]];
-    particle_tangent(q, c, m, NULL, NULL, 1, 0.0, k, q->Kel);
+    double C[3][3] = {{m->E1, m->E2, 0.0}, {m->E2, m->E1, 0.0}, {0.0, 0.0, 2.0 * m->G}};
+    particle_tangent(q, c, C, dl, 0.0, k, q->Kel);
     k += 4 * (size_t)q->cnt[c] * (size_t)q->cnt[c];
   }
   memcpy(q->kfdel, q->kfd, sizeof(double) * (size_t)q->nfree);
   q->kel_ok = 1;
+}
+
+/* Particle i's dissipation per unit lambda, U0 V / Le (eq. 10; 0 without decohesion). */
+static inline double dis_rate(const mpm_sim *s, size_t i)
+{
+  const mpm_material *m = &s->mat[s->p->mat[i]];
+  return m->model != MPM_DCOH_NONE ? m->U0 * s->p->V[i] / m->Le : 0.0;
+}
+
+/* Particle c's trial state (tst, tpath, tw) from its strain increment de and, with the
+ * tangent, its entries off the elastic part (k its first place in the map).  The elastic
+ * trial clear inside eq. 23 (most particles) is the update's own result, without the
+ * update (mpm_dcoh_trial_inside); the rest take the full update, and with the tangent
+ * its algorithmic tangent from the same run. */
+static mpm_status particle_update(mpm_static *q, size_t c, const double de[3], int tangent, size_t k, double *Ax)
+{
+  const mpm_particles *p = q->s->p;
+  const size_t i = q->pid[c];
+  const mpm_material *m = &q->s->mat[p->mat[i]];
+  mpm_dstate *o = &q->tst[c];
+  double t[3];
+  mpm_dcoh_trial(m, p->sxx[i], p->syy[i], p->sxy[i], de[0], de[1], de[2], &t[0], &t[1], &t[2]);
+  if (mpm_dcoh_trial_inside(m, t, p->str2[i])) {
+    *o = (mpm_dstate){t[0], t[1], t[2], p->lam[i], p->upn[i], p->upt[i], p->sep[i]};
+    q->tpath[c] = MPM_DPATH_ELASTIC;
+    q->tw[c] = 0.0;
+    return MPM_OK;
+  }
+  const mpm_dstate in = {p->sxx[i], p->syy[i], p->sxy[i], p->lam[i], p->upn[i], p->upt[i], p->sep[i]};
+  mpm_dinfo info;
+  double Cp[3][3], dl[3];
+  const mpm_status st =
+      tangent ? mpm_dcoh_update_tangent(m, &in, de, o, &info, Cp, dl, q->dw) : mpm_dcoh_update(m, &in, de, o, &info, q->dw);
+  q->tpath[c] = (uint8_t)info.path;
+  q->tw[c] = info.w * p->V[i] / (info.path == MPM_DPATH_SOFTEN ? m->Le : m->Lopen);
+  if (tangent && !(st == MPM_OK && info.path == MPM_DPATH_ELASTIC)) {
+    const double C[3][3] = {{m->E1, m->E2, 0.0}, {m->E2, m->E1, 0.0}, {0.0, 0.0, 2.0 * m->G}};
+    for (int a = 0; a < 3; a++)
+      for (int b = 0; b < 3; b++)
+        Cp[a][b] -= C[a][b];
+    const double wD = dis_rate(q->s, i);
+    particle_tangent(q, c, Cp, dl, wD > 0.0 && info.path != MPM_DPATH_ELASTIC ? wD : 0.0, k, Ax);
+  }
+  return st;
 }
 
 mpm_status mpm_static_eval(mpm_static *q, int tangent)
@@ -363,18 +407,15 @@ mpm_status mpm_static_eval(mpm_static *q, int tangent)
       de[1] += Gy[a] * uy;
       de[2] += 0.5 * (Gy[a] * ux + Gx[a] * uy);
     }
-    const mpm_material *m = &s->mat[p->mat[i]];
-    const mpm_dstate in = {p->sxx[i], p->syy[i], p->sxy[i], p->lam[i], p->upn[i], p->upt[i], p->sep[i]};
-    mpm_dinfo info;
-    const mpm_status st = mpm_dcoh_update(m, &in, de, &q->tst[c], &info, q->dw);
+    const mpm_status st = particle_update(q, c, de, tangent, k, Ax);
     if (st != MPM_OK && bad == MPM_OK)
       bad = st;
     const mpm_dstate o = q->tst[c];
-    q->tpath[c] = (uint8_t)info.path;
-    q->tw[c] = info.w * p->V[i] / (info.path == MPM_DPATH_SOFTEN ? m->Le : m->Lopen);
-    const double wD = m->model != MPM_DCOH_NONE ? m->U0 * p->V[i] / m->Le : 0.0;
-    D += wD * fmin(o.lam, 1.0);
-    C += wD * o.lam;
+    if (o.lam != 0.0) { /* eq. 10; lambda = 0 adds +0 to the sums, which leaves them as they are */
+      const double wD = dis_rate(s, i);
+      D += wD * fmin(o.lam, 1.0);
+      C += wD * o.lam;
+    }
     const double V = p->V[i];
     for (int a = 0; a < cn; a++) { /* eq. 3: f_a = V B_a^T sigma */
       const double fx = V * (Gx[a] * o.sxx + Gy[a] * o.sxy), fy = V * (Gy[a] * o.syy + Gx[a] * o.sxy);
@@ -388,8 +429,6 @@ mpm_status mpm_static_eval(mpm_static *q, int tangent)
       if (ey >= 0)
         q->R[ey] += fy;
     }
-    if (tangent && !(st == MPM_OK && info.path == MPM_DPATH_ELASTIC))
-      particle_tangent(q, c, m, &in, de, 0, wD > 0.0 && info.path != MPM_DPATH_ELASTIC ? wD : 0.0, k, Ax);
     k += 4 * (size_t)cn * (size_t)cn;
   }
   for (size_t i = 0; q->fext && i < 2 * ns; i++) /* R = f_int - f_ext */

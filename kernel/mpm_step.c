@@ -35,10 +35,6 @@
 #include "mpm_scatter.h"
 #include "mpm_shape.h"
 
-/* The inline elastic test sends a particle to the full update from this fraction of
- * its remaining strength squared on (a rounding margin, far above 1 ulp). */
-#define MPM_TRIAL_SAFE (1.0 - 1e-9)
-
 static int thread_id(void)
 {
 #ifdef _OPENMP
@@ -303,17 +299,14 @@ static inline __attribute__((always_inline)) int g2p_trial(const mpm_particles *
     p->vyy[k] = r * (m->E2 * de0 + m->E1 * de1);
     p->vxy[k] = r * 2.0 * m->G * de2;
   }
-  const double txx = sxx[k] + m->E1 * de0 + m->E2 * de1;
-  const double tyy = syy[k] + m->E2 * de0 + m->E1 * de1;
-  const double txy = sxy[k] + 2.0 * m->G * de2;
-  const double sn = m->fn[0] * txx + m->fn[1] * tyy + m->fn[2] * txy, a = sn > 0.0 ? sn : 0.0;
-  const double b = m->ft[0] * txx + m->ft[1] * tyy + m->ft[2] * txy;
-  if (__builtin_expect(!(a * a + b * b < MPM_TRIAL_SAFE * str2k), 0))
+  double t[3];
+  mpm_dcoh_trial(m, sxx[k], syy[k], sxy[k], de0, de1, de2, &t[0], &t[1], &t[2]);
+  if (__builtin_expect(!mpm_dcoh_trial_inside(m, t, str2k), 0))
     return 1;
-  *qs += m->mp * (txx * de0 + tyy * de1 + txy * g2);
-  sxx[k] = txx;
-  syy[k] = tyy;
-  sxy[k] = txy;
+  *qs += m->mp * (t[0] * de0 + t[1] * de1 + t[2] * g2);
+  sxx[k] = t[0];
+  syy[k] = t[1];
+  sxy[k] = t[2];
   return 0;
 }
 

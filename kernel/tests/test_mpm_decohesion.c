@@ -1135,6 +1135,76 @@ static void test_mpm_decohesion_soften_batch(void **state)
   mpm_dwork_free(w);
 }
 
+/* The callers' elastic test (mpm_dcoh_trial_inside: the explicit gather's and the
+ * static evaluation's) and the update with its tangent in one run
+ * (mpm_dcoh_update_tangent), against mpm_dcoh_update and mpm_dcoh_tangent, on states
+ * at their strength surface (lambda 0 to 0.9, q 1 and 2, both models, three planes,
+ * closing shear, separated) moved by increments from 1e-12 to 1e-6 out and in: where
+ * the test passes the update is elastic, and it passes on the states pulled back by
+ * more than its margin; the joint run gives both functions' bits.  (The trial here
+ * rounds as this file is compiled, without the kernel's FMA contraction: the runs'
+ * byte-identical outputs hold the kernel's callers to the update's bits.) */
+static void test_mpm_decohesion_trial_and_joint_tangent(void **state)
+{
+  (void)state;
+  mpm_dwork *w = mpm_dwork_alloc();
+  assert_non_null(w);
+  const int models[] = {MPM_DCOH_MODEL1, MPM_DCOH_MODEL2};
+  const double alphas[] = {90.0, 60.0, 30.0}, qs[] = {1.0, 2.0};
+  long inside = 0, back = 0, missed = 0, soft = 0;
+  unsigned seed = 4242u;
+  for (int im = 0; im < 2; im++)
+    for (int ia = 0; ia < 3; ia++)
+      for (int iq = 0; iq < 2; iq++)
+        for (int closing = 0; closing < 2; closing++) {
+          mpm_scene sc = tu_scene(models[im], alphas[ia], 1.0, 2.0, 1.0, qs[iq]);
+          sc.reversed_shear = closing ? MPM_SHEAR_CLOSING : MPM_SHEAR_EVEN;
+          mpm_material m;
+          mpm_material_init(&m, &sc, 1.0, LE);
+          for (int i = 0; i < 400; i++) {
+            seed = seed * 1103515245u + 12345u;
+            const double u1 = (double)(seed >> 8) / 16777216.0;
+            seed = seed * 1103515245u + 12345u;
+            const double u2 = (double)(seed >> 8) / 16777216.0;
+            const double lam = 0.9 * u1, th = PI * (u2 - 0.5) / 2.0, r = 1.0 - pow(lam, qs[iq]);
+            const double snn = r * cos(th), snt = 2.0 * r * sin(th);
+            const mpm_dstate in = nt_state(alphas[ia], snn, 0.3 * snn, snt, lam, 0.01 * u2, -0.01 * u1, i % 23 == 5);
+            const double g = (i % 2 ? -1.0 : 1.0) * pow(10.0, -12.0 + 6.0 * u2) * (0.5 + u1);
+            const double nx = sin(alphas[ia] * PI / 180.0), ny = -cos(alphas[ia] * PI / 180.0);
+            const double de[3] = {g * nx * nx + 0.3 * g * u2, g * ny * ny, g * nx * ny - 0.2 * g * u1};
+            mpm_dstate o, oj;
+            mpm_dinfo info, ij;
+            double D[3][3], L[3], Dj[3][3], Lj[3], t[3];
+            const mpm_status rc = mpm_dcoh_update(&m, &in, de, &o, &info, w);
+            assert_int_equal(rc, MPM_OK);
+            mpm_dcoh_trial(&m, in.sxx, in.syy, in.sxy, de[0], de[1], de[2], &t[0], &t[1], &t[2]);
+            const int pass = mpm_dcoh_trial_inside(&m, t, mpm_dcoh_str2(&m, in.lam, in.sep));
+            if (pass) {
+              inside++;
+              assert_int_equal(info.path, MPM_DPATH_ELASTIC);
+            }
+            if (info.path == MPM_DPATH_ELASTIC && g < -1e-9) {
+              back++;
+              missed += !pass;
+            }
+            soft += info.path == MPM_DPATH_SOFTEN;
+            assert_int_equal(mpm_dcoh_tangent(&m, &in, de, D, L, w), rc);
+            assert_int_equal(mpm_dcoh_update_tangent(&m, &in, de, &oj, &ij, Dj, Lj, w), rc);
+            assert_same_state(&oj, &o, "joint update against mpm_dcoh_update");
+            assert_int_equal(ij.path, info.path);
+            assert_memory_equal(&ij.w, &info.w, sizeof(double));
+            assert_memory_equal(Dj, D, sizeof D);
+            assert_memory_equal(Lj, L, sizeof L);
+          }
+        }
+  print_message("# trial: %ld inside, %ld pulled back by more than 1e-9 (%ld of them not inside), %ld softening\n",
+                inside, back, missed, soft);
+  assert_true(soft > 1000);
+  assert_true(back > 1000);
+  assert_true(missed * 20 < back);
+  mpm_dwork_free(w);
+}
+
 int main(void)
 {
   const struct CMUnitTest tests[] = {
@@ -1159,6 +1229,7 @@ int main(void)
       cmocka_unit_test(test_mpm_decohesion_tangent_closing),
       cmocka_unit_test(test_mpm_decohesion_tangent_compression),
       cmocka_unit_test(test_mpm_decohesion_soften_batch),
+      cmocka_unit_test(test_mpm_decohesion_trial_and_joint_tangent),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
