@@ -140,8 +140,13 @@ static mpm_status factor(mpm_static *q)
 static mpm_status solve(mpm_static *q, const double *b, double *x)
 {
   const double t0 = mpm_wall();
+  const int upd = mpm_lin_updated(q->lin);
   const mpm_status st = mpm_lin_solve(q->lin, b, x);
   q->st.t_solve += mpm_wall() - t0;
+  if (upd && !mpm_lin_updated(q->lin)) { /* the update fell back to a factorization */
+    q->st.updates--;
+    q->st.factorizations++;
+  }
   return st;
 }
 

@@ -34,6 +34,10 @@
 #define MPM_LIN_LR_MIN 1e7  /* flops: factorizations cheaper than this are redone each time   */
 #define MPM_LIN_LR_CAP 384  /* the most columns of A0^-1 held (and unknowns in S)             */
 #define MPM_LIN_LR_ADOPT 3  /* factorizations on their own in a row that make a new base      */
+#define MPM_LIN_LR_PIVOT 1e-9 /* a base whose least pivot is below this share of the largest
+                                  takes no update (one particle a cell's hourglass modes:
+                                  2e-15 on the DCB at h 2; stiff ties at 4 ppc: 2e-6)     */
+#define MPM_LIN_RFALL 1e-6  /* a corrected solve refined no closer than this to b: A on its own */
 #define MPM_LIN_REFINE 4    /* refinements of a corrected solve, at most                      */
 #define MPM_LIN_RTOL 1e-10  /* ... until its residual is this share of the right-hand side's  */
 
@@ -65,6 +69,11 @@ struct mpm_lin {
   int upd;                 /* 1: the last factorization was such a correction              */
   int fails;               /* factorizations on their own in a row                         */
   int bsign;               /* the sign of det A0 (0: singular to rounding)                 */
+  int bpoor;               /* 1: A0's pivots spread past MPM_LIN_LR_PIVOT: no update on it   */
+  int nbase;               /* bases factorized                                              */
+  int lroff;               /* 1: the first base was poor: no update for this pattern, the
+                              factorization its cost chose (band0) every time            */
+  int band0;               /* the band by the factorization's cost (before the update's KLU) */
   int nz, cap;             /* columns of A0^-1 held, and the most it may hold              */
   int *zu, *zof;           /* each column's unknown; each unknown's column or -1            */
   double *Z;               /* n x cap, column-major: A0^-1 e_u for the unknowns zu         */
@@ -105,9 +114,9 @@ void mpm_lin_free(mpm_lin *l)
   free(l);
 }
 
-static int lu_alloc(mpm_lin *l, lin_lu *f)
+static int lu_alloc(mpm_lin *l, lin_lu *f, int band)
 {
-  if (!l->band)
+  if (!band)
     return 1;
   f->AB = gsl_matrix_alloc((size_t)l->n, 3 * l->p + 1);
   f->piv = gsl_vector_uint_alloc((size_t)l->n);
@@ -134,7 +143,7 @@ static int lowrank_alloc(mpm_lin *l)
   l->cj = malloc(sizeof(int) * nnz);
   l->cv = malloc(sizeof(double) * nnz);
   if (!l->Ab || !l->zu || !l->zof || !l->Z || !l->sidx || !l->spos || !l->M || !l->mperm || !l->w || !l->r || !l->dx || !l->ci || !l->cj ||
-      !l->cv || !lu_alloc(l, &l->lu[1]))
+      !l->cv || !lu_alloc(l, &l->lu[1], l->band))
     return 0;
   for (size_t i = 0; i < n; i++)
     l->spos[i] = l->zof[i] = -1;
@@ -174,11 +183,12 @@ mpm_lin *mpm_lin_alloc(int n, size_t nz, const int *ti, const int *tj, int *map)
   /* with the low-rank correction the solves outnumber the factorizations: KLU where its
    * factors are the sparser (Fig. 6, h 1, 9 ppc: 1.2e6 entries against the band's 2.6e6,
    * a solve 1.35 ms against 3.5) */
+  l->band0 = l->band;
   if (l->band && l->ks && fmin(band, l->ks->est_flops) > MPM_LIN_LR_MIN && l->ks->lnz + l->ks->unz < 3.0 * n * (double)l->p)
     l->band = 0;
   if (l->band && l->ks)
     klu_free_symbolic(&l->ks, &l->kc);
-  if ((!l->band && !l->ks) || !lu_alloc(l, &l->lu[0])) {
+  if ((!l->band && !l->ks) || !lu_alloc(l, &l->lu[0], l->band0)) {
     mpm_lin_free(l);
     return NULL;
   }
@@ -279,7 +289,7 @@ static int perm_sign(const int *p, int n, unsigned char *seen)
  * cell's hourglass modes leave 1e-16; the interface's stiff ties 1e-5): there the sign is
  * rounding's.  U's negative pivots are not the matrix's inertia once rows are exchanged,
  * so only the sign is given. */
-static int lu_det_sign(const mpm_lin *l, const lin_lu *f)
+static int lu_det_sign(const mpm_lin *l, const lin_lu *f, double *ratio)
 {
   int s = 1;
   double umin = INFINITY, umax = 0.0;
@@ -295,6 +305,8 @@ static int lu_det_sign(const mpm_lin *l, const lin_lu *f)
   }
   if (!l->band)
     s *= perm_sign(f->kn->Pnum, l->n, l->seen) * perm_sign(l->ks->Q, l->n, l->seen);
+  if (ratio)
+    *ratio = umin / umax;
   return umin >= MPM_LIN_SING * umax ? s : 0;
 }
 
@@ -320,8 +332,17 @@ static mpm_status factor_base(mpm_lin *l)
     l->zof[l->zu[c]] = -1;
   l->nz = 0;
   l->based = 1;
-  l->bsign = lu_det_sign(l, &l->lu[0]);
+  double ratio = 0.0;
+  l->bsign = lu_det_sign(l, &l->lu[0], &ratio);
+  l->bpoor = !(ratio >= MPM_LIN_LR_PIVOT);
   l->msign = 1;
+  if (l->nbase++ == 0 && l->bpoor) { /* the elastic tangent itself: the update never pays */
+    l->lroff = 1;
+    if (l->band0 && !l->band) {
+      l->band = 1;
+      return factor_lu(l, &l->lu[0]);
+    }
+  }
   return MPM_OK;
 }
 
@@ -456,14 +477,15 @@ mpm_status mpm_lin_factor(mpm_lin *l)
   l->held = 0;
   l->cur = 0;
   l->lowrank = l->upd = 0;
-  if (!l->Ab)
+  if (!l->Ab || l->lroff)
     st = factor_lu(l, &l->lu[0]);
-  else if (l->based && factor_lowrank(l)) {
+  else if (l->based && !l->bpoor && factor_lowrank(l)) {
     l->lowrank = l->upd = 1;
     l->fails = 0;
-  } else if (!l->based || (++l->fails >= MPM_LIN_LR_ADOPT && settled(l))) {
+  } else if (!l->based || l->bpoor || (++l->fails >= MPM_LIN_LR_ADOPT && settled(l))) {
+    /* (a poor base is replaced each time: A's own factorization, as without the update) */
     st = factor_base(l);
-    l->lowrank = st == MPM_OK;
+    l->lowrank = st == MPM_OK && !l->lroff;
     l->fails = 0;
   } else {
     s_clear(l);
@@ -525,7 +547,7 @@ mpm_status mpm_lin_solve(mpm_lin *l, const double *b, double *x)
 {
   if (!l->held)
     return MPM_ENOTFINITE;
-  if (!l->lowrank)
+  if (!l->lowrank || l->ns == 0)
     return solve_lu(l, &l->lu[l->cur], b, x);
   mpm_status st = solve_lowrank(l, b, x);
   /* the correction cancels where a stiff tie lets go (D ~ the tie, Z ~ its inverse):
@@ -544,7 +566,17 @@ mpm_status mpm_lin_solve(mpm_lin *l, const double *b, double *x)
       break;
     r0 = r1;
   }
-  return st;
+  if (st == MPM_OK && r0 <= MPM_LIN_RFALL * bmax)
+    return MPM_OK;
+  /* the correction does not converge: A factorized on its own after all (counted by the
+   * caller through mpm_lin_updated, now 0) */
+  s_clear(l);
+  l->lowrank = l->upd = 0;
+  l->cur = 1;
+  l->fails++;
+  st = factor_lu(l, &l->lu[1]);
+  l->held = st == MPM_OK;
+  return st == MPM_OK ? solve_lu(l, &l->lu[1], b, x) : st;
 }
 
 int mpm_lin_det_sign(const mpm_lin *l)
@@ -552,5 +584,5 @@ int mpm_lin_det_sign(const mpm_lin *l)
   if (!l->held)
     return 0;
   /* det A = det A0 det (I + D Z_SS) */
-  return l->lowrank ? l->bsign * l->msign : lu_det_sign(l, &l->lu[l->cur]);
+  return l->lowrank ? l->bsign * l->msign : lu_det_sign(l, &l->lu[l->cur], NULL);
 }

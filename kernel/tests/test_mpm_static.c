@@ -325,7 +325,8 @@ static void test_mpm_static_stability(void **state)
  * what the change must give.  1 x 1: one diagonal entry sent to -1000 (the rest, reduced
  * by the entry's small Schur term, stays positive definite: det < 0); a stiff tie (1e5 on
  * a pair of neighbours, the interface's tie before it lets go) removed from the base;
- * a change on every unknown (no update: a factorization on its own). */
+ * a change on every unknown (no update: a factorization on its own); a base near singular
+ * (no update on it). */
 #define LR_N 100
 static int lr_pattern(int *ti, int *tj)
 {
@@ -410,6 +411,27 @@ static void test_mpm_static_lowrank(void **state)
     assert_true(lr_err(l, ti, tj, nz, b, x, y) < 1e-12);
     mpm_lin_free(l);
   }
+  /* a base whose pivots spread past 1e-9 (one particle a cell's hourglass modes): no
+   * update on it, each change factorized and solved as a fresh LU would */
+  mpm_lin *l = mpm_lin_alloc(n, (size_t)nz, ti, tj, map);
+  assert_non_null(l);
+  lr_values(l, ti, tj, map, nz, i0, 0.0);
+  double *v = mpm_lin_values(l);
+  for (int k = 0; k < nz; k++) { /* unknowns 0, 1 cut loose: [[1, -1], [-1, 1 + 1e-12]] */
+    const int in_i = ti[k] < 2, in_j = tj[k] < 2;
+    if (in_i != in_j)
+      v[map[k]] = 0.0;
+    else if (in_i)
+      v[map[k]] = ti[k] != tj[k] ? -1.0 : ti[k] == 0 ? 1.0 : 1.0 + 1e-12;
+  }
+  assert_int_equal(mpm_lin_factor(l), MPM_OK);
+  for (int k = 0; k < nz; k++)
+    if (ti[k] == i0 && tj[k] == i0)
+      v[map[k]] = 5.0;
+  assert_int_equal(mpm_lin_factor(l), MPM_OK);
+  assert_int_equal(mpm_lin_updated(l), 0);
+  assert_true(lr_err(l, ti, tj, nz, b, x, y) < 1e-12);
+  mpm_lin_free(l);
 }
 
 /* static-2: the elastic bar: the first increments lie on P = E H delta / L (a linear
