@@ -130,23 +130,16 @@ static mpm_status factor(mpm_static *q)
   const double t0 = mpm_wall();
   const mpm_status st = mpm_lin_factor(q->lin);
   q->st.t_factor += mpm_wall() - t0;
-  if (mpm_lin_updated(q->lin))
-    q->st.updates++;
-  else
-    q->st.factorizations++;
+  mpm_lin_counts(q->lin, &q->st.factorizations, &q->st.updates);
   return st;
 }
 
 static mpm_status solve(mpm_static *q, const double *b, double *x)
 {
   const double t0 = mpm_wall();
-  const int upd = mpm_lin_updated(q->lin);
   const mpm_status st = mpm_lin_solve(q->lin, b, x);
   q->st.t_solve += mpm_wall() - t0;
-  if (upd && !mpm_lin_updated(q->lin)) { /* the update fell back to a factorization */
-    q->st.updates--;
-    q->st.factorizations++;
-  }
+  mpm_lin_counts(q->lin, &q->st.factorizations, &q->st.updates); /* a correction may fall back */
   return st;
 }
 

@@ -23,6 +23,8 @@ size_t mpm_lin_nnz(const mpm_lin *l);
 mpm_status mpm_lin_factor(mpm_lin *l);
 /* 1 if the last factorization was a low-rank update of the held base's factors. */
 int mpm_lin_updated(const mpm_lin *l);
+/* Adds the factorizations and low-rank updates done since the last call to *fact, *upd. */
+void mpm_lin_counts(mpm_lin *l, long *fact, long *upd);
 /* 1 if the factors held are of the values as they are now (bit for bit). */
 int mpm_lin_same(const mpm_lin *l);
 /* x = A^-1 b with the last factors; x and b may not alias. */

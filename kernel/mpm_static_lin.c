@@ -67,6 +67,7 @@ struct mpm_lin {
   int based;               /* 1: lu[0] holds A0's factors                                  */
   int lowrank;             /* 1: the solves are A0's corrected on S (cur 0)                */
   int upd;                 /* 1: the last factorization was such a correction              */
+  long nfact, nupd;        /* factorizations and corrections since mpm_lin_counts last read */
   int fails;               /* factorizations on their own in a row                         */
   int bsign;               /* the sign of det A0 (0: singular to rounding)                 */
   int bpoor;               /* 1: A0's pivots spread past MPM_LIN_LR_PIVOT: no update on it   */
@@ -495,7 +496,18 @@ mpm_status mpm_lin_factor(mpm_lin *l)
   l->held = st == MPM_OK;
   if (l->held)
     memcpy(l->Axf, l->Ax, sizeof(double) * mpm_lin_nnz(l));
+  if (l->upd)
+    l->nupd++;
+  else
+    l->nfact++;
   return st;
+}
+
+void mpm_lin_counts(mpm_lin *l, long *fact, long *upd)
+{
+  *fact += l->nfact;
+  *upd += l->nupd;
+  l->nfact = l->nupd = 0;
 }
 
 int mpm_lin_updated(const mpm_lin *l)
@@ -568,10 +580,12 @@ mpm_status mpm_lin_solve(mpm_lin *l, const double *b, double *x)
   }
   if (st == MPM_OK && r0 <= MPM_LIN_RFALL * bmax)
     return MPM_OK;
-  /* the correction does not converge: A factorized on its own after all (counted by the
-   * caller through mpm_lin_updated, now 0) */
+  /* the correction does not converge: A factorized on its own after all (counted as a
+   * factorization, not a correction) */
   s_clear(l);
   l->lowrank = l->upd = 0;
+  l->nupd--;
+  l->nfact++;
   l->cur = 1;
   l->fails++;
   st = factor_lu(l, &l->lu[1]);
