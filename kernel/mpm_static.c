@@ -24,6 +24,8 @@
 #define MPM_QS_CYCLE 1e-3 /* relative: merits this close two iterations apart are a cycle */
 #define MPM_QS_LS 8       /* halvings of a Newton step that raises the residual      */
 #define MPM_QS_PREDMAX 0.05 /* the largest predictor change of delta after a kick, of delta */
+#define MPM_QS_MISS 100    /* of the step: a predictor missing the dissipation target by more
+                               is not tried (Newton from there: 18 to 25 iterations, measured) */
 #define MPM_QS_FIRST 1e-6   /* of Dref: less dissipated, the softening has just begun     */
 
 void mpm_static_free(mpm_static *q)
@@ -187,8 +189,42 @@ static int cycles(const double *m, int it)
          fabs(m[it - 1] - m[it - 3]) <= MPM_QS_CYCLE * m[it - 1];
 }
 
+/* The dissipation control's predicted change of delta, *dd; -2 where a grip increment
+ * is to start the softening instead. */
+static int dissipation_step(mpm_static *q, double *dd)
+{
+  /* nothing dissipated beyond rounding: a grip increment starts the softening, not a
+   * predictor from the committed state's tangent.  The linear branch ends just short of
+   * the first initiation, but where a line is at its strength everywhere rounding can
+   * leave some of its segments at lambda 4e-16 and the rest at 0, and the predictor then
+   * sends Newton after those alone: which branch the path took depended on the build
+   * (iface90 with U0 0.01875, h 4: one side opening, curve_path 0.030, with -O3; the
+   * uniform opening, 4e-7, with -O0; a45, a30 at q 0.8 stopped at the peak).  A grip
+   * increment loads every tied point past its strength alike: the same branch on every
+   * build (docs/static.md, "Stability") */
+  if (!(q->Cn > MPM_QS_CMIN * q->Dref) && q->nkick < 3)
+    return -2;
+  /* pden < 0: C grows as delta falls, the snapback branch */
+  if (fabs(q->pden) * fmax(q->dn, 1e-300) > 1e-9 * q->Dref) {
+    /* the run's first dissipation step, after the kick, where particles soften: the
+     * kick's softening set is the flaw alone, whose tangent answers a step of 1e-3 U0 H
+     * with a delta hundreds of times the bar's (fig6, h 1, 9 ppc: 33.7 at 0.169) and
+     * Newton fails from there four times before the step is small enough; so the step
+     * is one that moves delta by at most MPM_QS_PREDMAX of itself (docs/static.md) */
+    if (q->nkick > 0 && !q->iface && q->Cn < MPM_QS_FIRST * q->Dref)
+      q->step_D = fmin(q->step_D, MPM_QS_PREDMAX * fabs(q->pden) * q->dn);
+    *dd = q->step_D / q->pden;
+  } else if (q->Cn > 0.0)
+    *dd = (q->dlast < 0.0 ? -1e-4 : 1e-4) * q->dn; /* the way the last increment went; Newton
+                                                      finds the control's target from there */
+  else
+    return -2; /* nothing softens yet: a grip increment starts it */
+  return 0;
+}
+
 /* One increment from the committed state under the current control; 1 if it converged
- * (the trial state is then the increment's), 0 if not, or a negative status. */
+ * (the trial state is then the increment's), 0 if not, -2 if nothing softens (a grip
+ * increment starts it), -3 if its predictor was not tried (MPM_QS_MISS). */
 static int increment(mpm_static *q, int *iters)
 {
   const int n = q->nfree;
@@ -199,41 +235,20 @@ static int increment(mpm_static *q, int *iters)
   /* predictor: the committed state's tangent response to delta, scaled to the step */
   const int grip = q->mode == MPM_QS_GRIP || q->kick;
   double dd = q->kick ? q->kick_d : q->step_d;
-  if (!grip) {
-    /* nothing dissipated beyond rounding: a grip increment starts the softening, not a
-     * predictor from the committed state's tangent.  The linear branch ends just short of
-     * the first initiation, but where a line is at its strength everywhere rounding can
-     * leave some of its segments at lambda 4e-16 and the rest at 0, and the predictor then
-     * sends Newton after those alone: which branch the path took depended on the build
-     * (iface90 with U0 0.01875, h 4: one side opening, curve_path 0.030, with -O3; the
-     * uniform opening, 4e-7, with -O0; a45, a30 at q 0.8 stopped at the peak).  A grip
-     * increment loads every tied point past its strength alike: the same branch on every
-     * build (docs/static.md, "Stability") */
-    if (!(q->Cn > MPM_QS_CMIN * q->Dref) && q->nkick < 3)
-      return -2;
-    /* pden < 0: C grows as delta falls, the snapback branch */
-    if (fabs(q->pden) * fmax(q->dn, 1e-300) > 1e-9 * q->Dref) {
-      /* the run's first dissipation step, after the kick, where particles soften: the
-       * kick's softening set is the flaw alone, whose tangent answers a step of 1e-3 U0 H
-       * with a delta hundreds of times the bar's (fig6, h 1, 9 ppc: 33.7 at 0.169) and
-       * Newton fails from there four times before the step is small enough; so the step
-       * is one that moves delta by at most MPM_QS_PREDMAX of itself (docs/static.md) */
-      if (q->nkick > 0 && !q->iface && q->Cn < MPM_QS_FIRST * q->Dref)
-        q->step_D = fmin(q->step_D, MPM_QS_PREDMAX * fabs(q->pden) * q->dn);
-      dd = q->step_D / q->pden;
-    }
-    else if (q->Cn > 0.0)
-      dd = (q->dlast < 0.0 ? -1e-4 : 1e-4) * q->dn; /* the way the last increment went; Newton
-                                                       finds the control's target from there */
-    else
-      return -2; /* nothing softens yet: a grip increment starts it */
-  }
+  if (!grip && dissipation_step(q, &dd) != 0)
+    return -2;
   add_free(q, q->pdir, dd);
   q->dt += dd;
   const double Dtarget = q->Cn + q->step_D;
   double mh[MPM_QS_MAXIT]; /* each iteration's merit */
   if (mpm_static_eval(q, 1) != MPM_OK)
     return 0;
+  /* a predictor that misses the dissipation target by MPM_QS_MISS steps has passed a
+   * limit of the tangent's reach (Fig. 6's bar past its strength, where every particle
+   * softens at once: C 1e4 steps off at h 1); Newton from there ran to MPM_QS_MAXIT at
+   * h 2 and 1 and took 18 at h 4, where the same step cut as deep passes at once */
+  if (!grip && fabs(q->Ct - Dtarget) > MPM_QS_MISS * q->step_D)
+    return -3;
   for (int it = 0;; it++) {
     *iters = it + 1;
     q->st.newton++;

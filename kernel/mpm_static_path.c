@@ -352,7 +352,7 @@ static int attempt(mpm_static *q, int *iters)
     return 0;
   }
   if (r != 1)
-    shrink(q, *iters);
+    shrink(q, r == -3 ? MPM_QS_MAXIT : *iters); /* an untried predictor: cut as Newton's failure */
   return r == 1;
 }
 
