@@ -9,6 +9,9 @@
 #   dcb-h8          the DCB at h 8 passes `delam check` (compliance against data/fe's C(a0),
 #                   the peak against the cohesive beam, the branch against the 2-D LEFM
 #                   branch, D = U0 x growth, the ledger) with the bounds of h = t / 2;
+#   dcb-window      the compliance is the linear branch's: the DCB at h 8 with one row of
+#                   its 3-15 % window made a softening one (D > 0, P 10 % below the line)
+#                   gives the compliance of the run as written, to 1e-6;
 #   dcb-explicit    the DCB's explicit peak within 2 % of the static solver's (h 8);
 #   dcb-wrong-law   a DCB run with U0 0.5 whose scene.ini is made to say 0.375: the check
 #                   fails (peak_P, branch): the checks can tell a wrong law;
@@ -63,6 +66,25 @@ for c in compliance peak_P delta_peak branch crack_tip D_growth D_zone ledger; d
   grep -qE "^  $c +pass" dcb8.txt || why="$why; $c not passed"
 done
 result dcb-h8 "${why#; }"
+# the compliance's window: the last row in 3-15 % of the peak made a softening state
+cp -r dcb8 win
+why=""
+row=$(awk -F, '!/^#/ && $1 != "t" {r++; P[r] = $3; if ($3 > pk) {pk = $3; ip = r}}
+  END {for (i = 1; i < ip; i++) if (P[i] >= 0.03 * pk && P[i] <= 0.15 * pk) w = i; print w}' win/load.csv)
+if [ -n "$row" ]; then
+  awk -F, -v OFS=, -v w="$row" '/^#/ || $1 == "t" {print; next} {if (++r == w) $3 = 0.9 * $3; print}' win/load.csv >x &&
+    mv x win/load.csv
+  awk -F, -v OFS=, -v w="$row" '/^#/ {print; next} $1 == "t" {for (i = 1; i <= NF; i++) if ($i == "D") c = i; print; next}
+    {if (++r == w) $c = 1e-3; print}' win/energy.csv >x && mv x win/energy.csv
+  "$delam" check win >win.txt 2>&1
+  c0=$(sed -n 's/^  compliance *[a-zA-Z-]* measured \([^,]*\),.*/\1/p' dcb8.txt)
+  c1=$(sed -n 's/^  compliance *[a-zA-Z-]* measured \([^,]*\),.*/\1/p' win.txt)
+  awk -v a="$c0" -v b="$c1" 'BEGIN {exit !(a > 0 && b / a - 1 < 1e-6 && b / a - 1 > -1e-6)}' ||
+    why="the compliance $c1 with a softening row in its window, $c0 without"
+else
+  why="no row of dcb8/load.csv in 3-15 % of the peak"
+fi
+result dcb-window "$why"
 # a wrong law: run with U0 0.5, judged as the scene with 0.375
 "$delam" run dcb --h 8 --threads 1 --quiet --set decohesion.U0=0.5 --out wrong >/dev/null 2>&1
 sed -i 's/^U0 = .*/U0 = 0.375/' wrong/scene.ini
