@@ -572,7 +572,8 @@ mpm_status mpm_dcoh_update_tangent(const mpm_material *m, const mpm_dstate *in, 
   assert(m && in && de && D);
   dcoh_trace t;
   const mpm_status rc = dcoh_step(m, in, de, out, info, w, &t);
-  const double C[3][3] = {{m->E1, m->E2, 0.0}, {m->E2, m->E1, 0.0}, {0.0, 0.0, 2.0 * m->G}};
+  double C[3][3];
+  mpm_dcoh_elastic(m, C);
   if (dlam)
     dlam[0] = dlam[1] = dlam[2] = rc == MPM_OK ? 0.0 : NAN;
   if (rc != MPM_OK) {

@@ -207,6 +207,16 @@ static inline void mpm_dcoh_trial(const mpm_material *m, double sxx, double syy,
   *txy = sxy + 2.0 * m->G * de2;
 }
 
+/* Plane-stress C (eq. 7's increment, tensor shear doubled): the tangent of an elastic
+ * step, and the part of the algorithmic tangent every particle shares. */
+static inline void mpm_dcoh_elastic(const mpm_material *m, double C[3][3])
+{
+  C[0][0] = C[1][1] = m->E1;
+  C[0][1] = C[1][0] = m->E2;
+  C[0][2] = C[1][2] = C[2][0] = C[2][1] = 0.0;
+  C[2][2] = 2.0 * m->G;
+}
+
 /* The inline elastic test sends a particle to the full update from this fraction of
  * its remaining strength squared on (a rounding margin, far above 1 ulp). */
 #define MPM_TRIAL_SAFE (1.0 - 1e-9)

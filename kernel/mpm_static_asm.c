@@ -319,7 +319,8 @@ static void elastic_part(mpm_static *q)
   const double dl[3] = {0.0, 0.0, 0.0};
   for (size_t c = 0; c < q->np; c++) {
     const mpm_material *m = &s->mat[s->p->mat[q->pid[c]]];
-    double C[3][3] = {{m->E1, m->E2, 0.0}, {m->E2, m->E1, 0.0}, {0.0, 0.0, 2.0 * m->G}};
+    double C[3][3];
+    mpm_dcoh_elastic(m, C);
     particle_tangent(q, c, C, dl, 0.0, k, q->Kel);
     k += 4 * (size_t)q->cnt[c] * (size_t)q->cnt[c];
   }
@@ -361,7 +362,8 @@ static mpm_status particle_update(mpm_static *q, size_t c, const double de[3], i
   q->tpath[c] = (uint8_t)info.path;
   q->tw[c] = info.w * p->V[i] / (info.path == MPM_DPATH_SOFTEN ? m->Le : m->Lopen);
   if (tangent && !(st == MPM_OK && info.path == MPM_DPATH_ELASTIC)) {
-    const double C[3][3] = {{m->E1, m->E2, 0.0}, {m->E2, m->E1, 0.0}, {0.0, 0.0, 2.0 * m->G}};
+    double C[3][3];
+    mpm_dcoh_elastic(m, C);
     for (int a = 0; a < 3; a++)
       for (int b = 0; b < 3; b++)
         Cp[a][b] -= C[a][b];

@@ -427,7 +427,7 @@ static int factor_lowrank(mpm_lin *l)
       }
   l->nchg = m;
   const double ns = l->ns;
-  if (l->ns > l->cap || 2.0 * (double)m * ns + (2.0 / 3.0) * ns * ns * ns + 4.0 * n * ns > 0.5 * l->fflops || !z_fill(l))
+  if (2.0 * (double)m * ns + (2.0 / 3.0) * ns * ns * ns + 4.0 * n * ns > 0.5 * l->fflops || !z_fill(l))
     return 0;
   /* M = I + D Z_SS: M(a, b) gains D(a, c) Z(c, b) for each changed entry (a, c) */
   const size_t S = (size_t)l->ns;
